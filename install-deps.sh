@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages Radiosity Textbook needs, if any are missing. Idempotent and quiet when all are there.
+set -euo pipefail
+packages=(
+  cmake g++ ninja-build pkg-config
+  libvtk9-dev qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libqt6openglwidgets6 qt6-charts-dev qt6-svg-dev
+  libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libgtest-dev libembree-dev libtbb-dev
+  nlohmann-json3-dev libtinyobjloader-dev libcli11-dev
+  xvfb xauth mesa-utils libgl1-mesa-dri fonts-dejavu-core
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "install-deps: installing ${#missing[@]} missing packages: ${missing[*]}"
+SUDO=""
+[ "$(id -u)" -ne 0 ] && SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"

@@ -1,0 +1,66 @@
+#include "cli/cli_common.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+
+#include "core/io/scene_loader.h"
+
+namespace rt::cli {
+
+void MeshArguments::add(CLI::App& command) {
+  auto* none = command.add_flag("--no-subdivide", noSubdivide, "One element per input face, in file order");
+  auto* count = command.add_option("--subdivide", subdivide, "Split every patch N x N (triangles: N^2)")
+                    ->check(CLI::PositiveNumber);
+  auto* edge = command.add_option("--max-edge", maxEdge, "Split patches until no edge is longer than L (scene units)")
+                   ->check(CLI::PositiveNumber);
+  none->excludes(count)->excludes(edge);
+  count->excludes(edge);
+}
+
+MeshOptions MeshArguments::options() const {
+  MeshOptions o;
+  if (subdivide > 0) {
+    o.mode = MeshOptions::Mode::Count;
+    o.count = subdivide;
+  } else if (maxEdge > 0) {
+    o.mode = MeshOptions::Mode::MaxEdge;
+    o.maxEdge = maxEdge;
+  }
+  return o;
+}
+
+Scene loadSceneReportingWarnings(const std::string& path) {
+  Scene scene = loadScene(path);
+  for (const std::string& w : scene.warnings) std::cerr << w << "\n";
+  return scene;
+}
+
+ProgressLine::ProgressLine(bool enabled) : enabled_(enabled), terminal_(isatty(STDERR_FILENO) != 0) {}
+
+ProgressLine::~ProgressLine() { finish(); }
+
+void ProgressLine::report(double fraction, const std::string& stage) {
+  if (!enabled_) return;
+  const int percent = static_cast<int>(fraction * 100.0 + 0.5);
+  const int step = terminal_ ? 1 : 10;
+  if (stage == lastStage_ && percent / step == lastPercent_ / step) return;
+  if (stage != lastStage_ && open_ && terminal_) std::fprintf(stderr, "\n");
+  lastStage_ = stage;
+  lastPercent_ = percent;
+  if (terminal_) {
+    std::fprintf(stderr, "\r%-24s %3d%%", stage.c_str(), percent);
+    open_ = true;
+  } else {
+    std::fprintf(stderr, "%s %d%%\n", stage.c_str(), percent);
+  }
+  std::fflush(stderr);
+}
+
+void ProgressLine::finish() {
+  if (open_ && terminal_) std::fprintf(stderr, "\n");
+  open_ = false;
+}
+
+}  // namespace rt::cli

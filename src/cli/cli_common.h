@@ -1,0 +1,43 @@
+// Pieces shared by the subcommands: mesh options, scene loading, the progress line.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <string>
+
+#include "core/mesh.h"
+#include "core/progress.h"
+#include "core/scene.h"
+
+namespace rt::cli {
+
+// --no-subdivide | --subdivide N | --max-edge L, mutually exclusive.
+struct MeshArguments {
+  bool noSubdivide = false;
+  int subdivide = 0;
+  double maxEdge = 0.0;
+  void add(CLI::App& command);
+  MeshOptions options() const;
+};
+
+// Loads and validates the scene, printing its warnings to stderr.
+Scene loadSceneReportingWarnings(const std::string& path);
+
+// A single progress line on stderr ("form factors  42%"), redrawn in place when stderr is a terminal and printed at
+// most every 10% otherwise, so logs stay short.
+class ProgressLine : public Progress {
+ public:
+  explicit ProgressLine(bool enabled = true);
+  ~ProgressLine() override;
+  void report(double fraction, const std::string& stage) override;
+  void finish();
+
+ private:
+  bool enabled_;
+  bool terminal_;
+  int lastPercent_ = -1;
+  std::string lastStage_;
+  bool open_ = false;
+};
+
+}  // namespace rt::cli

@@ -1,0 +1,18 @@
+// The subcommands of `radiosity`. Each lives in its own cmd_*.cpp and adds itself to the CLI11 app; its callback
+// does the work and throws on error (main prints the message to stderr and exits non-zero).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace rt::cli {
+
+void addFormFactorsCommand(CLI::App& app);
+void addSolveCommand(CLI::App& app);
+void addMatrixCommand(CLI::App& app);
+void addFigureCommand(CLI::App& app);
+void addLessonCommand(CLI::App& app);
+// `radiosity bench formfactors` and `radiosity bench solvers` share the `bench` parent.
+void addBenchFormFactorsCommand(CLI::App& bench);
+void addBenchSolversCommand(CLI::App& bench);
+
+}  // namespace rt::cli

@@ -1,0 +1,53 @@
+#include "core/formfactor/formfactor_matrix.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace rt {
+
+std::string FormFactorDiagnostics::summary() const {
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "row sums [%.6g, %.6g], max |1 - row sum| %.3g, reciprocity error %.3g, %ld negative, %ld > 1",
+                minRowSum, maxRowSum, maxClosureError, maxReciprocityError, negativeEntries, entriesAboveOne);
+  return line;
+}
+
+FormFactorDiagnostics diagnose(const FormFactorMatrix& F, const Eigen::VectorXd& areas) {
+  FormFactorDiagnostics d;
+  const Eigen::Index n = F.rows();
+  if (n == 0) return d;
+  const Eigen::VectorXd sums = F.rowwise().sum();
+  d.minRowSum = sums.minCoeff();
+  d.maxRowSum = sums.maxCoeff();
+  d.maxClosureError = (1.0 - sums.array()).abs().maxCoeff();
+  d.negativeEntries = (F.array() < 0.0).count();
+  d.entriesAboveOne = (F.array() > 1.0).count();
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = i + 1; j < n; ++j) {
+      const double a = areas[i] * F(i, j), b = areas[j] * F(j, i);
+      const double scale = std::max(std::abs(a), std::abs(b));
+      if (scale > 0) d.maxReciprocityError = std::max(d.maxReciprocityError, std::abs(a - b) / scale);
+    }
+  return d;
+}
+
+void enforceReciprocity(FormFactorMatrix& F, const Eigen::VectorXd& areas) {
+  const Eigen::Index n = F.rows();
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = i + 1; j < n; ++j) {
+      const double exchange = 0.5 * (areas[i] * F(i, j) + areas[j] * F(j, i));
+      F(i, j) = exchange / areas[i];
+      F(j, i) = exchange / areas[j];
+    }
+}
+
+void normalizeRows(FormFactorMatrix& F) {
+  for (Eigen::Index i = 0; i < F.rows(); ++i) {
+    const double s = F.row(i).sum();
+    if (s > 0) F.row(i) /= s;
+  }
+}
+
+}  // namespace rt

@@ -1,0 +1,31 @@
+// The form-factor matrix and the diagnostics every method reports.
+// Convention (docs/conventions.md): F(i,j) = (1/A_i) int_Ai int_Aj cos_i cos_j V / (pi r^2) dA_j dA_i, the fraction of
+// power leaving element i that arrives at element j. Rows sum to <= 1 (= 1 in a closed scene); A_i F_ij = A_j F_ji.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+namespace rt {
+
+// Dense, row-major: a row is what one element sees, which is what shooting and gathering walk along.
+using FormFactorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+struct FormFactorDiagnostics {
+  double minRowSum = 0, maxRowSum = 0;
+  double maxClosureError = 0;      // max |1 - sum_j F_ij| (meaningful in a closed scene)
+  double maxReciprocityError = 0;  // max |A_i F_ij - A_j F_ji| / max(A_i F_ij, A_j F_ji) over non-zero pairs
+  long negativeEntries = 0;
+  long entriesAboveOne = 0;
+  std::string summary() const;  // one line
+};
+
+FormFactorDiagnostics diagnose(const FormFactorMatrix& F, const Eigen::VectorXd& areas);
+
+// Opt-in repairs (never on by default: silently fixing form factors hides errors).
+// Replaces both F_ij and F_ji by the area-weighted average that satisfies reciprocity exactly.
+void enforceReciprocity(FormFactorMatrix& F, const Eigen::VectorXd& areas);
+// Scales every non-zero row to sum to 1 (only right for closed scenes).
+void normalizeRows(FormFactorMatrix& F);
+
+}  // namespace rt

@@ -1,0 +1,57 @@
+// One interface for every form-factor method (analytic, hemicube, raycast, montecarlo, nusselt, exact).
+// Methods register by name; `radiosity formfactors --method NAME` and the lessons pick them by that name.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/formfactor/formfactor_matrix.h"
+#include "core/mesh.h"
+#include "core/progress.h"
+
+namespace rt {
+
+struct FormFactorOptions {
+  int hemicubeResolution = 128;  // pixels along the top face's edge
+  int samples = 16;              // raycast: sample pairs per element pair; montecarlo: rays per element
+  std::uint64_t seed = 1;        // stochastic methods are deterministic for a seed
+  double tolerance = 1e-9;       // exact: requested relative tolerance
+  int threads = 0;               // 0 = all cores
+};
+
+// What a run did and skipped; printed as one line by the CLI.
+struct FormFactorStats {
+  std::size_t elements = 0;
+  std::size_t pairsComputed = 0;        // pairs that were integrated
+  std::size_t pairsSkippedFacing = 0;   // one entirely behind the other's plane: F = 0 without work
+  std::size_t pairsByReciprocity = 0;   // derived as F_ji = A_i F_ij / A_j
+  std::size_t pairsUnoccluded = 0;      // shaft proved empty: no visibility work
+  std::size_t raysCast = 0;
+  double seconds = 0.0;
+  double standardError = 0.0;  // stochastic methods: RMS standard error of the entries (0 otherwise)
+  std::string notes;           // e.g. "visibility by ray casting (16 rays/pair)"
+  std::string summary() const; // one line
+};
+
+class FormFactorMethod {
+ public:
+  virtual ~FormFactorMethod() = default;
+  virtual std::string name() const = 0;
+  virtual std::string description() const = 0;
+  // The full n x n matrix for the mesh's elements. May throw Cancelled.
+  virtual FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
+                                   FormFactorStats& stats) const = 0;
+};
+
+using FormFactorMethodFactory = std::function<std::unique_ptr<FormFactorMethod>()>;
+
+// Registry. Built-in methods register themselves in formfactor_registry.cpp; the exact library adds "exact" with
+// registerFormFactorMethod when it is linked (rt::exact::registerExactMethod()).
+void registerFormFactorMethod(const std::string& name, FormFactorMethodFactory factory);
+std::unique_ptr<FormFactorMethod> makeFormFactorMethod(const std::string& name);  // throws std::invalid_argument
+std::vector<std::string> formFactorMethodNames();
+
+}  // namespace rt

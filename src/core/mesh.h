@@ -1,0 +1,53 @@
+// The computational mesh: elements obtained by subdividing patches. Elements are what form factors and solvers work on.
+// Every element remembers its parent patch; vertices are shared between elements of the same patch (and merged across
+// patches where they coincide) so that per-vertex radiosity can be interpolated for display.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/scene.h"
+
+namespace rt {
+
+struct Element {
+  std::vector<int> vertices;  // indices into Mesh::vertices, counter-clockwise seen from the front (3 or 4 of them)
+  int patch = -1;             // parent patch in the scene
+  Vec3 normal;
+  Vec3 centroid;
+  double area = 0.0;
+};
+
+struct MeshOptions {
+  enum class Mode { None, Count, MaxEdge };
+  Mode mode = Mode::None;  // None: one element per patch, in file order
+  int count = 1;           // Count: each patch is split N x N (quads) or into N^2 triangles (triangles)
+  double maxEdge = 0.0;    // MaxEdge: split until no element edge is longer than this
+};
+
+struct Mesh {
+  std::vector<Vec3> vertices;
+  std::vector<Element> elements;
+  // For each vertex, the elements that use it (for interpolation and adjacency).
+  std::vector<std::vector<int>> vertexElements;
+  // Per-element material data copied from the scene, so that solvers only need the mesh.
+  RgbField reflectance;  // n x 3
+  RgbField emission;     // n x 3
+
+  std::size_t size() const { return elements.size(); }
+  Polygon polygon(int element) const;
+  Eigen::VectorXd areas() const;
+  // Indices of elements sharing an edge with element e.
+  std::vector<int> edgeNeighbours(int element) const;
+  // Hash of the geometry only (vertices, elements): form factors can be cached under it, because changing
+  // reflectance or emission does not change F.
+  std::uint64_t geometryHash() const;
+};
+
+// Builds the mesh of a scene. Throws InputError for impossible options (count < 1, maxEdge <= 0).
+Mesh buildMesh(const Scene& scene, const MeshOptions& options = {});
+// Copies reflectance/emission from the scene into an existing mesh (after a material-only change).
+void refreshMaterials(Mesh& mesh, const Scene& scene);
+
+}  // namespace rt

@@ -1,0 +1,81 @@
+// Solvers in Eigen's shape: compute(system), solve() -> B, info(), iterations(), error(), and an observer called after
+// every iteration with a record the app can replay. Non-convergence is a status, never an exception.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/progress.h"
+#include "core/solvers/radiosity_system.h"
+
+namespace rt {
+
+enum class SolverStatus { Success, NoConvergence, NumericalIssue, InvalidInput, Cancelled };
+std::string toString(SolverStatus status);
+
+struct SolverOptions {
+  double tolerance = 1e-6;    // on the relative residual (gathering) or relative unshot power (shooting)
+  int maxIterations = 1000;   // a sweep over all elements (gather) or one shot (shooting)
+  double relaxation = 1.0;    // over-relaxation factor for Gauss-Seidel (SOR when > 1)
+  bool ambient = false;       // progressive: add the ambient term to the displayed B
+  std::uint64_t seed = 1;     // stochastic solvers
+  long raysPerIteration = 0;  // stochastic: ray budget per iteration (0 = a default from n)
+  bool recordHistory = true;  // keep every IterationRecord (memory n x 3 doubles per iteration)
+};
+
+struct IterationRecord {
+  int iteration = 0;
+  RgbField B;               // current estimate (for progressive with ambient: the displayed B + rho * ambient)
+  RgbField unshot;          // unshot radiosity (shooting methods; empty otherwise)
+  double residual = 0;      // ||K B - E|| / ||E||
+  double unshotPower = 0;   // sum over elements and channels of unshot_i * A_i
+  double emittedPower = 0;  // sum E_i A_i (all channels)
+  double absorbedPower = 0; // sum (1 - rho_i) B_i A_i (all channels)
+  int shooter = -1;         // shooting methods: the element shot in this iteration
+  double seconds = 0;       // since solve() started
+};
+
+using IterationObserver = std::function<void(const IterationRecord&)>;
+
+class Solver {
+ public:
+  virtual ~Solver() = default;
+  virtual std::string name() const = 0;
+  void setOptions(const SolverOptions& options) { options_ = options; }
+  const SolverOptions& options() const { return options_; }
+  void setObserver(IterationObserver observer) { observer_ = std::move(observer); }
+  void setProgress(Progress* progress) { progress_ = progress; }
+
+  virtual Solver& compute(const RadiositySystem& system) {
+    system_ = &system;
+    return *this;
+  }
+  virtual RgbField solve() = 0;
+
+  SolverStatus info() const { return status_; }
+  int iterations() const { return iterations_; }
+  double error() const { return error_; }  // final relative residual (or its estimate)
+  const std::vector<IterationRecord>& history() const { return history_; }
+
+ protected:
+  // Called by implementations after every iteration: stores history, calls the observer, checks cancellation.
+  void record(IterationRecord record);
+
+  SolverOptions options_;
+  IterationObserver observer_;
+  Progress* progress_ = nullptr;
+  const RadiositySystem* system_ = nullptr;
+  SolverStatus status_ = SolverStatus::InvalidInput;
+  int iterations_ = 0;
+  double error_ = 0;
+  std::vector<IterationRecord> history_;
+};
+
+// Registry by name: direct, jacobi, gauss-seidel, southwell, progressive, bounces, stochastic-jacobi, random-walk.
+std::unique_ptr<Solver> makeSolver(const std::string& name);  // throws std::invalid_argument
+std::vector<std::string> solverNames();
+
+}  // namespace rt

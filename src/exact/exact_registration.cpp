@@ -1,0 +1,7 @@
+#include "exact/exact_reference.h"
+
+namespace rt::exact {
+
+void registerExactMethod() {}
+
+}  // namespace rt::exact

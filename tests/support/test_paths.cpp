@@ -1,0 +1,35 @@
+#include "support/test_paths.h"
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+
+namespace rt::test {
+
+std::string sourcePath(const std::string& relative) { return std::string(RT_SOURCE_DIR) + "/" + relative; }
+std::string sharedPath(const std::string& relative) { return std::string(RT_SHARED_DIR) + "/" + relative; }
+std::string binaryPath(const std::string& relative) { return std::string(RT_BINARY_DIR) + "/" + relative; }
+std::string cliPath() { return RT_CLI_PATH; }
+bool sharedAvailable() { return std::filesystem::exists(sharedPath("refdata/formfactors.json")); }
+
+std::string scratchDir(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::path(RT_BINARY_DIR) / "test-output" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+int runCommand(const std::string& command, std::string* output) {
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return -1;
+  std::array<char, 4096> buffer{};
+  std::string text;
+  while (std::fgets(buffer.data(), buffer.size(), pipe)) text += buffer.data();
+  const int status = pclose(pipe);
+  if (output) *output = text;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace rt::test
