@@ -1,10 +1,150 @@
+// radiosity solve: scene -> mesh -> form factors -> solver -> B.csv and/or an image.
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+#include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "core/formfactor/formfactor_method.h"
+#include "core/solvers/solver.h"
+#ifdef RT_HAVE_VIZ
+#include "viz/scene_image.h"
+#endif
 
 namespace rt::cli {
+namespace {
+
+struct SolveArguments {
+  std::string scene;
+  std::string solver;  // empty: chosen by size
+  std::string formFactors = "analytic";
+  double tolerance = 1e-6;
+  int maxIterations = 1000;
+  std::uint64_t seed = 1;
+  int resolution = 128;
+  int samples = 16;
+  std::string output;
+  std::string image;
+  int width = 1024, height = 1024;
+  double exposure = 0.0;
+  std::string toneMap = "linear";
+  bool smooth = false;
+  bool edges = false;
+  bool verbose = false;
+  bool ambient = false;
+  MeshArguments mesh;
+};
+
+void writeRadiosityCsv(const Scene& scene, const Mesh& mesh, const RgbField& B, const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw InputError({path}, "cannot write the radiosity file");
+  out << "element,patch,surface,area,B_r,B_g,B_b\n";
+  char line[512];
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    const Element& e = mesh.elements[i];
+    const auto r = static_cast<Eigen::Index>(i);
+    std::snprintf(line, sizeof line, "%zu,%d,%s,%.17g,%.17g,%.17g,%.17g\n", i, e.patch,
+                  scene.surfaces[scene.patches[e.patch].surface].name.c_str(), e.area, B(r, 0), B(r, 1), B(r, 2));
+    out << line;
+  }
+  if (!out) throw InputError({path}, "error while writing the radiosity file");
+}
+
+void run(const SolveArguments& a) {
+  const Scene scene = loadSceneReportingWarnings(a.scene);
+  const Mesh mesh = buildMesh(scene, a.mesh.options());
+  ProgressLine progress(!a.verbose);
+
+  FormFactorOptions ffOptions;
+  ffOptions.hemicubeResolution = a.resolution;
+  ffOptions.samples = a.samples;
+  ffOptions.seed = a.seed;
+  FormFactorStats stats;
+  const auto method = makeFormFactorMethod(a.formFactors);
+  const FormFactorMatrix F = method->compute(mesh, ffOptions, progress, stats);
+  progress.finish();
+  std::cerr << "form factors (" << method->name() << "): " << stats.summary() << "\n";
+
+  const std::string solverName = a.solver.empty() ? chooseSolver(mesh.size()) : a.solver;
+  auto solver = makeSolver(solverName);
+  SolverOptions options;
+  options.tolerance = a.tolerance;
+  options.maxIterations = a.maxIterations;
+  options.seed = a.seed;
+  options.ambient = a.ambient;
+  options.recordHistory = false;
+  solver->setOptions(options);
+  solver->setProgress(&progress);
+  solver->setObserver([&](const IterationRecord& r) {
+    if (a.verbose) {
+      std::fprintf(stderr, "iteration %d: residual %.6e, unshot power %.6e%s\n", r.iteration, r.residual,
+                   r.unshotPower, r.shooter >= 0 ? (", shooter " + std::to_string(r.shooter)).c_str() : "");
+    } else if (a.maxIterations > 0) {
+      progress.report(std::min(1.0, static_cast<double>(r.iteration) / a.maxIterations), "solve (" + solverName + ")");
+    }
+  });
+  const RadiositySystem system = RadiositySystem::fromMesh(mesh, F);
+  const RgbField B = solver->compute(system).solve();
+  progress.finish();
+  std::cerr << "solve (" << solverName << "): " << toString(solver->info()) << " after " << solver->iterations()
+            << " iterations, relative residual " << system.relativeResidual(B) << "\n";
+  if (solver->info() != SolverStatus::Success && solver->info() != SolverStatus::NoConvergence)
+    throw std::runtime_error("the solver failed: " + toString(solver->info()));
+
+  if (!a.output.empty()) {
+    writeRadiosityCsv(scene, mesh, B, a.output);
+    std::cerr << "radiosity written to " << a.output << "\n";
+  }
+  if (!a.image.empty()) {
+#ifdef RT_HAVE_VIZ
+    viz::ImageOptions image;
+    image.width = a.width;
+    image.height = a.height;
+    image.exposure = a.exposure;
+    image.toneMap = a.toneMap == "reinhard" ? viz::ToneMap::Reinhard : viz::ToneMap::LinearClamp;
+    image.smooth = a.smooth;
+    image.showEdges = a.edges;
+    viz::renderRadiosityImage(mesh, B, scene.cameraOrDefault(), image, a.image);
+    std::cerr << "image written to " << a.image << "\n";
+#else
+    throw std::runtime_error("--image needs the visualisation library (configure with RT_BUILD_VIZ=ON)");
+#endif
+  }
+}
+
+}  // namespace
 
 void addSolveCommand(CLI::App& app) {
-  auto* command = app.add_subcommand("solve", "(not available yet)");
-  command->callback([] { throw std::runtime_error("'solve' is not available yet"); });
+  auto a = std::make_shared<SolveArguments>();
+  auto* command = app.add_subcommand("solve", "Solve the radiosity system of a scene; write B.csv and/or an image");
+  command->add_option("scene", a->scene, "Scene file (.json or .obj)")->required()->check(CLI::ExistingFile);
+  command->add_option("--method", a->solver,
+                      "Solver: direct, jacobi, gauss-seidel, southwell, progressive, bounces, stochastic-jacobi, "
+                      "random-walk (default: direct for small scenes, gauss-seidel otherwise)");
+  command->add_option("--formfactors", a->formFactors, "Form-factor method (see `radiosity formfactors --help`)")
+      ->capture_default_str();
+  command->add_option("--tolerance", a->tolerance, "Relative residual (or unshot power) to stop at")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command->add_option("--max-iterations", a->maxIterations, "Iteration cap")->capture_default_str();
+  command->add_option("--seed", a->seed, "Seed of the stochastic methods")->capture_default_str();
+  command->add_option("--resolution", a->resolution, "Hemicube resolution")->capture_default_str();
+  command->add_option("--samples", a->samples, "Ray-cast samples per pair / Monte Carlo rays")->capture_default_str();
+  command->add_flag("--ambient", a->ambient, "progressive: show B plus the ambient term");
+  a->mesh.add(*command);
+  command->add_option("--output", a->output, "Write B per element as CSV (element,patch,surface,area,B_r,B_g,B_b)");
+  command->add_option("--image", a->image, "Render the solved scene from its camera to a PNG (needs an X server)");
+  command->add_option("--width", a->width, "Image width")->capture_default_str();
+  command->add_option("--height", a->height, "Image height")->capture_default_str();
+  command->add_option("--exposure", a->exposure, "Exposure multiplier (0 = automatic)")->capture_default_str();
+  command->add_option("--tonemap", a->toneMap, "linear or reinhard")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"linear", "reinhard"}));
+  command->add_flag("--smooth", a->smooth, "Interpolate radiosity at vertices (Gouraud) instead of flat elements");
+  command->add_flag("--edges", a->edges, "Draw the mesh edges");
+  command->add_flag("--verbose", a->verbose, "One line per iteration instead of a progress line");
+  command->callback([a] { run(*a); });
 }
 
 }  // namespace rt::cli

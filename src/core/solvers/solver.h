@@ -77,5 +77,7 @@ class Solver {
 // Registry by name: direct, jacobi, gauss-seidel, southwell, progressive, bounces, stochastic-jacobi, random-walk.
 std::unique_ptr<Solver> makeSolver(const std::string& name);  // throws std::invalid_argument
 std::vector<std::string> solverNames();
+// The solver used when none is named: a direct solve for small n, an iterative one otherwise.
+std::string chooseSolver(std::size_t n);
 
 }  // namespace rt
