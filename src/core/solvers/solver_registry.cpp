@@ -11,3 +11,7 @@ std::unique_ptr<Solver> makeSolver(const std::string& name) {
 std::vector<std::string> solverNames() { return {}; }
 
 }  // namespace rt
+
+namespace rt {
+std::string chooseSolver(std::size_t n) { return n <= 3000 ? "direct" : "gauss-seidel"; }
+}  // namespace rt
