@@ -1,0 +1,102 @@
+// End-to-end: the radiosity CLI solves the Cornell box and the scenes of the furnace test, from the files in scenes/.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/test_paths.h"
+#ifdef RT_HAVE_VIZ
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGReader.h>
+#endif
+
+namespace rt::test {
+namespace {
+
+std::vector<std::vector<std::string>> readCsv(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::vector<std::string>> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+TEST(SolveCommand, FurnaceCubeGivesEOverOneMinusRho) {
+  const std::string out = scratchDir("solve-furnace") + "/B.csv";
+  std::string log;
+  ASSERT_EQ(runCommand(cliPath() + " solve " + sourcePath("scenes/furnace-cube.json") + " --subdivide 2 --output " + out,
+                       &log),
+            0)
+      << log;
+  const auto rows = readCsv(out);
+  ASSERT_EQ(rows.size(), 1u + 6u * 4u);
+  EXPECT_EQ(rows[0][0], "element");
+  for (std::size_t r = 1; r < rows.size(); ++r)
+    for (int c = 4; c < 7; ++c) EXPECT_NEAR(std::stod(rows[r][c]), 2.0, 1e-6) << "row " << r;
+}
+
+TEST(SolveCommand, MissingSceneIsAClearError) {
+  std::string log;
+  EXPECT_NE(runCommand(cliPath() + " solve /nonexistent/scene.json", &log), 0);
+  EXPECT_NE(log.find("scene.json"), std::string::npos) << log;
+}
+
+TEST(SolveCommand, UnknownSolverIsAClearError) {
+  std::string log;
+  EXPECT_NE(runCommand(cliPath() + " solve " + sourcePath("scenes/furnace-cube.json") + " --method nonsense", &log), 0);
+  EXPECT_NE(log.find("nonsense"), std::string::npos) << log;
+}
+
+#ifdef RT_HAVE_VIZ
+TEST(SolveCommand, CornellBoxImageShowsColourBleeding) {
+  const std::string dir = scratchDir("solve-cornell");
+  std::string log;
+  ASSERT_EQ(runCommand(cliPath() + " solve " + sourcePath("scenes/cornell-box.json") + " --max-edge 60 --output " +
+                           dir + "/B.csv --image " + dir + "/cornell.png --width 400 --height 400",
+                       &log),
+            0)
+      << log;
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName((dir + "/cornell.png").c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  int dims[3];
+  image->GetDimensions(dims);
+  ASSERT_EQ(dims[0], 400);
+  ASSERT_EQ(dims[1], 400);
+  // Not blank: the pixels vary; the left third is reddish (red wall), the right third greenish (green wall).
+  double sum = 0, sumSq = 0;
+  double leftRed = 0, leftGreen = 0, rightRed = 0, rightGreen = 0;
+  const int components = image->GetNumberOfScalarComponents();
+  ASSERT_GE(components, 3);
+  for (int y = 0; y < dims[1]; ++y)
+    for (int x = 0; x < dims[0]; ++x) {
+      const auto* p = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
+      const double lum = (p[0] + p[1] + p[2]) / 3.0;
+      sum += lum;
+      sumSq += lum * lum;
+      if (y > dims[1] / 4 && y < 3 * dims[1] / 4) {
+        if (x < dims[0] / 8) leftRed += p[0], leftGreen += p[1];
+        if (x > 7 * dims[0] / 8) rightRed += p[0], rightGreen += p[1];
+      }
+    }
+  const double n = dims[0] * dims[1];
+  const double mean = sum / n, stddev = std::sqrt(std::max(0.0, sumSq / n - mean * mean));
+  EXPECT_GT(mean, 20.0);
+  EXPECT_GT(stddev, 10.0);
+  EXPECT_GT(leftRed, 1.5 * leftGreen) << "the left (red) wall should look red";
+  EXPECT_GT(rightGreen, 1.2 * rightRed) << "the right (green) wall should look green";
+}
+#endif
+
+}  // namespace
+}  // namespace rt::test
