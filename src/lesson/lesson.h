@@ -1,0 +1,132 @@
+// A lesson as data: an ordered list of steps, each naming a scene, a computation (the stage), its parameters,
+// the views to show and the Markdown text to read beside them. Lessons are Markdown files in lessons/ (see
+// docs/lesson-format.md); every field remembers the line it came from so that errors and placeholders can
+// name it.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/scene.h"
+
+namespace rt::lesson {
+
+// What a step computes. Each stage computes only what it needs (a `scene` step never computes form factors).
+enum class Stage {
+  Text,         // no computation, no figure
+  Scene,        // load and mesh the scene; show its geometry and materials
+  Local,        // direct light plus a constant ambient term, beside the radiosity solution
+  FormFactors,  // F with one method; diagnostics (closure, reciprocity)
+  Hemicube,     // F by the hemicube; the hemicube of one element
+  Nusselt,      // F by the Nusselt analog; its projection disk
+  Rays,         // F by ray casting or Monte Carlo; the rays of one element
+  Exact,        // F by a method against a reference method; error per element
+  Matrix,       // K = I - diag(rho) F: dominance, spectral radius, export
+  Solve,        // B with one solver
+  Compare,      // several solvers, methods or subdivisions side by side
+  Bounces,      // B after 0, 1, 2 ... bounces (Neumann series)
+  Benchmark,    // run time against error for methods over a parameter sweep
+};
+
+// The figures a step can ask for; the names match the viz layer's views.
+enum class View {
+  Scene,
+  FormFactor,
+  Hemicube,
+  Nusselt,
+  Rays,
+  Matrix,
+  Convergence,
+  RuntimeError,
+  Visibility,
+  Error,
+  Local
+};
+
+std::string toString(Stage stage);
+std::string toString(View view);
+std::optional<Stage> stageFromString(const std::string& name);
+std::optional<View> viewFromString(const std::string& name);
+std::vector<std::string> stageNames();
+std::vector<std::string> viewNames();
+
+// A value from a step block, with the line it was written on.
+struct Field {
+  std::string value;
+  int line = 0;
+};
+
+struct CameraOverride {
+  std::optional<Vec3> position, target, up;
+  std::optional<double> fovYDegrees;
+  bool any() const { return position || target || up || fovYDegrees; }
+};
+
+// The parameters of a step. Unset optionals mean "the method's or solver's default".
+struct StepParameters {
+  std::string method = "analytic";   // form-factor method
+  std::vector<std::string> methods;  // compare / benchmark / exact: several methods
+  std::string reference;             // exact / benchmark: the method errors are measured against
+  std::optional<int> resolution;     // hemicube resolution
+  std::optional<int> samples;        // raycast / montecarlo samples
+  std::optional<std::uint64_t> seed;
+  std::optional<int> subdivide;   // N x N per patch
+  std::optional<double> maxEdge;  // or: split until no edge is longer than this
+  std::vector<int> subdivisions;  // compare: several subdivision levels
+  std::vector<int> sweep;         // benchmark: resolutions (hemicube) or samples (rays) to try
+  std::string solver = "gauss-seidel";
+  std::vector<std::string> solvers;  // compare: several solvers
+  std::optional<int> iterations;     // maximum iterations
+  std::optional<double> tolerance;
+  std::optional<double> relaxation;
+  bool ambient = false;       // progressive refinement with the ambient term
+  int bounces = 6;            // bounces stage
+  double ambientLight = 0.0;  // local stage: the constant ambient radiosity (0 = the classic estimate)
+  std::map<std::string, Rgb> reflectance;  // surface name -> reflectance override
+  double lightScale = 1.0;                 // multiplies every emission
+  // Display
+  double exposure = 0.0;
+  std::string toneMap = "linear";  // linear | reinhard
+  bool gamma = true;
+  bool smooth = false;
+  bool edges = false;
+  std::string exportMatrix;  // matrix stage: file name (csv, mtx, npy, tex) written beside the figures
+};
+
+struct Step {
+  int index = 0;  // 0-based position in the lesson
+  int line = 0;   // line of the step's heading
+  std::string title;
+  std::string text;   // Markdown, may contain {{placeholders}}
+  int textLine = 0;   // line where the text starts (for placeholder errors)
+  std::string scene;  // relative to the scenes folder; empty for Text steps
+  Stage stage = Stage::Text;
+  StepParameters parameters;
+  std::vector<View> views;
+  CameraOverride camera;
+  std::vector<std::string> highlights;  // surface names or element ids ("12")
+  std::string from;                     // the element or surface a hemicube/Nusselt/rays view is seen from
+  std::string figure;                   // base name of the step's figure files
+  std::vector<std::string> controls;    // parameter keys the app may let the reader change
+  std::map<std::string, Field> fields;  // every key as written, with its line (for late errors)
+
+  // File names (without folder) of the figures, one per view: "<figure>.png" for a single view,
+  // "<figure>-<view>.png" otherwise.
+  std::vector<std::string> figureFiles() const;
+};
+
+struct Lesson {
+  std::string id;  // the file name without extension
+  std::string file;
+  std::string title;
+  std::string chapter;
+  int order = 0;
+  std::string summary;
+  std::string intro;  // Markdown between the header and the first step
+  int introLine = 0;
+  std::vector<Step> steps;
+};
+
+}  // namespace rt::lesson

@@ -1,0 +1,432 @@
+#include "lesson/lesson_parser.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "core/input_error.h"
+#include "lesson/placeholders.h"
+#include "lesson/value_parsing.h"
+
+namespace rt::lesson {
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto begin = s.find_first_not_of(" \t\r");
+  if (begin == std::string::npos) return "";
+  const auto end = s.find_last_not_of(" \t\r");
+  return s.substr(begin, end - begin + 1);
+}
+
+bool startsWith(const std::string& s, const std::string& prefix) {
+  return s.rfind(prefix, 0) == 0;
+}
+
+std::vector<std::string> splitLines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+bool contains(const std::vector<std::string>& list, const std::string& name) {
+  return std::find(list.begin(), list.end(), name) != list.end();
+}
+
+// Strips leading and trailing blank lines from a block of Markdown, keeping its inner layout.
+std::string trimBlankLines(const std::vector<std::string>& lines, int* firstLine) {
+  std::size_t begin = 0, end = lines.size();
+  while (begin < end && trim(lines[begin]).empty()) ++begin;
+  while (end > begin && trim(lines[end - 1]).empty()) --end;
+  if (firstLine) *firstLine += static_cast<int>(begin);
+  std::string out;
+  for (std::size_t i = begin; i < end; ++i) out += lines[i] + "\n";
+  return out;
+}
+
+class Parser {
+ public:
+  Parser(const std::string& text, std::string id, std::string file)
+      : lines_(splitLines(text)), file_(std::move(file)) {
+    lesson_.id = std::move(id);
+    lesson_.file = file_;
+  }
+
+  Lesson parse() {
+    std::size_t at = parseHeader();
+    parseBody(at);
+    if (lesson_.steps.empty())
+      fail(static_cast<int>(lines_.size()), "the lesson has no steps (a step starts with '## Title')");
+    checkFigureNames();
+    return lesson_;
+  }
+
+ private:
+  [[noreturn]] void fail(int line, const std::string& message) const {
+    throw InputError({file_, line}, message);
+  }
+
+  std::size_t parseHeader() {
+    if (lines_.empty() || trim(lines_[0]) != "---")
+      fail(1, "a lesson starts with a header between '---' lines (title, order, chapter, summary)");
+    std::set<std::string> seen;
+    for (std::size_t i = 1; i < lines_.size(); ++i) {
+      const int line = static_cast<int>(i) + 1;
+      const std::string t = trim(lines_[i]);
+      if (t == "---") {
+        if (!seen.count("title")) fail(line, "the header has no 'title'");
+        if (!seen.count("order")) fail(line, "the header has no 'order' (the lesson's position in the book)");
+        return i + 1;
+      }
+      if (t.empty() || t[0] == '#') continue;
+      const auto colon = t.find(':');
+      if (colon == std::string::npos) fail(line, "expected 'key: value' in the header, got '" + t + "'");
+      const std::string key = trim(t.substr(0, colon));
+      const std::string value = trim(t.substr(colon + 1));
+      if (!seen.insert(key).second) fail(line, "'" + key + "' is given twice");
+      if (key == "title") {
+        if (value.empty()) fail(line, "the title is empty");
+        lesson_.title = value;
+      } else if (key == "order") {
+        lesson_.order = parseInt(value, {file_, line}, "order", 0, 100000);
+      } else if (key == "chapter") {
+        lesson_.chapter = value;
+      } else if (key == "summary") {
+        lesson_.summary = value;
+      } else {
+        fail(line, "unknown header key '" + key + "' (known: title, order, chapter, summary)");
+      }
+    }
+    fail(static_cast<int>(lines_.size()), "the header is not closed by a '---' line");
+  }
+
+  void parseBody(std::size_t at) {
+    std::vector<std::string> text;
+    int textLine = static_cast<int>(at) + 1;
+    bool inFence = false;
+    Step* step = nullptr;
+    auto flush = [&] {
+      int first = textLine;
+      std::string body = trimBlankLines(text, &first);
+      if (step) {
+        step->text = body;
+        step->textLine = first;
+      } else {
+        lesson_.intro = body;
+        lesson_.introLine = first;
+      }
+      checkPlaceholders(body, first);
+      text.clear();
+    };
+    for (std::size_t i = at; i < lines_.size(); ++i) {
+      const int line = static_cast<int>(i) + 1;
+      const std::string& raw = lines_[i];
+      const std::string t = trim(raw);
+      if (!inFence && startsWith(raw, "## ")) {
+        if (step) finishStep(*step);
+        flush();
+        lesson_.steps.emplace_back();
+        step = &lesson_.steps.back();
+        step->index = static_cast<int>(lesson_.steps.size()) - 1;
+        step->line = line;
+        step->title = trim(raw.substr(3));
+        if (step->title.empty()) fail(line, "the step has no title");
+        textLine = line + 1;
+        continue;
+      }
+      if (!inFence && t == "```step") {
+        if (!step) fail(line, "a ```step block must follow a step heading ('## Title')");
+        if (!step->fields.empty() || stepBlockSeen_) fail(line, "the step already has a ```step block");
+        i = parseStepBlock(i + 1, *step);
+        stepBlockSeen_ = true;
+        // Keep line numbers of the text right: the block is replaced by nothing, text resumes after it.
+        if (text.empty() ||
+            std::all_of(text.begin(), text.end(), [](const auto& l) { return trim(l).empty(); })) {
+          text.clear();
+          textLine = static_cast<int>(i) + 2;
+        } else {
+          fail(line, "put the ```step block right after the step heading, before the text");
+        }
+        continue;
+      }
+      if (startsWith(t, "```")) inFence = !inFence;
+      text.push_back(raw);
+    }
+    if (inFence) fail(static_cast<int>(lines_.size()), "a ``` code block is not closed");
+    if (step) finishStep(*step);
+    flush();
+  }
+
+  // Reads `key: value` lines up to the closing fence; returns the index of the closing fence.
+  std::size_t parseStepBlock(std::size_t at, Step& step) {
+    for (std::size_t i = at; i < lines_.size(); ++i) {
+      const int line = static_cast<int>(i) + 1;
+      const std::string t = trim(lines_[i]);
+      if (t == "```") return i;
+      if (t.empty() || t[0] == '#') continue;
+      const auto colon = t.find(':');
+      if (colon == std::string::npos) fail(line, "expected 'key: value' in the step block, got '" + t + "'");
+      const std::string key = trim(t.substr(0, colon));
+      const std::string value = trim(t.substr(colon + 1));
+      const bool isReflectance = startsWith(key, "reflectance.") && key.size() > 12;
+      if (!isReflectance && !contains(stepKeys(), key))
+        fail(line,
+             "unknown step key '" + key + "' (known: " + joined(stepKeys()) + ", reflectance.<surface>)");
+      if (value.empty()) fail(line, "'" + key + "' has no value");
+      if (!step.fields.emplace(key, Field{value, line}).second) fail(line, "'" + key + "' is given twice");
+      applyField(step, key, value, {file_, line});
+    }
+    fail(static_cast<int>(at), "the ```step block is not closed by ```");
+  }
+
+  void applyField(Step& step, const std::string& key, const std::string& value, const SourceLocation& where) {
+    StepParameters& p = step.parameters;
+    auto name = [&](const std::vector<std::string>& known, const std::string& what) {
+      if (!contains(known, value))
+        fail(where.line, "unknown " + what + " '" + value + "' (known: " + joined(known) + ")");
+      return value;
+    };
+    auto names = [&](const std::vector<std::string>& known, const std::string& what) {
+      auto list = parseList(value);
+      for (const auto& n : list)
+        if (!contains(known, n))
+          fail(where.line, "unknown " + what + " '" + n + "' (known: " + joined(known) + ")");
+      return list;
+    };
+    if (key == "scene")
+      step.scene = value;
+    else if (key == "stage") {
+      auto s = stageFromString(value);
+      if (!s) fail(where.line, "unknown stage '" + value + "' (known: " + joined(stageNames()) + ")");
+      step.stage = *s;
+    } else if (key == "method")
+      p.method = name(knownMethods(), "form-factor method");
+    else if (key == "methods")
+      p.methods = names(knownMethods(), "form-factor method");
+    else if (key == "reference")
+      p.reference = name(knownMethods(), "form-factor method");
+    else if (key == "resolution")
+      p.resolution = parseInt(value, where, key, 2, 4096);
+    else if (key == "samples")
+      p.samples = parseInt(value, where, key, 1, 1000000);
+    else if (key == "seed")
+      p.seed = static_cast<std::uint64_t>(parseInt(value, where, key, 0, 2000000000));
+    else if (key == "subdivide")
+      p.subdivide = parseInt(value, where, key, 1, 64);
+    else if (key == "max-edge")
+      p.maxEdge = parseDouble(value, where, key, 1e-9, 1e9);
+    else if (key == "subdivisions")
+      p.subdivisions = parseIntList(value, where, key, 1, 64);
+    else if (key == "sweep")
+      p.sweep = parseIntList(value, where, key, 1, 1000000);
+    else if (key == "solver")
+      p.solver = name(knownSolvers(), "solver");
+    else if (key == "solvers")
+      p.solvers = names(knownSolvers(), "solver");
+    else if (key == "iterations")
+      p.iterations = parseInt(value, where, key, 1, 1000000);
+    else if (key == "tolerance")
+      p.tolerance = parseDouble(value, where, key, 1e-15, 0.5);
+    else if (key == "relaxation")
+      p.relaxation = parseDouble(value, where, key, 0.05, 1.99);
+    else if (key == "ambient")
+      p.ambient = parseBool(value, where, key);
+    else if (key == "bounces")
+      p.bounces = parseInt(value, where, key, 0, 1000);
+    else if (key == "ambient-light")
+      p.ambientLight = parseDouble(value, where, key, 0, 1e9);
+    else if (key == "light-scale")
+      p.lightScale = parseDouble(value, where, key, 0, 1e9);
+    else if (key == "exposure")
+      p.exposure = parseDouble(value, where, key, 0, 1e9);
+    else if (key == "tone-map") {
+      if (value != "linear" && value != "reinhard")
+        fail(where.line, "tone-map is 'linear' or 'reinhard', not '" + value + "'");
+      p.toneMap = value;
+    } else if (key == "gamma")
+      p.gamma = parseBool(value, where, key);
+    else if (key == "smooth")
+      p.smooth = parseBool(value, where, key);
+    else if (key == "edges")
+      p.edges = parseBool(value, where, key);
+    else if (key == "export") {
+      const auto dot = value.rfind('.');
+      const std::string ext = dot == std::string::npos ? "" : value.substr(dot);
+      if (ext != ".csv" && ext != ".mtx" && ext != ".npy" && ext != ".tex")
+        fail(where.line, "export names a file ending in .csv, .mtx, .npy or .tex, not '" + value + "'");
+      if (value.find('/') != std::string::npos) fail(where.line, "export is a file name, not a path");
+      p.exportMatrix = value;
+    } else if (startsWith(key, "reflectance.")) {
+      p.reflectance[key.substr(12)] = parseRgb(value, where, key, 0.0, 0.999999);
+    } else if (key == "views") {
+      for (const auto& v : parseList(value)) {
+        auto view = viewFromString(v);
+        if (!view) fail(where.line, "unknown view '" + v + "' (known: " + joined(viewNames()) + ")");
+        if (std::find(step.views.begin(), step.views.end(), *view) != step.views.end())
+          fail(where.line, "view '" + v + "' is listed twice");
+        step.views.push_back(*view);
+      }
+    } else if (key == "camera.position")
+      step.camera.position = parseVec3(value, where, key);
+    else if (key == "camera.target")
+      step.camera.target = parseVec3(value, where, key);
+    else if (key == "camera.up")
+      step.camera.up = parseVec3(value, where, key);
+    else if (key == "camera.fov")
+      step.camera.fovYDegrees = parseDouble(value, where, key, 1, 170);
+    else if (key == "highlight")
+      step.highlights = parseList(value);
+    else if (key == "from")
+      step.from = value;
+    else if (key == "figure") {
+      const bool ok = std::all_of(value.begin(), value.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
+      });
+      if (!ok)
+        fail(where.line,
+             "a figure name uses a-z, 0-9 and '-' only (it becomes a file name), not '" + value + "'");
+      step.figure = value;
+    } else if (key == "controls") {
+      for (const auto& c : parseList(value)) {
+        const bool known = contains(stepKeys(), c) || c == "reflectance" || startsWith(c, "reflectance.");
+        if (!known || c == "scene" || c == "stage" || c == "views" || c == "figure" || c == "controls")
+          fail(where.line,
+               "'" + c + "' cannot be a control (controls name parameters such as resolution, solver)");
+        step.controls.push_back(c);
+      }
+    }
+  }
+
+  // Checks that go across keys, once the whole step block is known.
+  void finishStep(Step& step) {
+    stepBlockSeen_ = false;
+    if (step.fields.empty())
+      fail(step.line, "step '" + step.title + "' has no ```step block (it needs at least 'stage')");
+    auto lineOf = [&](const std::string& key) {
+      auto it = step.fields.find(key);
+      return it == step.fields.end() ? step.line : it->second.line;
+    };
+    if (!step.fields.count("stage")) fail(step.line, "step '" + step.title + "' has no 'stage'");
+    const StepParameters& p = step.parameters;
+    if (step.stage == Stage::Text) {
+      if (!step.views.empty())
+        fail(lineOf("views"), "a text step has no figures: remove 'views' or choose a stage");
+    } else if (step.scene.empty()) {
+      fail(lineOf("stage"), "stage '" + toString(step.stage) + "' needs a 'scene'");
+    }
+    if (!step.views.empty() && step.figure.empty())
+      fail(lineOf("views"), "a step with views needs a 'figure' name");
+    if (step.views.empty() && !step.figure.empty()) fail(lineOf("figure"), "a figure needs 'views' to show");
+    if (p.subdivide && p.maxEdge) fail(lineOf("max-edge"), "give either 'subdivide' or 'max-edge', not both");
+    for (View v : step.views) {
+      if (!viewFits(v, step.stage))
+        fail(lineOf("views"),
+             "view '" + toString(v) + "' cannot be shown by stage '" + toString(step.stage) + "'");
+    }
+    if (step.stage == Stage::Compare && p.solvers.size() + p.methods.size() + p.subdivisions.size() < 2)
+      fail(lineOf("stage"), "a compare step needs at least two 'solvers', 'methods' or 'subdivisions'");
+    if (step.stage == Stage::Benchmark) {
+      if (p.methods.empty()) fail(lineOf("stage"), "a benchmark step needs 'methods'");
+      if (p.sweep.empty()) fail(lineOf("stage"), "a benchmark step needs a 'sweep' (resolutions or samples)");
+      if (p.reference.empty()) fail(lineOf("stage"), "a benchmark step needs a 'reference' method");
+    }
+    if (step.stage == Stage::Exact && p.reference.empty())
+      fail(lineOf("stage"), "an exact step needs a 'reference' method to measure errors against");
+    if (!p.exportMatrix.empty() && step.stage != Stage::Matrix)
+      fail(lineOf("export"), "'export' belongs to a matrix step");
+    for (const auto& c : step.controls)
+      if (c == "method" && step.stage == Stage::Text) fail(lineOf("controls"), "a text step has no controls");
+  }
+
+  static bool viewFits(View v, Stage s) {
+    const bool computesF = s != Stage::Text && s != Stage::Scene;
+    switch (v) {
+      case View::Scene:
+        return s != Stage::Text;
+      case View::Local:
+        return s == Stage::Local;
+      case View::FormFactor:
+      case View::Matrix:
+        return computesF;
+      case View::Hemicube:
+        return s == Stage::Hemicube;
+      case View::Nusselt:
+        return s == Stage::Nusselt;
+      case View::Rays:
+        return s == Stage::Rays;
+      case View::Visibility:
+        return s == Stage::FormFactors || s == Stage::Rays || s == Stage::Hemicube || s == Stage::Exact;
+      case View::Convergence:
+        return s == Stage::Solve || s == Stage::Compare || s == Stage::Bounces;
+      case View::RuntimeError:
+        return s == Stage::Benchmark;
+      case View::Error:
+        return s == Stage::Exact || s == Stage::Compare;
+    }
+    return false;
+  }
+
+  void checkFigureNames() {
+    std::map<std::string, int> files;
+    for (const auto& step : lesson_.steps) {
+      for (const auto& f : step.figureFiles()) {
+        const int line = step.fields.at("figure").line;
+        auto [it, fresh] = files.emplace(f, line);
+        if (!fresh)
+          fail(line, "figure file '" + f + "' is already used at line " + std::to_string(it->second));
+      }
+    }
+  }
+
+  void checkPlaceholders(const std::string& text, int firstLine) {
+    for (const auto& ph : findPlaceholders(text, firstLine)) {
+      if (!ph.error.empty()) fail(ph.line, ph.error);
+    }
+  }
+
+  std::vector<std::string> lines_;
+  std::string file_;
+  Lesson lesson_;
+  bool stepBlockSeen_ = false;
+};
+
+}  // namespace
+
+const std::vector<std::string>& stepKeys() {
+  static const std::vector<std::string> keys{
+      "scene",     "stage",         "method",      "methods",   "reference",       "resolution",
+      "samples",   "seed",          "subdivide",   "max-edge",  "subdivisions",    "sweep",
+      "solver",    "solvers",       "iterations",  "tolerance", "relaxation",      "ambient",
+      "bounces",   "ambient-light", "light-scale", "exposure",  "tone-map",        "gamma",
+      "smooth",    "edges",         "export",      "views",     "camera.position", "camera.target",
+      "camera.up", "camera.fov",    "highlight",   "from",      "figure",          "controls"};
+  return keys;
+}
+
+const std::vector<std::string>& knownMethods() {
+  static const std::vector<std::string> methods{"analytic",   "hemicube", "raycast",
+                                                "montecarlo", "nusselt",  "exact"};
+  return methods;
+}
+
+const std::vector<std::string>& knownSolvers() {
+  static const std::vector<std::string> solvers{"direct",      "jacobi",  "gauss-seidel",      "southwell",
+                                                "progressive", "bounces", "stochastic-jacobi", "random-walk"};
+  return solvers;
+}
+
+Lesson parseLesson(const std::string& text, const std::string& id, const std::string& file) {
+  return Parser(text, id, file).parse();
+}
+
+}  // namespace rt::lesson
