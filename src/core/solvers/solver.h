@@ -1,5 +1,6 @@
-// Solvers in Eigen's shape: compute(system), solve() -> B, info(), iterations(), error(), and an observer called after
-// every iteration with a record the app can replay. Non-convergence is a status, never an exception.
+// Solvers in Eigen's shape: compute(system), solve() -> B, info(), iterations(), error(), and an observer
+// called after every iteration with a record the app can replay. Non-convergence is a status, never an
+// exception.
 #pragma once
 
 #include <cstdint>
@@ -24,21 +25,32 @@ struct SolverOptions {
   std::uint64_t seed = 1;     // stochastic solvers
   long raysPerIteration = 0;  // stochastic: ray budget per iteration (0 = a default from n)
   bool recordHistory = true;  // keep every IterationRecord (memory n x 3 doubles per iteration)
+  // random-walk: score every collision (lower variance) or only where a walk is absorbed.
+  enum class WalkEstimator { Collision, Absorption };
+  WalkEstimator walkEstimator = WalkEstimator::Collision;
 };
 
 struct IterationRecord {
   int iteration = 0;
-  RgbField B;               // current estimate (for progressive with ambient: the displayed B + rho * ambient)
-  RgbField unshot;          // unshot radiosity (shooting methods; empty otherwise)
-  double residual = 0;      // ||K B - E|| / ||E||
-  double unshotPower = 0;   // sum over elements and channels of unshot_i * A_i
+  RgbField B;              // current estimate (for progressive with ambient: the displayed B + rho * ambient)
+  RgbField unshot;         // unshot radiosity (shooting methods; empty otherwise)
+  double residual = 0;     // ||K B - E|| / ||E||
+  double unshotPower = 0;  // sum over elements and channels of unshot_i * A_i
   double emittedPower = 0;  // sum E_i A_i (all channels)
-  double absorbedPower = 0; // sum (1 - rho_i) B_i A_i (all channels)
-  int shooter = -1;         // shooting methods: the element shot in this iteration
-  double seconds = 0;       // since solve() started
+  double absorbedPower =
+      0;               // sum (1 - rho_i) H_i A_i (all channels), H = incident irradiance; shooting: so far
+  int shooter = -1;    // shooting methods: the element shot in this iteration
+  double seconds = 0;  // since solve() started
+  double escapedPower =
+      0;  // power that left through openings (sum B_i A_i (1 - sum_j F_ij)); shooting: so far
+  double standardError =
+      0;          // stochastic methods: RMS of the per-element standard error of B, relative to ||B||
+  long rays = 0;  // stochastic methods: rays (or walks) used so far
 };
 
 using IterationObserver = std::function<void(const IterationRecord&)>;
+// What the free algorithm functions call after every iteration (the Solver classes forward it to record()).
+using IterationSink = std::function<void(IterationRecord)>;
 
 class Solver {
  public:
@@ -59,6 +71,9 @@ class Solver {
   int iterations() const { return iterations_; }
   double error() const { return error_; }  // final relative residual (or its estimate)
   const std::vector<IterationRecord>& history() const { return history_; }
+  // Stochastic solvers: per-element standard error of the returned B (n x 3); empty for deterministic
+  // solvers.
+  const RgbField& standardError() const { return standardError_; }
 
  protected:
   // Called by implementations after every iteration: stores history, calls the observer, checks cancellation.
@@ -72,9 +87,11 @@ class Solver {
   int iterations_ = 0;
   double error_ = 0;
   std::vector<IterationRecord> history_;
+  RgbField standardError_;
 };
 
-// Registry by name: direct, jacobi, gauss-seidel, southwell, progressive, bounces, stochastic-jacobi, random-walk.
+// Registry by name: direct, jacobi, gauss-seidel, southwell, progressive, bounces, stochastic-jacobi,
+// random-walk.
 std::unique_ptr<Solver> makeSolver(const std::string& name);  // throws std::invalid_argument
 std::vector<std::string> solverNames();
 // The solver used when none is named: a direct solve for small n, an iterative one otherwise.

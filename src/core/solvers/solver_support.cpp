@@ -1,0 +1,66 @@
+#include "core/solvers/solver_support.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/solvers/energy.h"
+
+namespace rt::solver_detail {
+
+SolverStatus validate(const RadiositySystem& system, bool needMatrix) {
+  const Eigen::Index n = system.areas.size();
+  if (system.reflectance.rows() != n || system.emission.rows() != n) return SolverStatus::InvalidInput;
+  if (needMatrix && (!system.F || system.F->rows() != n || system.F->cols() != n))
+    return SolverStatus::InvalidInput;
+  if (!system.areas.allFinite() || (system.areas.array() <= 0.0).any()) return SolverStatus::InvalidInput;
+  if (!system.reflectance.allFinite() || (system.reflectance.array() < 0.0).any() ||
+      (system.reflectance.array() > 1.0).any())
+    return SolverStatus::InvalidInput;
+  if (!system.emission.allFinite() || (system.emission.array() < 0.0).any())
+    return SolverStatus::InvalidInput;
+  if (system.F && !system.F->allFinite()) return SolverStatus::InvalidInput;
+  return SolverStatus::Success;
+}
+
+double totalEmittedPower(const RadiositySystem& system) {
+  return emittedPower(system).sum();
+}
+
+IterationRecord gatherRecord(const RadiositySystem& system, const RgbField& B, int iteration,
+                             double seconds) {
+  IterationRecord r;
+  r.iteration = iteration;
+  r.B = B;
+  r.residual = system.relativeResidual(B);
+  r.emittedPower = totalEmittedPower(system);
+  r.absorbedPower = absorbedPower(system, B).sum();
+  r.escapedPower = escapedPower(system, B).sum();
+  r.seconds = seconds;
+  return r;
+}
+
+std::size_t sampleCumulative(const std::vector<double>& cumulative, double target) {
+  return static_cast<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), target) -
+                                  cumulative.begin());
+}
+
+void AlgorithmSolver::onRecord(IterationRecord r) {
+  iterations_ = r.iteration;
+  error_ = r.residual;
+  if (progress_) {
+    const double byCount = options_.maxIterations > 0 ? double(r.iteration) / options_.maxIterations : 0.0;
+    const double byError = (r.residual > 0 && options_.tolerance > 0 && options_.tolerance < 1)
+                               ? std::log(r.residual) / std::log(options_.tolerance)
+                               : 0.0;
+    progress_->report(std::clamp(std::max(byCount, byError), 0.0, 1.0), "solve (" + name_ + ")");
+  }
+  record(std::move(r));
+}
+
+RgbField AlgorithmSolver::solve() {
+  return run([this](RgbField& B) {
+    return algorithm_(*system_, B, options_, [this](IterationRecord r) { onRecord(std::move(r)); });
+  });
+}
+
+}  // namespace rt::solver_detail

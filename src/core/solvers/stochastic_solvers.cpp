@@ -1,0 +1,233 @@
+#include "core/solvers/stochastic_solvers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace rt {
+
+namespace {
+
+using namespace solver_detail;
+
+// Inclusive running sums of the rows of F, built the first time a row is used as a distribution.
+class RowSampler {
+ public:
+  explicit RowSampler(const FormFactorMatrix& F) : F_(F), cumulative_(static_cast<std::size_t>(F.rows())) {}
+  // Element hit by a line leaving `from`, or -1 when it escapes.
+  int sample(Eigen::Index from, double u) {
+    std::vector<double>& c = cumulative_[static_cast<std::size_t>(from)];
+    if (c.empty()) {
+      c.resize(static_cast<std::size_t>(F_.cols()));
+      double sum = 0.0;
+      for (Eigen::Index k = 0; k < F_.cols(); ++k)
+        c[static_cast<std::size_t>(k)] = sum += std::max(0.0, F_(from, k));
+    }
+    const std::size_t k = sampleCumulative(c, u);
+    return k < c.size() ? static_cast<int>(k) : -1;
+  }
+
+ private:
+  const FormFactorMatrix& F_;
+  std::vector<std::vector<double>> cumulative_;
+};
+
+long defaultRays(const RadiositySystem& system, const SolverOptions& options) {
+  return options.raysPerIteration > 0 ? options.raysPerIteration
+                                      : std::max<long>(1000, 100 * (long)system.size());
+}
+
+double relativeNorm(const RgbField& standardError, const RgbField& B) {
+  const double b = B.norm();
+  return b > 0 ? standardError.norm() / b : standardError.norm();
+}
+
+}  // namespace
+
+SolverStatus stochasticJacobi(const RadiositySystem& system, RgbField& B, const SolverOptions& options,
+                              const IterationSink& sink, RgbField* standardError) {
+  B = system.emission;
+  const SolverStatus valid = validate(system, true);
+  const auto n = static_cast<Eigen::Index>(system.size());
+  RgbField variance = RgbField::Zero(n, 3);
+  if (standardError) *standardError = variance;
+  if (valid != SolverStatus::Success) return valid;
+  const Eigen::VectorXd& A = system.areas;
+  const Stopwatch clock;
+  Random random(options.seed);
+  RowSampler lines(*system.F);
+  const long budget = defaultRays(system, options);
+
+  RgbField unshot = system.emission;
+  const double emitted = totalEmittedPower(system);
+  if (emitted <= 0.0) return SolverStatus::Success;
+  double absorbed = 0.0, escaped = 0.0;
+  long raysSoFar = 0;
+  std::vector<double> sourceCumulative(static_cast<std::size_t>(n));
+  RgbField received(n, 3), receivedSquares(n, 3);
+
+  for (int k = 1; k <= options.maxIterations; ++k) {
+    double total = 0.0;
+    for (Eigen::Index j = 0; j < n; ++j)
+      sourceCumulative[std::size_t(j)] = total += unshot.row(j).sum() * A(j);
+    if (total <= 0.0) return SolverStatus::Success;
+    // Constant power per ray: later iterations, with less to shoot, get fewer rays.
+    const long rays = std::max(1L, static_cast<long>(std::ceil(double(budget) * total / emitted)));
+    received.setZero();
+    receivedSquares.setZero();
+    for (long r = 0; r < rays; ++r) {
+      const std::size_t picked = sampleCumulative(sourceCumulative, random.uniform() * total);
+      const auto j = static_cast<Eigen::Index>(std::min(picked, std::size_t(n - 1)));
+      const double sourcePower = unshot.row(j).sum() * A(j);
+      if (sourcePower <= 0.0) continue;  // rounding at the top of the cumulative sum
+      // Unbiased weight: the source's power divided by (rays * probability of picking it).
+      const Eigen::RowVector3d weight = unshot.row(j) * A(j) * (total / (double(rays) * sourcePower));
+      const int hit = lines.sample(j, random.uniform());
+      if (hit < 0) {
+        escaped += weight.sum();
+        continue;
+      }
+      received.row(hit) += weight;
+      receivedSquares.row(hit) += weight.cwiseProduct(weight);
+    }
+    raysSoFar += rays;
+    // Variance of a sum of `rays` independent scores, estimated from the same scores.
+    const RgbField sumVariance =
+        (receivedSquares.array() - received.array().square() / double(rays)).cwiseMax(0.0).matrix();
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const Eigen::Array3d rho = system.reflectance.row(j).array().transpose();
+      const Eigen::Array3d in = received.row(j).array().transpose();
+      absorbed += ((1.0 - rho) * in).sum();
+      const Eigen::Array3d gain = rho * in / A(j);
+      unshot.row(j) = gain.matrix().transpose();
+      B.row(j) += gain.matrix().transpose();
+      variance.row(j) +=
+          (rho.square() * sumVariance.row(j).array().transpose() / (A(j) * A(j))).matrix().transpose();
+    }
+    IterationRecord rec;
+    rec.iteration = k;
+    rec.B = B;
+    rec.unshot = unshot;
+    rec.unshotPower = unshot.rowwise().sum().cwiseProduct(A).sum();
+    rec.emittedPower = emitted;
+    rec.absorbedPower = absorbed;
+    rec.escapedPower = escaped;
+    rec.residual = system.relativeResidual(B);
+    rec.standardError = relativeNorm(variance.cwiseSqrt(), B);
+    rec.rays = raysSoFar;
+    rec.seconds = clock.seconds();
+    const bool done = rec.unshotPower <= options.tolerance * emitted;
+    if (standardError) *standardError = variance.cwiseSqrt();
+    if (sink) sink(std::move(rec));
+    if (done) return SolverStatus::Success;
+  }
+  return SolverStatus::NoConvergence;
+}
+
+SolverStatus randomWalk(const RadiositySystem& system, RgbField& B, const SolverOptions& options,
+                        const IterationSink& sink, RgbField* standardError) {
+  B = system.emission;
+  const SolverStatus valid = validate(system, true);
+  const auto n = static_cast<Eigen::Index>(system.size());
+  if (standardError) *standardError = RgbField::Zero(n, 3);
+  if (valid != SolverStatus::Success) return valid;
+  const Eigen::VectorXd& A = system.areas;
+  const RgbField& rho = system.reflectance;
+  const Stopwatch clock;
+  Random random(options.seed);
+  RowSampler lines(*system.F);
+  const long batch = defaultRays(system, options);
+  const bool absorption = options.walkEstimator == SolverOptions::WalkEstimator::Absorption;
+
+  std::vector<double> sourceCumulative(static_cast<std::size_t>(n));
+  double emitted = 0.0;
+  for (Eigen::Index j = 0; j < n; ++j)
+    sourceCumulative[std::size_t(j)] = emitted += system.emission.row(j).sum() * A(j);
+  if (emitted <= 0.0) return SolverStatus::Success;
+  Eigen::VectorXd survival(n);
+  for (Eigen::Index j = 0; j < n; ++j) survival(j) = std::min(rho.row(j).maxCoeff(), 1.0 - 1e-12);
+
+  // Sums over walks of each walk's total score per element (power), and of its square: walks are independent,
+  // scores within one walk are not, hence the per-walk merge below.
+  RgbField sum = RgbField::Zero(n, 3), sumSquares = RgbField::Zero(n, 3);
+  double absorbed = 0.0, escaped = 0.0;
+  long walks = 0;
+  std::vector<std::pair<int, Eigen::RowVector3d>> scores;
+  constexpr int kMaxSteps = 1000000;  // a walk ends with probability 1; this only bounds pathological input
+
+  auto score = [&scores](int k, const Eigen::RowVector3d& s) {
+    for (auto& [element, value] : scores)
+      if (element == k) {
+        value += s;
+        return;
+      }
+    scores.emplace_back(k, s);
+  };
+
+  for (int it = 1; it <= options.maxIterations; ++it) {
+    for (long w = 0; w < batch; ++w) {
+      scores.clear();
+      const std::size_t picked = sampleCumulative(sourceCumulative, random.uniform() * emitted);
+      auto at = static_cast<Eigen::Index>(std::min(picked, std::size_t(n - 1)));
+      const double sourcePower = system.emission.row(at).sum() * A(at);
+      if (sourcePower <= 0.0) continue;
+      Eigen::RowVector3d weight = system.emission.row(at) * A(at) * (emitted / sourcePower);
+      for (int step = 0; step < kMaxSteps; ++step) {
+        const int hit = lines.sample(at, random.uniform());
+        if (hit < 0) {
+          escaped += weight.sum();
+          break;
+        }
+        const Eigen::RowVector3d reflected = weight.cwiseProduct(rho.row(hit));
+        absorbed += weight.sum() - reflected.sum();
+        const double q = survival(hit);
+        const bool survives = q > 0.0 && random.uniform() < q;
+        if (!absorption) score(hit, reflected);
+        if (!survives) {
+          if (absorption) score(hit, reflected / (1.0 - q));
+          break;
+        }
+        weight = reflected / q;
+        at = hit;
+      }
+      for (const auto& [element, value] : scores) {
+        sum.row(element) += value;
+        sumSquares.row(element) += value.cwiseProduct(value);
+      }
+    }
+    walks += batch;
+    const double W = double(walks);
+    const RgbField mean = sum / W;
+    const RgbField meanVariance =
+        ((sumSquares.array() / W - mean.array().square()).cwiseMax(0.0) / W).matrix();
+    B = system.emission + (A.cwiseInverse().asDiagonal() * mean);
+    RgbField se = (A.cwiseInverse().asDiagonal() * meanVariance.cwiseSqrt());
+    IterationRecord rec;
+    rec.iteration = it;
+    rec.B = B;
+    rec.emittedPower = emitted;
+    rec.absorbedPower = absorbed / W;
+    rec.escapedPower = escaped / W;
+    rec.residual = system.relativeResidual(B);
+    rec.standardError = relativeNorm(se, B);
+    rec.rays = walks;
+    rec.seconds = clock.seconds();
+    const bool done = rec.standardError <= options.tolerance;
+    if (standardError) *standardError = se;
+    if (sink) sink(std::move(rec));
+    if (done) return SolverStatus::Success;
+  }
+  return SolverStatus::NoConvergence;
+}
+
+StochasticSolver::StochasticSolver(std::string name, Function function)
+    : AlgorithmSolver(std::move(name), nullptr), function_(function) {}
+
+RgbField StochasticSolver::solve() {
+  return run([this](RgbField& B) {
+    return function_(
+        *system_, B, options_, [this](IterationRecord r) { onRecord(std::move(r)); }, &standardError_);
+  });
+}
+
+}  // namespace rt
