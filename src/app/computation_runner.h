@@ -1,0 +1,54 @@
+// Runs the pipeline off the GUI thread, one computation at a time, with progress and cancellation. A
+// cancelled or failed computation changes nothing: the previous result stays on screen. Starting a new
+// computation while one runs cancels the running one and starts the new one when it has stopped.
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <memory>
+#include <optional>
+
+#include "app/pipeline.h"
+
+class QThread;
+
+namespace rt::app {
+
+class ComputationRunner : public QObject {
+  Q_OBJECT
+ public:
+  explicit ComputationRunner(QObject* parent = nullptr);
+  ~ComputationRunner() override;
+
+  // `previous` lets the pipeline reuse F; it is copied (shared pointers), so it may change meanwhile.
+  void start(const Scene& scene, const PipelineSettings& settings, const PipelineResult* previous);
+  void cancel();
+  bool busy() const { return thread_ != nullptr; }
+  // Runs on the calling thread (screenshots, tests that need the result now). Emits the same signals.
+  void runBlocking(const Scene& scene, const PipelineSettings& settings, const PipelineResult* previous);
+
+ signals:
+  void progress(double fraction, const QString& stage);
+  void finished(std::shared_ptr<const rt::app::PipelineResult> result);
+  void failed(const QString& message);
+  void cancelled();
+  void busyChanged(bool busy);
+
+ private:
+  struct Job {
+    Scene scene;
+    PipelineSettings settings;
+    std::optional<PipelineResult> previous;
+  };
+  void launch(Job job);
+  void onThreadDone();
+
+  QThread* thread_ = nullptr;
+  std::shared_ptr<class CancellableProgress> currentProgress_;
+  std::shared_ptr<PipelineResult> outcome_;
+  QString error_;
+  bool wasCancelled_ = false;
+  std::optional<Job> queued_;
+};
+
+}  // namespace rt::app

@@ -1,0 +1,51 @@
+// radiosity-textbook: parses the command line, opens the main window; with --screenshot renders it into a PNG
+// and exits (the no-display path: run it under xvfb-run).
+#include <QApplication>
+#include <QTimer>
+#include <cstdio>
+
+#include "app/app_options.h"
+#include "app/main_window.h"
+#include "app/screenshot.h"
+#include "app/vtk_widget.h"
+
+int main(int argc, char** argv) {
+  // VTK needs its GL context profile decided before any Qt GL object exists.
+  rt::app::VtkWidget::setDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName("RadiosityTextbook");
+  QApplication::setApplicationName("radiosity-textbook");
+  QApplication::setApplicationVersion("0.1.0");
+
+  QString error;
+  const rt::app::AppOptions options = rt::app::parseAppOptions(QApplication::arguments(), &error);
+  if (!error.isEmpty()) {
+    std::fprintf(stderr, "radiosity-textbook: %s\n", qPrintable(error));
+    return 2;
+  }
+
+  try {
+    rt::app::MainWindow window(options);
+    if (!options.screenshot.isEmpty()) {
+      window.setBlockingComputations(true);
+      window.show();
+      if (!window.start()) {
+        std::fprintf(stderr, "radiosity-textbook: %s\n", qPrintable(window.lastError()));
+        return 1;
+      }
+      rt::app::saveScreenshot(window, options.screenshot);
+      if (!window.lastError().isEmpty()) {
+        std::fprintf(stderr, "radiosity-textbook: %s\n", qPrintable(window.lastError()));
+        return 1;
+      }
+      std::fprintf(stderr, "screenshot written to %s\n", qPrintable(options.screenshot));
+      return 0;
+    }
+    window.show();
+    QTimer::singleShot(0, &window, [&window] { window.start(); });
+    return QApplication::exec();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "radiosity-textbook: %s\n", e.what());
+    return 1;
+  }
+}

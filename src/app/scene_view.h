@@ -1,0 +1,59 @@
+// The 3D view of a solved scene: elements coloured by radiosity, optional mesh edges, highlighted elements,
+// and picking (a click names the element under the cursor). Two of them side by side make the compare mode;
+// they share a camera through syncCameraFrom().
+#pragma once
+
+#include <vector>
+
+#include "app/radiosity_polydata.h"
+#include "app/vtk_widget.h"
+#include "core/scene.h"
+
+class vtkActor;
+class vtkPolyData;
+class vtkPolyDataMapper;
+class vtkTextActor;
+
+namespace rt::app {
+
+class SceneView : public VtkWidget {
+  Q_OBJECT
+ public:
+  explicit SceneView(QWidget* parent = nullptr);
+  ~SceneView() override;
+
+  // A new mesh: rebuilds the geometry. `resetCamera` places the camera at `camera`.
+  void setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera);
+  // New colours for the same mesh (an iteration of the replay, a re-solve).
+  void setRadiosity(const RgbField& B);
+  void setDisplayOptions(const DisplayOptions& options);
+  void setShowEdges(bool show);
+  void setCaption(const QString& text);
+  void setHighlighted(const std::vector<int>& elements);
+  const std::vector<int>& highlighted() const { return highlighted_; }
+  // Copies the other view's camera (compare mode).
+  void syncCameraFrom(const SceneView& other);
+  void applyCamera(const Camera& camera);
+  bool hasMesh() const { return mesh_ != nullptr; }
+  // The element drawn at widget position `position`, or -1.
+  int pickElement(QPoint position);
+
+ signals:
+  void elementPicked(int element);
+
+ private:
+  void rebuildHighlight();
+
+  const Mesh* mesh_ = nullptr;
+  RgbField B_;
+  DisplayOptions display_;
+  vtkSmartPointer<vtkPolyData> polyData_;
+  vtkSmartPointer<vtkPolyDataMapper> mapper_;
+  vtkSmartPointer<vtkActor> actor_;
+  vtkSmartPointer<vtkActor> highlightActor_;
+  vtkSmartPointer<vtkTextActor> caption_;
+  std::vector<int> highlighted_;
+  bool showEdges_ = false;
+};
+
+}  // namespace rt::app
