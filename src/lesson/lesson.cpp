@@ -6,7 +6,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<Stage, const char*>, 13> kStages{{
+constexpr std::array<std::pair<Stage, const char*>, 14> kStages{{
     {Stage::Text, "text"},
     {Stage::Scene, "scene"},
     {Stage::Local, "local"},
@@ -20,6 +20,7 @@ constexpr std::array<std::pair<Stage, const char*>, 13> kStages{{
     {Stage::Compare, "compare"},
     {Stage::Bounces, "bounces"},
     {Stage::Benchmark, "benchmark"},
+    {Stage::Refine, "refine"},
 }};
 
 constexpr std::array<std::pair<View, const char*>, 11> kViews{{

@@ -28,6 +28,7 @@ enum class Stage {
   Compare,      // several solvers, methods or subdivisions side by side
   Bounces,      // B after 0, 1, 2 ... bounces (Neumann series)
   Benchmark,    // run time against error for methods over a parameter sweep
+  Refine,       // meshes that follow the light: adaptive, discontinuity or hierarchical (core/refine)
 };
 
 // The figures a step can ask for; the names match the viz layer's views.
@@ -92,6 +93,8 @@ struct StepParameters {
   bool gamma = true;
   bool smooth = false;
   bool edges = false;
+  std::string refine = "adaptive";        // refine stage: uniform | adaptive | discontinuity | hierarchical
+  std::optional<double> refineTolerance;  // adaptive: gradient tolerance; hierarchical: link tolerance
   std::string exportMatrix;  // matrix stage: file name (csv, mtx, npy, tex) written beside the figures
 };
 

@@ -259,6 +259,12 @@ class Parser {
       p.smooth = parseBool(value, where, key);
     else if (key == "edges")
       p.edges = parseBool(value, where, key);
+    else if (key == "refine") {
+      if (value != "uniform" && value != "adaptive" && value != "discontinuity" && value != "hierarchical")
+        fail(where.line, "refine is uniform, adaptive, discontinuity or hierarchical, not '" + value + "'");
+      p.refine = value;
+    } else if (key == "refine-tolerance")
+      p.refineTolerance = parseDouble(value, where, key, 1e-6, 10);
     else if (key == "export") {
       const auto dot = value.rfind('.');
       const std::string ext = dot == std::string::npos ? "" : value.substr(dot);
@@ -349,7 +355,7 @@ class Parser {
   }
 
   static bool viewFits(View v, Stage s) {
-    const bool computesF = s != Stage::Text && s != Stage::Scene;
+    const bool computesF = s != Stage::Text && s != Stage::Scene && s != Stage::Refine;
     switch (v) {
       case View::Scene:
         return s != Stage::Text;
@@ -403,13 +409,25 @@ class Parser {
 }  // namespace
 
 const std::vector<std::string>& stepKeys() {
-  static const std::vector<std::string> keys{
-      "scene",     "stage",         "method",      "methods",   "reference",       "resolution",
-      "samples",   "seed",          "subdivide",   "max-edge",  "subdivisions",    "sweep",
-      "solver",    "solvers",       "iterations",  "tolerance", "relaxation",      "ambient",
-      "bounces",   "ambient-light", "light-scale", "exposure",  "tone-map",        "gamma",
-      "smooth",    "edges",         "export",      "views",     "camera.position", "camera.target",
-      "camera.up", "camera.fov",    "highlight",   "from",      "figure",          "controls"};
+  static const std::vector<std::string> keys{"scene",           "stage",
+                                             "method",          "methods",
+                                             "reference",       "resolution",
+                                             "samples",         "seed",
+                                             "subdivide",       "max-edge",
+                                             "subdivisions",    "sweep",
+                                             "solver",          "solvers",
+                                             "iterations",      "tolerance",
+                                             "relaxation",      "ambient",
+                                             "bounces",         "ambient-light",
+                                             "light-scale",     "exposure",
+                                             "tone-map",        "gamma",
+                                             "smooth",          "edges",
+                                             "export",          "views",
+                                             "camera.position", "camera.target",
+                                             "camera.up",       "camera.fov",
+                                             "highlight",       "from",
+                                             "figure",          "controls",
+                                             "refine",          "refine-tolerance"};
   return keys;
 }
 

@@ -1,0 +1,152 @@
+#include <chrono>
+
+#include "core/solvers/solver.h"
+#include "lesson/step_stages.h"
+
+namespace rt::lesson::detail {
+
+SourceLocation StageContext::at(const std::string& key) const {
+  auto it = step.fields.find(key);
+  return {lesson.file, it == step.fields.end() ? step.line : it->second.line};
+}
+
+void StageContext::fail(const std::string& key, const std::string& message) const {
+  throw InputError(at(key), "step '" + step.title + "': " + message);
+}
+
+std::string StageContext::method() const {
+  if (step.fields.count("method")) return parameters.method;
+  switch (step.stage) {
+    case Stage::Hemicube:
+      return "hemicube";
+    case Stage::Nusselt:
+      return "nusselt";
+    case Stage::Rays:
+      return "raycast";
+    default:
+      return parameters.method;
+  }
+}
+
+FormFactorOptions StageContext::optionsFor(const std::string& name, int sweepValue) const {
+  FormFactorOptions o;
+  if (parameters.resolution) o.hemicubeResolution = *parameters.resolution;
+  if (parameters.samples) o.samples = *parameters.samples;
+  if (parameters.seed) o.seed = *parameters.seed;
+  if (sweepValue > 0) {
+    if (name == "hemicube" || name == "nusselt")
+      o.hemicubeResolution = sweepValue;
+    else
+      o.samples = sweepValue;
+  }
+  if (runner.options().quick) {
+    o.hemicubeResolution = std::min(o.hemicubeResolution, 32);
+    o.samples = std::min(o.samples, 8);
+  }
+  return o;
+}
+
+std::shared_ptr<const FormFactorMatrix> StageContext::formFactors(const Mesh& mesh, const std::string& key,
+                                                                  const std::string& name,
+                                                                  const std::string& fieldKey,
+                                                                  FormFactorStats& stats) {
+  try {
+    return runner.formFactors(mesh, key, name, optionsFor(name, 0), stats, progress);
+  } catch (const std::invalid_argument& e) {
+    fail(fieldKey, e.what());
+  }
+}
+
+SolverRun runSolver(StageContext& c, const std::string& name, const RadiositySystem& system, RgbField& B,
+                    const std::string& label) {
+  std::unique_ptr<Solver> solver;
+  try {
+    solver = makeSolver(name);
+  } catch (const std::invalid_argument& e) {
+    c.fail(c.step.fields.count("solvers") ? "solvers" : "solver", e.what());
+  }
+  const StepParameters& p = c.parameters;
+  SolverOptions o;
+  if (p.tolerance) o.tolerance = *p.tolerance;
+  if (p.iterations) o.maxIterations = *p.iterations;
+  if (p.relaxation) o.relaxation = *p.relaxation;
+  if (p.seed) o.seed = *p.seed;
+  o.ambient = p.ambient;
+  o.recordHistory = false;
+  solver->setOptions(o);
+  SolverRun run;
+  run.label = label;
+  solver->setObserver([&run](const IterationRecord& r) {
+    run.iteration.push_back(r.iteration);
+    run.residuals.push_back(r.residual);
+    run.elapsed.push_back(r.seconds);
+  });
+  solver->setProgress(&c.progress);
+  const auto start = std::chrono::steady_clock::now();
+  solver->compute(system);
+  B = solver->solve();
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.iterations = solver->iterations();
+  run.residual = solver->error();
+  run.status = toString(solver->info());
+  StepResult& r = c.result;
+  const std::string suffix = label.empty() ? "" : "." + label;
+  r.values["iterations" + suffix] = run.iterations;
+  r.values["residual" + suffix] = run.residual;
+  r.values["seconds" + suffix] = run.seconds;
+  r.values["converged" + suffix] = solver->info() == SolverStatus::Success ? 1.0 : 0.0;
+  return run;
+}
+
+void addSurfaceValues(StepResult& r, const std::string& prefix, const RgbField& field,
+                      const std::string& suffix) {
+  static const char* channels[] = {"r", "g", "b"};
+  for (const auto& s : r.scene.surfaces) {
+    const auto mean = surfaceMean(r.mesh, r.scene, field, s.name);
+    if (!mean) continue;
+    r.values[prefix + "." + s.name + suffix] = mean->mean();
+    for (int ch = 0; ch < 3; ++ch)
+      r.values[prefix + "." + s.name + "." + channels[ch] + suffix] = (*mean)[ch];
+  }
+}
+
+void addFormFactorValues(StepResult& r, const FormFactorMatrix& F, const std::string& suffix) {
+  const Scene& scene = r.scene;
+  const Mesh& mesh = r.mesh;
+  const auto n = static_cast<Eigen::Index>(mesh.size());
+  const Eigen::VectorXd areas = mesh.areas();
+  const std::size_t surfaces = scene.surfaces.size();
+  std::vector<int> surfaceOf(mesh.size());
+  for (std::size_t e = 0; e < mesh.size(); ++e) surfaceOf[e] = scene.patches[mesh.elements[e].patch].surface;
+  // Surface-to-surface: F_AB = (1/A_A) sum_{i in A} A_i sum_{j in B} F_ij.
+  Eigen::MatrixXd transfer = Eigen::MatrixXd::Zero(surfaces, surfaces);
+  Eigen::VectorXd surfaceArea = Eigen::VectorXd::Zero(surfaces);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    surfaceArea[surfaceOf[i]] += areas[i];
+    for (Eigen::Index j = 0; j < n; ++j) transfer(surfaceOf[i], surfaceOf[j]) += areas[i] * F(i, j);
+  }
+  for (std::size_t a = 0; a < surfaces; ++a) {
+    if (surfaceArea[a] <= 0) continue;
+    double sum = 0;
+    for (std::size_t b = 0; b < surfaces; ++b) {
+      const double f = transfer(a, b) / surfaceArea[a];
+      r.values["F." + scene.surfaces[a].name + "." + scene.surfaces[b].name + suffix] = f;
+      sum += f;
+    }
+    r.values["rowsum." + scene.surfaces[a].name + suffix] = sum;
+  }
+  const FormFactorDiagnostics d = diagnose(F, areas);
+  r.values["rowsum.min" + suffix] = d.minRowSum;
+  r.values["rowsum.max" + suffix] = d.maxRowSum;
+  r.values["closure" + suffix] = d.maxClosureError;
+  r.values["reciprocity" + suffix] = d.maxReciprocityError;
+  r.values["negative" + suffix] = static_cast<double>(d.negativeEntries);
+  if (suffix.empty()) {
+    r.values["rays"] = static_cast<double>(r.formFactorStats.raysCast);
+    r.values["seconds.formfactors"] = r.formFactorStats.seconds;
+    r.values["standard-error"] = r.formFactorStats.standardError;
+    r.values["pairs"] = static_cast<double>(r.formFactorStats.pairsComputed);
+  }
+}
+
+}  // namespace rt::lesson::detail

@@ -1,0 +1,73 @@
+// What running one step produced: the scene and mesh, the form factors, the solutions, convergence histories
+// and the named numbers a step's text can quote as {{placeholders}} (docs/lesson-format.md lists the names).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/formfactor/formfactor_method.h"
+#include "core/mesh.h"
+#include "core/scene.h"
+
+namespace rt::lesson {
+
+// One convergence curve: a solver on a system, or a bounce series.
+struct SolverRun {
+  std::string label;  // solver name (or "sub4", a method name... in compare steps)
+  std::string status;
+  int iterations = 0;
+  double residual = 0;
+  double seconds = 0;
+  std::vector<double> iteration, residuals, elapsed;  // one entry per recorded iteration
+};
+
+// One point of a run-time-against-error sweep.
+struct BenchmarkPoint {
+  std::string method;
+  int parameter = 0;  // resolution or samples
+  double seconds = 0;
+  double error = 0;  // ||F - F_ref||_F / ||F_ref||_F
+};
+
+// A variant of a compare step (another subdivision or form-factor method) kept for its figure.
+struct Variant {
+  std::string label;
+  Mesh mesh;
+  RgbField B;
+};
+
+struct StepResult {
+  Scene scene;  // after the step's material overrides
+  Mesh mesh;
+  Camera camera;
+  std::shared_ptr<const FormFactorMatrix> F;  // empty when the stage needs none
+  FormFactorStats formFactorStats;
+  std::string method;                                  // the form-factor method used
+  std::shared_ptr<const FormFactorMatrix> referenceF;  // exact and benchmark stages
+  RgbField B;                                          // the solution (empty for stages that do not solve)
+  RgbField reference;                 // a reference solution (exact stage: with the reference F)
+  RgbField local;                     // local stage: direct light plus ambient
+  std::vector<RgbField> bounceTerms;  // bounces stage: term k = (rho F)^k E
+  std::vector<SolverRun> runs;
+  std::vector<BenchmarkPoint> benchmark;
+  std::vector<Variant> variants;
+  int sourceElement = 0;         // the element hemicube / Nusselt / rays / formfactor views look from
+  std::vector<int> highlighted;  // element indices
+  std::string exportedMatrix;    // path of the exported matrix, when the step asked for one
+
+  std::map<std::string, double> values;  // named numbers, see value()
+
+  // A named number: the values map, then the indexed forms F[i][j], B[i], B[i].r, rowsum[i].
+  std::optional<double> value(const std::string& name) const;
+  // The names available (indexed forms shown once, with i and j).
+  std::vector<std::string> valueNames() const;
+};
+
+// Area-weighted mean of the three channels over the elements of a surface (nullopt for an unknown surface).
+std::optional<Rgb> surfaceMean(const Mesh& mesh, const Scene& scene, const RgbField& field,
+                               const std::string& surface);
+
+}  // namespace rt::lesson

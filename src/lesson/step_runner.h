@@ -1,0 +1,60 @@
+// Running a lesson step: load the scene (once), apply the step's material overrides, mesh it, compute what
+// the stage needs and return a StepResult. Form factors are cached under (scene, mesh options, method, method
+// options): steps that only change materials, the light or the solver never recompute F.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <tuple>
+
+#include "core/progress.h"
+#include "lesson/lesson.h"
+#include "lesson/step_result.h"
+
+namespace rt::lesson {
+
+struct RunOptions {
+  // Small parameters for quick renders (the documentation test): subdivision <= 3, hemicube resolution <= 32,
+  // samples <= 8, sweeps and subdivision lists cut to their first values, refinement kept small.
+  bool quick = false;
+  std::string outputDir;  // where a matrix step writes its export (empty: the export is skipped)
+};
+
+class StepRunner {
+ public:
+  explicit StepRunner(std::string scenesDir, RunOptions options = {});
+
+  // Throws InputError naming the lesson file and the line of the parameter at fault (unknown method, element
+  // out of range, a method the build does not have...), Cancelled when progress asks.
+  StepResult run(const Lesson& lesson, const Step& step, Progress& progress = noProgress());
+
+  // How many times F was actually computed (the rest came from the cache).
+  int formFactorComputations() const { return computations_; }
+  const RunOptions& options() const { return options_; }
+
+  // The form factors for a mesh (cached). `key` names the mesh options; the geometry hash is added to it.
+  std::shared_ptr<const FormFactorMatrix> formFactors(const Mesh& mesh, const std::string& meshKey,
+                                                      const std::string& method,
+                                                      const FormFactorOptions& options,
+                                                      FormFactorStats& stats, Progress& progress);
+
+ private:
+  const Scene& scene(const std::string& relativePath);
+
+  std::string scenesDir_;
+  RunOptions options_;
+  std::map<std::string, Scene> scenes_;
+  struct Cached {
+    std::shared_ptr<const FormFactorMatrix> F;
+    FormFactorStats stats;
+  };
+  std::map<std::string, Cached> cache_;
+  int computations_ = 0;
+};
+
+// The text of a step with its placeholders filled in from the result (InputError at the placeholder's line
+// when the step computes no such value).
+std::string resolvedText(const Lesson& lesson, const Step& step, const StepResult& result);
+
+}  // namespace rt::lesson

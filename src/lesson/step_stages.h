@@ -1,0 +1,56 @@
+// The computations behind each stage, shared by StepRunner. Internal to rt_lesson.
+#pragma once
+
+#include <string>
+
+#include "core/formfactor/formfactor_method.h"
+#include "core/input_error.h"
+#include "core/mesh.h"
+#include "core/solvers/radiosity_system.h"
+#include "lesson/lesson.h"
+#include "lesson/step_result.h"
+#include "lesson/step_runner.h"
+
+namespace rt::lesson::detail {
+
+struct StageContext {
+  const Lesson& lesson;
+  const Step& step;
+  StepParameters parameters;  // after quick-mode caps
+  StepRunner& runner;
+  Progress& progress;
+  StepResult& result;
+  MeshOptions meshOptions;
+  std::string meshKey;
+  FormFactorOptions formFactorOptions;
+
+  SourceLocation at(const std::string& key) const;
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+  // The form-factor method: `method` when written, otherwise the stage's own (hemicube, nusselt, raycast).
+  std::string method() const;
+  // F for a mesh with a method (cached), errors reported at the `method`/`methods` line.
+  std::shared_ptr<const FormFactorMatrix> formFactors(const Mesh& mesh, const std::string& meshKey,
+                                                      const std::string& method, const std::string& key,
+                                                      FormFactorStats& stats);
+  FormFactorOptions optionsFor(const std::string& method, int sweepValue) const;
+};
+
+// Runs one solver on a system; B receives the solution.
+SolverRun runSolver(StageContext& c, const std::string& name, const RadiositySystem& system, RgbField& B,
+                    const std::string& label);
+
+// Named values: per-surface means of a field (B.<surface>, with .r .g .b), surface-to-surface form factors.
+void addSurfaceValues(StepResult& r, const std::string& prefix, const RgbField& field,
+                      const std::string& suffix = "");
+void addFormFactorValues(StepResult& r, const FormFactorMatrix& F, const std::string& suffix = "");
+
+void computeLocal(StageContext& c);
+void computeMatrix(StageContext& c);
+void computeSolve(StageContext& c);
+void computeCompare(StageContext& c);
+void computeBounces(StageContext& c);
+void computeExact(StageContext& c);
+void computeBenchmark(StageContext& c);
+void computeRefine(StageContext& c);
+
+}  // namespace rt::lesson::detail
