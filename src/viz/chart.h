@@ -1,5 +1,5 @@
-// Line charts (convergence, run time against error, energy per bounce) written as PNG, or as true vector SVG/PDF.
-// Public header: no VTK types.
+// Line charts (convergence, run time against error, energy per bounce) written as PNG, or as true vector
+// SVG/PDF. Public header: no VTK types.
 #pragma once
 
 #include <string>
@@ -16,9 +16,14 @@ struct ChartOptions {
   std::string title, xLabel, yLabel;
   bool logX = false, logY = false;
   int width = 1200, height = 800;
+  double dpi = 96.0;    // scales fonts and line widths (dpi / 96)
+  bool markers = true;  // a marker at every data point (distinguishes curves in grey print too)
 };
 
-// The format follows the extension: .png (raster), .svg and .pdf (vectors). Throws std::runtime_error on failure.
+// The format follows the extension: .png (raster), .svg and .pdf (vectors). Series get colour-blind-safe
+// colours (Okabe-Ito) and distinct markers. On a log axis, points with a value <= 0 are left out (they have
+// no position). Throws std::invalid_argument when nothing can be drawn, std::runtime_error when the file
+// cannot be written.
 void writeLineChart(const std::vector<Series>& series, const ChartOptions& options, const std::string& path);
 
 }  // namespace rt::viz

@@ -1,0 +1,99 @@
+#include "viz/chart.h"
+
+#include <vtkAxis.h>
+#include <vtkChartLegend.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkPen.h>
+#include <vtkPlotPoints.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkTable.h>
+#include <vtkTextProperty.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "viz/colour_map.h"
+#include "viz/vtk_render.h"
+
+namespace rt::viz {
+namespace {
+
+void styleAxis(vtkAxis* axis, const std::string& title, bool logScale, int fontSize) {
+  axis->SetTitle(title);
+  axis->SetLogScale(logScale);
+  axis->GetTitleProperties()->SetFontSize(fontSize);
+  axis->GetTitleProperties()->SetColor(0.1, 0.1, 0.1);
+  axis->GetTitleProperties()->BoldOff();
+  axis->GetLabelProperties()->SetFontSize(static_cast<int>(fontSize * 0.85));
+  axis->GetLabelProperties()->SetColor(0.1, 0.1, 0.1);
+  axis->GetGridPen()->SetColor(215, 215, 215, 255);
+  axis->SetBehavior(vtkAxis::AUTO);
+}
+
+}  // namespace
+
+void writeLineChart(const std::vector<Series>& series, const ChartOptions& options, const std::string& path) {
+  figureFormatOf(path);
+  const double scale = options.dpi > 0 ? options.dpi / 96.0 : 1.0;
+  const int fontSize = readableFontSize(options.height, scale, 0.03);
+
+  auto view = vtkSmartPointer<vtkContextView>::New();
+  view->SetRenderWindow(makeOffscreenWindow(options.width, options.height));
+  view->GetRenderer()->SetBackground(1, 1, 1);
+  auto chart = vtkSmartPointer<vtkChartXY>::New();
+  view->GetScene()->AddItem(chart);
+  chart->SetTitle(options.title);
+  chart->GetTitleProperties()->SetFontSize(static_cast<int>(fontSize * 1.15));
+  chart->GetTitleProperties()->SetColor(0.05, 0.05, 0.05);
+  chart->GetTitleProperties()->BoldOn();
+  styleAxis(chart->GetAxis(vtkAxis::BOTTOM), options.xLabel, options.logX, fontSize);
+  styleAxis(chart->GetAxis(vtkAxis::LEFT), options.yLabel, options.logY, fontSize);
+
+  static const int markers[] = {vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE, vtkPlotPoints::DIAMOND,
+                                vtkPlotPoints::CROSS, vtkPlotPoints::PLUS};
+  int drawn = 0;
+  for (std::size_t s = 0; s < series.size(); ++s) {
+    const Series& one = series[s];
+    auto x = vtkSmartPointer<vtkDoubleArray>::New();
+    x->SetName((one.name + " x").c_str());
+    auto y = vtkSmartPointer<vtkDoubleArray>::New();
+    y->SetName(one.name.empty() ? ("series " + std::to_string(s + 1)).c_str() : one.name.c_str());
+    for (std::size_t k = 0; k < std::min(one.x.size(), one.y.size()); ++k) {
+      const double px = one.x[k], py = one.y[k];
+      if (!std::isfinite(px) || !std::isfinite(py)) continue;
+      if ((options.logX && px <= 0) || (options.logY && py <= 0)) continue;
+      x->InsertNextValue(px);
+      y->InsertNextValue(py);
+    }
+    if (x->GetNumberOfTuples() == 0) continue;
+    auto table = vtkSmartPointer<vtkTable>::New();
+    table->AddColumn(x);
+    table->AddColumn(y);
+    vtkPlot* plot = chart->AddPlot(vtkChart::LINE);
+    plot->SetInputData(table, 0, 1);
+    // Black is the palette's last colour; start with the seven chromatic ones.
+    const Rgb8 colour = qualitativeColour(static_cast<int>(s % 7));
+    plot->SetColor(colour[0], colour[1], colour[2], 255);
+    plot->SetWidth(static_cast<float>(2.5 * scale));
+    if (auto* points = vtkPlotPoints::SafeDownCast(plot)) {
+      points->SetMarkerStyle(options.markers && x->GetNumberOfTuples() <= 200 ? markers[s % 5]
+                                                                              : vtkPlotPoints::NONE);
+      points->SetMarkerSize(static_cast<float>(7.0 * scale));
+    }
+    ++drawn;
+  }
+  if (drawn == 0) throw std::invalid_argument(path + ": no series has a point that can be drawn");
+  chart->SetShowLegend(true);
+  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+  chart->GetLegend()->SetLabelSize(static_cast<int>(fontSize * 0.85));
+  chart->GetLegend()->GetLabelProperties()->SetColor(0.05, 0.05, 0.05);
+  writeContextView(view, path);
+}
+
+}  // namespace rt::viz

@@ -1,0 +1,17 @@
+#include "viz/scene_image.h"
+
+#include "viz/scene_view.h"
+
+namespace rt::viz {
+
+void renderRadiosityImage(const Mesh& mesh, const RgbField& B, const Camera& camera,
+                          const ImageOptions& options, const std::string& pngPath) {
+  SceneViewData data;
+  data.B = B;
+  SceneViewOptions view;
+  view.colouring = SceneColouring::Radiosity;
+  view.image = options;
+  writeSceneFigure(mesh, camera, data, view, pngPath);
+}
+
+}  // namespace rt::viz

@@ -1,0 +1,170 @@
+#include "viz/scene_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "viz/vertex_interpolation.h"
+
+namespace rt::viz {
+namespace {
+
+void requireRows(const RgbField& field, const Mesh& mesh, const char* what) {
+  if (static_cast<std::size_t>(field.rows()) != mesh.size())
+    throw std::invalid_argument(std::string(what) + " has " + std::to_string(field.rows()) + " rows for " +
+                                std::to_string(mesh.size()) + " elements");
+}
+
+CornerField cornersOf(const Mesh& mesh, const RgbField& perElement, bool smooth) {
+  return smooth ? smoothCornerValues(mesh, perElement) : flatCornerValues(mesh, perElement);
+}
+
+// Resolves the legend's limits from the finite (and, for log scales, positive) values.
+ScalarLegend resolveLegend(ScalarLegend legend, const Eigen::VectorXd& values) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (double v : values)
+    if (std::isfinite(v) && (!legend.logScale || v > 0)) {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  if (!std::isfinite(lo)) lo = hi = legend.logScale ? 1.0 : 0.0;
+  if (!std::isfinite(legend.min)) legend.min = lo;
+  if (!std::isfinite(legend.max)) legend.max = hi;
+  if (legend.logScale) {
+    legend.min = std::max(legend.min, 1e-300);
+    if (legend.max <= legend.min) legend.max = legend.min * 10;
+  } else if (legend.max <= legend.min) {
+    legend.max = legend.min + (legend.min == 0 ? 1.0 : std::abs(legend.min) * 0.1);
+  }
+  return legend;
+}
+
+double normalised(double v, const ScalarLegend& legend) {
+  if (std::isnan(v)) return v;
+  if (legend.logScale) {
+    if (v <= 0) return 0.0;
+    return (std::log10(v) - std::log10(legend.min)) / (std::log10(legend.max) - std::log10(legend.min));
+  }
+  return (v - legend.min) / (legend.max - legend.min);
+}
+
+std::string defaultTitle(SceneColouring colouring) {
+  switch (colouring) {
+    case SceneColouring::UnshotPower:
+      return "unshot power (W)";
+    case SceneColouring::Error:
+      return "|B - B_ref| (W/m^2)";
+    default:
+      return "value";
+  }
+}
+
+}  // namespace
+
+SceneColouring sceneColouringFromName(const std::string& name) {
+  if (name == "radiosity") return SceneColouring::Radiosity;
+  if (name == "reflectance") return SceneColouring::Reflectance;
+  if (name == "emission") return SceneColouring::Emission;
+  if (name == "element" || name == "element-id") return SceneColouring::ElementId;
+  if (name == "unshot") return SceneColouring::UnshotPower;
+  if (name == "error") return SceneColouring::Error;
+  if (name == "scalar") return SceneColouring::Scalar;
+  throw std::invalid_argument("unknown colouring '" + name +
+                              "' (radiosity, reflectance, emission, element, unshot, error, scalar)");
+}
+
+std::string toString(SceneColouring colouring) {
+  switch (colouring) {
+    case SceneColouring::Radiosity:
+      return "radiosity";
+    case SceneColouring::Reflectance:
+      return "reflectance";
+    case SceneColouring::Emission:
+      return "emission";
+    case SceneColouring::ElementId:
+      return "element";
+    case SceneColouring::UnshotPower:
+      return "unshot";
+    case SceneColouring::Error:
+      return "error";
+    case SceneColouring::Scalar:
+      return "scalar";
+  }
+  return "radiosity";
+}
+
+Eigen::VectorXd unshotPower(const Mesh& mesh, const RgbField& unshot) {
+  requireRows(unshot, mesh, "the unshot radiosity");
+  return unshot.rowwise().mean().cwiseProduct(mesh.areas());
+}
+
+Eigen::VectorXd absoluteError(const RgbField& B, const RgbField& reference) {
+  if (B.rows() != reference.rows())
+    throw std::invalid_argument("the reference radiosity has " + std::to_string(reference.rows()) +
+                                " rows, B has " + std::to_string(B.rows()));
+  return (B - reference).cwiseAbs().rowwise().mean();
+}
+
+ScenePaint paintScene(const Mesh& mesh, const SceneViewData& data, const SceneViewOptions& options) {
+  ScenePaint paint;
+  paint.highlightElement = options.highlightElement;
+  const bool smooth = options.image.smooth;
+  auto fromCorners = [&](const CornerField& corners, auto&& toColour) {
+    paint.firstCorner = corners.firstCorner;
+    paint.colours.resize(static_cast<std::size_t>(corners.values.rows()));
+    for (Eigen::Index k = 0; k < corners.values.rows(); ++k)
+      paint.colours[static_cast<std::size_t>(k)] = toColour(Rgb(corners.values.row(k).transpose().array()));
+  };
+
+  Eigen::VectorXd scalar;
+  switch (options.colouring) {
+    case SceneColouring::Radiosity: {
+      requireRows(data.B, mesh, "the radiosity");
+      const DisplaySettings display = displaySettingsFor(options.image, data.B, &mesh.emission);
+      fromCorners(cornersOf(mesh, data.B, smooth), [&](const Rgb& v) { return displayColour(v, display); });
+      return paint;
+    }
+    case SceneColouring::Emission: {
+      const DisplaySettings display = displaySettingsFor(options.image, mesh.emission);
+      fromCorners(flatCornerValues(mesh, mesh.emission),
+                  [&](const Rgb& v) { return displayColour(v, display); });
+      return paint;
+    }
+    case SceneColouring::Reflectance:
+      fromCorners(flatCornerValues(mesh, mesh.reflectance),
+                  [&](const Rgb& v) { return albedoColour(v, options.image.srgbGamma); });
+      return paint;
+    case SceneColouring::ElementId: {
+      RgbField ids(static_cast<Eigen::Index>(mesh.size()), 3);
+      for (Eigen::Index e = 0; e < ids.rows(); ++e) ids.row(e).setConstant(static_cast<double>(e));
+      fromCorners(flatCornerValues(mesh, ids),
+                  [](const Rgb& v) { return categoryColour(static_cast<int>(v[0])); });
+      return paint;
+    }
+    case SceneColouring::UnshotPower:
+      scalar = unshotPower(mesh, data.unshot);
+      break;
+    case SceneColouring::Error:
+      requireRows(data.B, mesh, "the radiosity");
+      requireRows(data.reference, mesh, "the reference radiosity");
+      scalar = absoluteError(data.B, data.reference);
+      break;
+    case SceneColouring::Scalar:
+      if (static_cast<std::size_t>(data.scalar.size()) != mesh.size())
+        throw std::invalid_argument("the scalar field has " + std::to_string(data.scalar.size()) +
+                                    " values for " + std::to_string(mesh.size()) + " elements");
+      scalar = data.scalar;
+      break;
+  }
+  ScalarLegend legend = options.legend;
+  if (legend.title.empty()) legend.title = defaultTitle(options.colouring);
+  paint.legend = resolveLegend(legend, scalar);
+  paint.colourBar = options.colourBar;
+  RgbField broadcast = scalar.replicate(1, 3);
+  fromCorners(cornersOf(mesh, broadcast, smooth), [&](const Rgb& v) {
+    return sampleColourMap(paint.legend.map, normalised(v[0], paint.legend));
+  });
+  return paint;
+}
+
+}  // namespace rt::viz

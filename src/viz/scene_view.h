@@ -1,0 +1,75 @@
+// The scene view: elements drawn as polygons from a camera, coloured by radiosity (through the display
+// pipeline), by material (reflectance, emission), by element id, or by a scalar (unshot power, error against
+// a reference, a form-factor row...) through a colour-blind-safe map with a colour bar. Public header: no VTK
+// types (viz/vtk_views.h has the VTK-facing builders for the app).
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "core/mesh.h"
+#include "core/scene.h"
+#include "viz/colour_map.h"
+#include "viz/figure_output.h"
+#include "viz/scene_image.h"
+
+namespace rt::viz {
+
+enum class SceneColouring { Radiosity, Reflectance, Emission, ElementId, UnshotPower, Error, Scalar };
+// "radiosity", "reflectance", "emission", "element", "unshot", "error", "scalar"; throws
+// std::invalid_argument.
+SceneColouring sceneColouringFromName(const std::string& name);
+std::string toString(SceneColouring colouring);
+
+// How a scalar field is mapped to colour and labelled on its colour bar. Non-finite limits: from the data.
+struct ScalarLegend {
+  std::string title;
+  ColourMap map = ColourMap::Viridis;
+  bool logScale = false;  // log10; values <= 0 get the lowest colour
+  double min = std::numeric_limits<double>::quiet_NaN();
+  double max = std::numeric_limits<double>::quiet_NaN();
+};
+
+// The data the colourings read; only what the chosen colouring needs has to be filled.
+struct SceneViewData {
+  RgbField B;              // Radiosity, Error (n x 3, W/m^2)
+  RgbField unshot;         // UnshotPower: unshot radiosity (n x 3)
+  RgbField reference;      // Error: the reference radiosity
+  Eigen::VectorXd scalar;  // Scalar: one value per element
+};
+
+struct SceneViewOptions {
+  SceneColouring colouring = SceneColouring::Radiosity;
+  ImageOptions image;   // size, exposure, tone map, gamma, smooth (per-vertex) shading, mesh edges
+  ScalarLegend legend;  // scalar colourings (a title is chosen when empty)
+  bool colourBar = true;
+  std::string caption;  // drawn at the top; empty: none
+  int highlightElement =
+      -1;  // filled with a marker colour and outlined (e.g. the source of a form-factor row)
+  double dpi = 96.0;
+};
+
+// What the renderer draws: one 8-bit sRGB colour per element corner (flat views repeat the element's colour),
+// and the colour bar when the view is scalar. Pure (no VTK): tests check it directly.
+struct ScenePaint {
+  std::vector<int> firstCorner;  // corner k of element e is colours[firstCorner[e] + k]
+  std::vector<Rgb8> colours;
+  bool colourBar = false;
+  ScalarLegend legend;  // resolved: finite min and max
+  int highlightElement = -1;
+};
+ScenePaint paintScene(const Mesh& mesh, const SceneViewData& data, const SceneViewOptions& options);
+
+// Scalar fields for the colourings (one value per element).
+Eigen::VectorXd unshotPower(const Mesh& mesh,
+                            const RgbField& unshot);  // mean over channels of unshot_i A_i (W)
+Eigen::VectorXd absoluteError(const RgbField& B,
+                              const RgbField& reference);  // mean over channels of |B - B_ref|
+
+// Renders the view and writes PNG, or PDF/SVG embedding the rendered image. Throws std::runtime_error on
+// failure and std::invalid_argument when the data does not fit the mesh.
+void writeSceneFigure(const Mesh& mesh, const Camera& camera, const SceneViewData& data,
+                      const SceneViewOptions& options, const std::string& path);
+
+}  // namespace rt::viz

@@ -1,0 +1,204 @@
+#include "viz/vtk_render.h"
+
+#include <vtkContextView.h>
+#include <vtkImageData.h>
+#include <vtkLookupTable.h>
+#include <vtkPDFExporter.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSVGExporter.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+namespace rt::viz {
+namespace {
+
+std::string base64(const unsigned char* data, std::size_t size) {
+  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((size + 2) / 3 * 4);
+  for (std::size_t i = 0; i < size; i += 3) {
+    const unsigned v =
+        (data[i] << 16) | ((i + 1 < size ? data[i + 1] : 0) << 8) | (i + 2 < size ? data[i + 2] : 0);
+    out += alphabet[(v >> 18) & 63];
+    out += alphabet[(v >> 12) & 63];
+    out += i + 1 < size ? alphabet[(v >> 6) & 63] : '=';
+    out += i + 2 < size ? alphabet[v & 63] : '=';
+  }
+  return out;
+}
+
+vtkSmartPointer<vtkImageData> grab(vtkRenderWindow* window) {
+  window->Render();
+  auto filter = vtkSmartPointer<vtkWindowToImageFilter>::New();
+  filter->SetInput(window);
+  filter->SetInputBufferTypeToRGB();
+  filter->ReadFrontBufferOff();
+  filter->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(filter->GetOutput());
+  return image;
+}
+
+void writePng(vtkImageData* image, const std::string& path) {
+  std::ofstream probe(path,
+                      std::ios::binary);  // vtkPNGWriter only reports failures through its error observer
+  if (!probe) throw std::runtime_error(path + ": cannot write the file");
+  probe.close();
+  auto writer = vtkSmartPointer<vtkPNGWriter>::New();
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(image);
+  writer->Write();
+  if (writer->GetErrorCode() != 0) throw std::runtime_error(path + ": cannot write the PNG");
+}
+
+void writeRasterSvg(vtkImageData* image, const std::string& path) {
+  auto writer = vtkSmartPointer<vtkPNGWriter>::New();
+  writer->WriteToMemoryOn();
+  writer->SetInputData(image);
+  writer->Write();
+  vtkUnsignedCharArray* png = writer->GetResult();
+  int dims[3];
+  image->GetDimensions(dims);
+  std::ofstream file(path);
+  if (!file) throw std::runtime_error(path + ": cannot write the file");
+  file << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+       << "xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\"" << dims[0] << "\" height=\"" << dims[1]
+       << "\" viewBox=\"0 0 " << dims[0] << " " << dims[1] << "\">\n<image width=\"" << dims[0]
+       << "\" height=\"" << dims[1] << "\" xlink:href=\"data:image/png;base64,"
+       << base64(png->GetPointer(0), static_cast<std::size_t>(png->GetNumberOfValues())) << "\"/>\n</svg>\n";
+  if (!file) throw std::runtime_error(path + ": cannot write the SVG");
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkRenderWindow> makeOffscreenWindow(int width, int height) {
+  if (width < 16 || height < 16 || width > 16384 || height > 16384)
+    throw std::invalid_argument("figure size " + std::to_string(width) + " x " + std::to_string(height) +
+                                " is outside 16..16384 pixels");
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetSize(width, height);
+  window->SetMultiSamples(0);  // FXAA on the renderers instead: MSAA is unreliable in offscreen framebuffers
+  return window;
+}
+
+std::vector<unsigned char> captureRgb(vtkRenderWindow* window, int& width, int& height) {
+  vtkSmartPointer<vtkImageData> image = grab(window);
+  int dims[3];
+  image->GetDimensions(dims);
+  width = dims[0];
+  height = dims[1];
+  auto* scalars = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
+  if (!scalars) throw std::runtime_error("the render window gave no pixels");
+  const unsigned char* begin = scalars->GetPointer(0);
+  return {begin, begin + static_cast<std::size_t>(width) * height * 3};
+}
+
+void writeRenderWindow(vtkRenderWindow* window, const std::string& path, double dpi) {
+  const FigureFormat format = figureFormatOf(path);
+  if (format == FigureFormat::Pdf) {
+    int width = 0, height = 0;
+    const std::vector<unsigned char> rgb = captureRgb(window, width, height);
+    writeRasterPdf(rgb.data(), width, height, dpi, path);
+    return;
+  }
+  vtkSmartPointer<vtkImageData> image = grab(window);
+  if (format == FigureFormat::Png)
+    writePng(image, path);
+  else
+    writeRasterSvg(image, path);
+}
+
+void writeContextView(vtkContextView* view, const std::string& path) {
+  const FigureFormat format = figureFormatOf(path);
+  vtkRenderWindow* window = view->GetRenderWindow();
+  window->Render();
+  if (format == FigureFormat::Png) {
+    writePng(grab(window), path);
+    return;
+  }
+  std::ofstream probe(path, std::ios::binary);
+  if (!probe) throw std::runtime_error(path + ": cannot write the file");
+  probe.close();
+  if (format == FigureFormat::Svg) {
+    auto exporter = vtkSmartPointer<vtkSVGExporter>::New();
+    exporter->SetRenderWindow(window);
+    exporter->SetFileName(path.c_str());
+    exporter->SetDrawBackground(true);
+    exporter->Write();
+  } else {
+    auto exporter = vtkSmartPointer<vtkPDFExporter>::New();
+    exporter->SetRenderWindow(window);
+    exporter->SetFileName(path.c_str());
+    exporter->Write();
+  }
+  std::ifstream check(path, std::ios::binary | std::ios::ate);
+  if (!check || check.tellg() <= 0) throw std::runtime_error(path + ": the exporter wrote nothing");
+}
+
+int readableFontSize(int figureHeight, double fontScale, double fraction) {
+  return std::max(12, static_cast<int>(std::lround(fraction * figureHeight * std::max(0.25, fontScale))));
+}
+
+void styleText(vtkTextProperty* text, int fontSize, bool bold) {
+  text->SetFontFamilyToArial();
+  text->SetFontSize(fontSize);
+  text->SetBold(bold);
+  text->SetItalic(false);
+  text->SetShadow(false);
+  text->SetColor(0.96, 0.96, 0.96);
+}
+
+vtkSmartPointer<vtkTextActor> makeCaption(const std::string& text, int fontSize) {
+  auto caption = vtkSmartPointer<vtkTextActor>::New();
+  caption->SetInput(text.c_str());
+  styleText(caption->GetTextProperty(), fontSize, true);
+  caption->GetTextProperty()->SetJustificationToCentered();
+  caption->GetTextProperty()->SetVerticalJustificationToTop();
+  caption->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  caption->GetPositionCoordinate()->SetValue(0.5, 0.975);
+  return caption;
+}
+
+vtkSmartPointer<vtkScalarBarActor> makeColourBar(ColourMap map, double min, double max, bool logScale,
+                                                 const std::string& title, int fontSize) {
+  auto table = vtkSmartPointer<vtkLookupTable>::New();
+  table->SetNumberOfTableValues(256);
+  if (logScale) {
+    min = std::max(min, 1e-300);
+    max = std::max(max, min * 10);
+    table->SetScaleToLog10();
+  }
+  table->SetRange(min, max < min ? min : max);
+  for (int i = 0; i < 256; ++i) {
+    const auto rgb = sampleColourMapUnit(map, i / 255.0);
+    table->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1.0);
+  }
+  table->Build();
+  auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
+  bar->SetLookupTable(table);
+  bar->SetTitle(title.c_str());
+  bar->SetNumberOfLabels(5);
+  bar->SetLabelFormat(logScale ? "%.1e" : "%.3g");
+  bar->UnconstrainedFontSizeOn();
+  styleText(bar->GetTitleTextProperty(), fontSize, true);
+  styleText(bar->GetLabelTextProperty(), static_cast<int>(fontSize * 0.85));
+  bar->SetBarRatio(0.25);
+  bar->SetPosition(0.84, 0.1);
+  bar->SetPosition2(0.15, 0.78);
+  bar->SetTextPositionToPrecedeScalarBar();
+  return bar;
+}
+
+}  // namespace rt::viz

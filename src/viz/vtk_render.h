@@ -1,0 +1,52 @@
+// VTK-facing helpers shared by the views: offscreen windows, writing what a window shows in every figure
+// format, text and colour-bar actors with sizes readable on a projector. Includes VTK: used by viz sources
+// and the app only.
+#pragma once
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+#include <vector>
+
+#include "viz/colour_map.h"
+#include "viz/figure_output.h"
+
+class vtkContextView;
+class vtkRenderWindow;
+class vtkRenderer;
+class vtkTextActor;
+class vtkScalarBarActor;
+class vtkTextProperty;
+
+namespace rt::viz {
+
+// The neutral grey every 3D view uses as background (figures are printed and projected: no pure black or
+// white).
+inline constexpr double kBackground[3] = {0.32, 0.32, 0.34};
+
+// An offscreen window of the given pixel size (needs an X server: Xvfb in tests and scripts).
+vtkSmartPointer<vtkRenderWindow> makeOffscreenWindow(int width, int height);
+
+// Renders the window and reads its RGB pixels (bottom row first).
+std::vector<unsigned char> captureRgb(vtkRenderWindow* window, int& width, int& height);
+
+// 3D views: PNG; PDF and SVG embed the rendered image (there is no vector form of a shaded 3D scene here).
+void writeRenderWindow(vtkRenderWindow* window, const std::string& path, double dpi);
+
+// 2D views built from context items (charts, matrix, hemicube faces, Nusselt disk): PNG, or true vectors in
+// SVG/PDF.
+void writeContextView(vtkContextView* view, const std::string& path);
+
+// Font size in pixels that stays readable on a projector: a fraction of the figure height, scaled by dpi
+// / 96.
+int readableFontSize(int figureHeight, double fontScale, double fraction = 0.032);
+void styleText(vtkTextProperty* text, int fontSize, bool bold = false);
+
+// A caption at the top centre of a 3D view.
+vtkSmartPointer<vtkTextActor> makeCaption(const std::string& text, int fontSize);
+
+// A vertical colour bar for a scalar field shown through `map` over [min, max] (log10 when logScale).
+vtkSmartPointer<vtkScalarBarActor> makeColourBar(ColourMap map, double min, double max, bool logScale,
+                                                 const std::string& title, int fontSize);
+
+}  // namespace rt::viz

@@ -1,0 +1,151 @@
+#include "viz/vtk_views.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextActor.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+
+#include "viz/vtk_render.h"
+
+namespace rt::viz {
+namespace {
+
+// Okabe-Ito vermillion: the marker colour of a highlighted element (not in viridis or cividis).
+constexpr double kHighlight[3] = {0.835, 0.369, 0.0};
+
+vtkSmartPointer<vtkActor> makeHighlightActor(const Mesh& mesh, int element, double lineWidth) {
+  ScenePaint single;
+  single.firstCorner = {0, static_cast<int>(mesh.elements[element].vertices.size())};
+  Mesh one;
+  one.vertices = mesh.vertices;
+  one.elements = {mesh.elements[element]};
+  single.colours.assign(mesh.elements[element].vertices.size(), Rgb8{213, 94, 0});
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(makeElementPolyData(one, single));
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(kHighlight[0], kHighlight[1], kHighlight[2]);
+  actor->GetProperty()->LightingOff();
+  actor->GetProperty()->EdgeVisibilityOn();
+  actor->GetProperty()->SetEdgeColor(1, 1, 1);
+  actor->GetProperty()->SetLineWidth(static_cast<float>(lineWidth));
+  actor->GetProperty()->BackfaceCullingOn();
+  return actor;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkPolyData> makeElementPolyData(const Mesh& mesh, const ScenePaint& paint) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  auto polygons = vtkSmartPointer<vtkCellArray>::New();
+  auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  colours->SetName("colour");
+  colours->SetNumberOfComponents(3);
+  auto ids = vtkSmartPointer<vtkIntArray>::New();
+  ids->SetName("element");
+  const bool painted = paint.firstCorner.size() == mesh.size() + 1;
+  for (std::size_t e = 0; e < mesh.size(); ++e) {
+    const Element& element = mesh.elements[e];
+    polygons->InsertNextCell(static_cast<vtkIdType>(element.vertices.size()));
+    for (std::size_t k = 0; k < element.vertices.size(); ++k) {
+      const Vec3& p = mesh.vertices[element.vertices[k]];
+      polygons->InsertCellPoint(points->InsertNextPoint(p.x(), p.y(), p.z()));
+      const Rgb8 c = painted ? paint.colours[paint.firstCorner[e] + k] : Rgb8{200, 200, 200};
+      colours->InsertNextTypedTuple(c.data());
+    }
+    ids->InsertNextValue(static_cast<int>(e));
+  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  data->SetPolys(polygons);
+  data->GetPointData()->SetScalars(colours);
+  data->GetCellData()->AddArray(ids);
+  return data;
+}
+
+vtkSmartPointer<vtkRenderer> makeSceneRenderer(const Mesh& mesh, const Camera& camera,
+                                               const ScenePaint& paint, const SceneViewOptions& options,
+                                               int windowHeight, const double viewport[4]) {
+  const double scale = options.dpi > 0 ? options.dpi / 96.0 : 1.0;
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->SetViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  renderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
+  renderer->UseFXAAOn();
+
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(makeElementPolyData(mesh, paint));
+  mapper->SetScalarModeToUsePointData();
+  mapper->SetColorModeToDirectScalars();
+  mapper->ScalarVisibilityOn();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  // The colour is the displayed radiosity itself: no lighting, and one-sided polygons as in the model.
+  actor->GetProperty()->LightingOff();
+  actor->GetProperty()->BackfaceCullingOn();
+  if (!options.image.smooth) actor->GetProperty()->SetInterpolationToFlat();
+  if (options.image.showEdges) {
+    actor->GetProperty()->EdgeVisibilityOn();
+    actor->GetProperty()->SetEdgeColor(0.08, 0.08, 0.08);
+    actor->GetProperty()->SetLineWidth(static_cast<float>(std::max(1.0, 1.0 * scale)));
+  }
+  renderer->AddActor(actor);
+  if (paint.highlightElement >= 0 && static_cast<std::size_t>(paint.highlightElement) < mesh.size())
+    renderer->AddActor(makeHighlightActor(mesh, paint.highlightElement, std::max(2.0, 3.0 * scale)));
+
+  vtkCamera* view = renderer->GetActiveCamera();
+  view->SetPosition(camera.position.x(), camera.position.y(), camera.position.z());
+  view->SetFocalPoint(camera.target.x(), camera.target.y(), camera.target.z());
+  view->SetViewUp(camera.up.x(), camera.up.y(), camera.up.z());
+  view->SetViewAngle(camera.fovYDegrees);
+  view->OrthogonalizeViewUp();
+  renderer->ResetCameraClippingRange();
+
+  if (!options.caption.empty())
+    renderer->AddViewProp(makeCaption(options.caption, readableFontSize(windowHeight, scale, 0.03)));
+  return renderer;
+}
+
+void addSceneView(vtkRenderWindow* window, const Mesh& mesh, const Camera& camera, const SceneViewData& data,
+                  const SceneViewOptions& options) {
+  const ScenePaint paint = paintScene(mesh, data, options);
+  const int height = window->GetSize()[1] > 0 ? window->GetSize()[1] : options.image.height;
+  const bool bar = paint.colourBar;
+  const double sceneViewport[4] = {0.0, 0.0, bar ? 0.8 : 1.0, 1.0};
+  window->AddRenderer(makeSceneRenderer(mesh, camera, paint, options, height, sceneViewport));
+  if (!bar) return;
+  auto barRenderer = vtkSmartPointer<vtkRenderer>::New();
+  barRenderer->SetViewport(0.8, 0.0, 1.0, 1.0);
+  barRenderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
+  const double scale = options.dpi > 0 ? options.dpi / 96.0 : 1.0;
+  auto colourBar = makeColourBar(paint.legend.map, paint.legend.min, paint.legend.max, paint.legend.logScale,
+                                 paint.legend.title, readableFontSize(height, scale, 0.026));
+  colourBar->SetPosition(0.08, 0.08);
+  colourBar->SetPosition2(0.84, 0.8);
+  barRenderer->AddViewProp(colourBar);
+  window->AddRenderer(barRenderer);
+}
+
+void writeSceneFigure(const Mesh& mesh, const Camera& camera, const SceneViewData& data,
+                      const SceneViewOptions& options, const std::string& path) {
+  figureFormatOf(path);  // reject unknown extensions before rendering
+  auto window = makeOffscreenWindow(options.image.width, options.image.height);
+  addSceneView(window, mesh, camera, data, options);
+  writeRenderWindow(window, path, options.dpi);
+}
+
+}  // namespace rt::viz

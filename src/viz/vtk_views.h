@@ -1,0 +1,31 @@
+// VTK-facing builders for hosts that own a render window (the Qt app's vtkGenericOpenGLRenderWindow): the
+// same pipelines the figure functions render offscreen. Includes VTK; the rest of viz's public headers do
+// not.
+#pragma once
+
+#include <vtkSmartPointer.h>
+
+#include "viz/scene_view.h"
+
+class vtkPolyData;
+class vtkRenderer;
+class vtkRenderWindow;
+
+namespace rt::viz {
+
+// One polygon per element (points repeated per element so that corners can differ in colour), cell data
+// "element" (the element index), point data "colour" (RGB, unsigned char) from the paint.
+vtkSmartPointer<vtkPolyData> makeElementPolyData(const Mesh& mesh, const ScenePaint& paint);
+
+// The scene renderer: elements (no lighting: the colour is the displayed radiosity), optional mesh edges,
+// highlight, caption, camera. `viewport` is xmin, ymin, xmax, ymax in normalised window coordinates.
+vtkSmartPointer<vtkRenderer> makeSceneRenderer(const Mesh& mesh, const Camera& camera,
+                                               const ScenePaint& paint, const SceneViewOptions& options,
+                                               int windowHeight, const double viewport[4]);
+
+// Adds the full scene view (scene renderer, and a colour-bar renderer on the right for scalar views) to a
+// window.
+void addSceneView(vtkRenderWindow* window, const Mesh& mesh, const Camera& camera, const SceneViewData& data,
+                  const SceneViewOptions& options);
+
+}  // namespace rt::viz
