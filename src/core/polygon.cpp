@@ -16,7 +16,9 @@ Vec3 newellNormal(const Polygon& polygon) {
   return n;
 }
 
-double polygonArea(const Polygon& polygon) { return 0.5 * newellNormal(polygon).norm(); }
+double polygonArea(const Polygon& polygon) {
+  return 0.5 * newellNormal(polygon).norm();
+}
 
 Vec3 polygonCentroid(const Polygon& polygon) {
   if (polygon.empty()) return Vec3::Zero();
@@ -66,7 +68,8 @@ bool isConvex(const Polygon& polygon, const Vec3& normal) {
 
 std::vector<Polygon> fanTriangulate(const Polygon& polygon) {
   std::vector<Polygon> triangles;
-  for (std::size_t i = 1; i + 1 < polygon.size(); ++i) triangles.push_back({polygon[0], polygon[i], polygon[i + 1]});
+  for (std::size_t i = 1; i + 1 < polygon.size(); ++i)
+    triangles.push_back({polygon[0], polygon[i], polygon[i + 1]});
   return triangles;
 }
 
@@ -75,6 +78,36 @@ double maxEdgeLength(const Polygon& polygon) {
   for (std::size_t i = 0; i < polygon.size(); ++i)
     worst = std::max(worst, (polygon[(i + 1) % polygon.size()] - polygon[i]).norm());
   return worst;
+}
+
+double deviationFromFirstPlane(const Polygon& polygon) {
+  if (polygon.size() < 4) return 0;
+  const double scale = maxEdgeLength(polygon);
+  for (std::size_t k = 2; k < polygon.size(); ++k) {
+    const Vec3 n = (polygon[1] - polygon[0]).cross(polygon[k] - polygon[0]);
+    if (n.norm() <= 1e-12 * scale * scale) continue;  // collinear so far: try the next vertex
+    const Vec3 unit = n.normalized();
+    double worst = 0;
+    for (const Vec3& v : polygon) worst = std::max(worst, std::abs((v - polygon[0]).dot(unit)));
+    return worst;
+  }
+  return 0;
+}
+
+double totalTurning(const Polygon& polygon, const Vec3& normal) {
+  const std::size_t count = polygon.size();
+  const Vec3 axis = normal.normalized();
+  double total = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    // Edges projected onto the plane normal to `axis`, so that twisted (non-planar) outlines turn by their
+    // projection.
+    Vec3 in = polygon[(i + 1) % count] - polygon[i];
+    Vec3 out = polygon[(i + 2) % count] - polygon[(i + 1) % count];
+    in -= in.dot(axis) * axis;
+    out -= out.dot(axis) * axis;
+    total += std::atan2(in.cross(out).dot(axis), in.dot(out));
+  }
+  return total;
 }
 
 }  // namespace rt

@@ -5,7 +5,8 @@
 
 namespace rt {
 
-// Newell's method: robust for any simple polygon, non-planar ones included. Length = twice the area (planar case).
+// Newell's method: robust for any simple polygon, non-planar ones included. Length = twice the area (planar
+// case).
 Vec3 newellNormal(const Polygon& polygon);
 double polygonArea(const Polygon& polygon);
 Vec3 polygonCentroid(const Polygon& polygon);  // area centroid
@@ -17,5 +18,13 @@ bool isConvex(const Polygon& polygon, const Vec3& normal);
 std::vector<Polygon> fanTriangulate(const Polygon& polygon);
 // Longest edge length.
 double maxEdgeLength(const Polygon& polygon);
+// Largest distance of a vertex from the plane through the first three vertices that are not collinear: the
+// way measured data usually states how far a quad is from planar (the 4th corner's offset). 0 for fewer than
+// 4 vertices.
+double deviationFromFirstPlane(const Polygon& polygon);
+// Sum of the signed turning angles (radians) at every vertex about `normal`, measured in the plane normal to
+// it: +2 pi for a simple convex CCW outline, a multiple of 2 pi larger in magnitude for outlines that wind
+// around more than once (pentagrams).
+double totalTurning(const Polygon& polygon, const Vec3& normal);
 
 }  // namespace rt
