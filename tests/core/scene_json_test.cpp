@@ -67,23 +67,188 @@ TEST(SceneJson, ParsesMaterialsSurfacesAndPatches) {
   EXPECT_FALSE(s.camera.has_value());
 }
 
+// Expects `text` to be rejected with a message naming `location` (file:line at /path) and containing
+// `phrase`.
+void expectRejected(const std::string& text, const std::string& location, const std::string& phrase) {
+  const std::string m = rejection(text);
+  EXPECT_NE(m.find(location), std::string::npos) << "location '" << location << "' missing from: " << m;
+  EXPECT_NE(m.find(phrase), std::string::npos) << "phrase '" << phrase << "' missing from: " << m;
+}
+
+const std::string kSourceSquare = "[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]";
+
+std::string withSourcePolygon(const std::string& polygon) {
+  return replaced(kTwoSquares, kSourceSquare, polygon);
+}
+
 TEST(SceneJson, RejectsReflectanceOfOne) {
-  const std::string m = rejection(replaced(kTwoSquares, "[0.5, 0.5, 0.5]", "[0.5, 1.0, 0.5]"));
-  EXPECT_NE(m.find("bad.json:6 at /materials/1/reflectance"), std::string::npos) << m;
-  EXPECT_NE(m.find("outside [0,1)"), std::string::npos) << m;
+  expectRejected(replaced(kTwoSquares, "[0.5, 0.5, 0.5]", "[0.5, 1.0, 0.5]"),
+                 "bad.json:6 at /materials/1/reflectance", "outside [0,1)");
+}
+
+TEST(SceneJson, RejectsNegativeReflectance) {
+  expectRejected(replaced(kTwoSquares, "[0.5, 0.5, 0.5]", "-0.1"), "bad.json:6 at /materials/1/reflectance",
+                 "outside [0,1)");
+}
+
+TEST(SceneJson, RejectsNegativeEmission) {
+  expectRejected(replaced(kTwoSquares, "\"emission\": [1, 1, 1]", "\"emission\": [1, -1, 1]"),
+                 "bad.json:5 at /materials/0/emission", "negative");
+}
+
+TEST(SceneJson, RejectsInfiniteEmission) {
+  expectRejected(replaced(kTwoSquares, "\"emission\": [1, 1, 1]", "\"emission\": [1, 1e999, 1]"),
+                 "bad.json:5", "number overflow parsing '1e999'");
 }
 
 TEST(SceneJson, RejectsSceneWithoutLight) {
-  const std::string m =
-      rejection(replaced(kTwoSquares, "\"emission\": [1, 1, 1]", "\"emission\": [0, 0, 0]"));
-  EXPECT_NE(m.find("bad.json"), std::string::npos) << m;
-  EXPECT_NE(m.find("no light"), std::string::npos) << m;
+  expectRejected(replaced(kTwoSquares, "\"emission\": [1, 1, 1]", "\"emission\": [0, 0, 0]"), "bad.json",
+                 "no light");
 }
 
-TEST(SceneJson, SyntaxErrorNamesLineAndColumn) {
-  const std::string m = rejection(replaced(kTwoSquares, "\"unit\": \"m\",", "\"unit\": \"m\""));
-  EXPECT_NE(m.find("bad.json:4"), std::string::npos) << m;
-  EXPECT_NE(m.find("JSON syntax error at column"), std::string::npos) << m;
+TEST(SceneJson, RejectsNaNAsSyntaxErrorWithLine) {
+  // JSON has no NaN: the literal is a syntax error, reported at its line.
+  expectRejected(withSourcePolygon("[[0, 0, 0], [1, NaN, 0], [1, 1, 0], [0, 1, 0]]"), "bad.json:10",
+                 "JSON syntax error");
+}
+
+TEST(SceneJson, RejectsOverflowingCoordinateAtItsLine) {
+  // nlohmann::json refuses numbers that overflow a double, so 1e999 never becomes infinity.
+  expectRejected(withSourcePolygon("[[0, 0, 0], [1, 1e999, 0], [1, 1, 0], [0, 1, 0]]"), "bad.json:10",
+                 "number overflow");
+}
+
+TEST(SceneJson, RejectsPolygonWithTwoVertices) {
+  expectRejected(withSourcePolygon("[[0, 0, 0], [1, 0, 0]]"), "bad.json:10 at /surfaces/0/polygons/0",
+                 "at least 3");
+}
+
+TEST(SceneJson, RejectsPolygonWithTwoDistinctVertices) {
+  expectRejected(withSourcePolygon("[[0, 0, 0], [1, 0, 0], [1, 0, 0], [0, 0, 0]]"),
+                 "bad.json:10 at /surfaces/0/polygons/0", "degenerate polygon");
+}
+
+TEST(SceneJson, RejectsCollinearPolygon) {
+  expectRejected(withSourcePolygon("[[0, 0, 0], [1, 0, 0], [2, 0, 0]]"),
+                 "bad.json:10 at /surfaces/0/polygons/0", "zero area");
+}
+
+TEST(SceneJson, RejectsNonConvexPolygon) {
+  // An L shape.
+  expectRejected(withSourcePolygon("[[0, 0, 0], [2, 0, 0], [2, 1, 0], [1, 1, 0], [1, 2, 0], [0, 2, 0]]"),
+                 "bad.json:10 at /surfaces/0/polygons/0", "not convex");
+}
+
+TEST(SceneJson, RejectsBowTie) {
+  expectRejected(withSourcePolygon("[[0, 0, 0], [3, 2, 0], [3, 0, 0], [0, 1, 0]]"),
+                 "bad.json:10 at /surfaces/0/polygons/0", "not convex");
+  // A symmetric bow tie's two lobes cancel: no area at all.
+  expectRejected(withSourcePolygon("[[0, 0, 0], [1, 1, 0], [1, 0, 0], [0, 1, 0]]"),
+                 "bad.json:10 at /surfaces/0/polygons/0", "zero area");
+}
+
+TEST(SceneJson, RejectsPentagramThatWindsTwice) {
+  // Every turn has the same sign, but the outline goes around twice.
+  expectRejected(withSourcePolygon("[[1, 0, 0], [-0.809017, 0.587785, 0], [0.309017, -0.951057, 0], "
+                                   "[0.309017, 0.951057, 0], [-0.809017, -0.587785, 0]]"),
+                 "bad.json:10 at /surfaces/0/polygons/0", "crosses itself");
+}
+
+TEST(SceneJson, SplitsNonPlanarQuadWithWarning) {
+  const Scene s =
+      parseSceneJson(withSourcePolygon("[[0, 0, 0], [1, 0, 0], [1, 1, 0.01], [0, 1, 0]]"), "warp.json");
+  ASSERT_EQ(s.patches.size(), 3u);  // two triangles + the receiver
+  EXPECT_EQ(s.patches[0].vertices.size(), 3u);
+  EXPECT_EQ(s.patches[1].vertices.size(), 3u);
+  EXPECT_NEAR(s.patches[0].area + s.patches[1].area, 1.0, 1e-4);
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("warp.json:10 at /surfaces/0/polygons/0"), std::string::npos) << s.warnings[0];
+  EXPECT_NE(s.warnings[0].find("not planar"), std::string::npos) << s.warnings[0];
+  EXPECT_NE(s.warnings[0].find("0.01 m from the plane of the first three"), std::string::npos)
+      << s.warnings[0];
+  EXPECT_NE(s.warnings[0].find("split into 2 triangles"), std::string::npos) << s.warnings[0];
+}
+
+TEST(SceneJson, KeepsPlanarQuadWithinToleranceWhole) {
+  // 1e-8 out of plane on a unit square is below the 1e-6 relative tolerance.
+  const Scene s = parseSceneJson(withSourcePolygon("[[0, 0, 0], [1, 0, 0], [1, 1, 1e-8], [0, 1, 0]]"));
+  EXPECT_EQ(s.patches.size(), 2u);
+  EXPECT_TRUE(s.warnings.empty());
+}
+
+TEST(SceneJson, DropsRepeatedClosingVertexWithWarning) {
+  const Scene s =
+      parseSceneJson(withSourcePolygon("[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 0]]"));
+  EXPECT_EQ(s.patches[0].vertices.size(), 4u);
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("repeated vertex"), std::string::npos) << s.warnings[0];
+}
+
+TEST(SceneJson, RejectsUnknownMaterial) {
+  expectRejected(replaced(kTwoSquares, "\"material\": \"white\"", "\"material\": \"whit\""),
+                 "bad.json:12 at /surfaces/1/material", "unknown material 'whit'");
+}
+
+TEST(SceneJson, RejectsDuplicateMaterial) {
+  expectRejected(replaced(kTwoSquares, "\"name\": \"white\"", "\"name\": \"light\""),
+                 "bad.json:6 at /materials/1/name", "duplicate material name");
+}
+
+TEST(SceneJson, RejectsMisspeltKey) {
+  expectRejected(replaced(kTwoSquares, "\"reflectance\": [0.5", "\"reflectence\": [0.5"),
+                 "bad.json:6 at /materials/1/reflectence", "unknown key \"reflectence\"");
+}
+
+TEST(SceneJson, RejectsMissingKey) {
+  expectRejected(replaced(kTwoSquares, "\"material\": \"white\", ", ""), "bad.json:12 at /surfaces/1",
+                 "missing required key \"material\"");
+}
+
+TEST(SceneJson, RejectsWrongTypes) {
+  expectRejected(replaced(kTwoSquares, "[[0, 0, 1], [0, 1, 1]", "[[0, 0, 1], [0, 1]"),
+                 "bad.json:13 at /surfaces/1/polygons/0/1", "expected [x, y, z]");
+  expectRejected(replaced(kTwoSquares, "\"unit\": \"m\"", "\"unit\": 3"), "bad.json:3 at /unit",
+                 "expected a string");
+  expectRejected("[1, 2]", "bad.json", "expected an object");
+}
+
+TEST(SceneJson, RejectsBadCamera) {
+  const std::string camera =
+      "\"unit\": \"m\",\n  \"camera\": {\"position\": [0, 0, 5], \"target\": [0, 0, 0], ";
+  expectRejected(replaced(kTwoSquares, "\"unit\": \"m\",", camera + "\"fov_y_degrees\": 200},"),
+                 "bad.json:4 at /camera/fov_y_degrees", "outside (0, 180)");
+  expectRejected(replaced(kTwoSquares, "\"unit\": \"m\",", camera + "\"up\": [0, 0, 1]},"),
+                 "bad.json:4 at /camera/up", "parallel");
+}
+
+TEST(SceneJson, ReadsCameraAndGreyShorthand) {
+  std::string text = replaced(kTwoSquares, "\"unit\": \"m\",",
+                              "\"unit\": \"m\", \"camera\": {\"position\": [0, 0, 5], \"target\": [0, 0, 0], "
+                              "\"fov_y_degrees\": 30},");
+  text = replaced(text, "[0.5, 0.5, 0.5]", "0.25");
+  const Scene s = parseSceneJson(text);
+  ASSERT_TRUE(s.camera.has_value());
+  EXPECT_TRUE(s.camera->position.isApprox(Vec3(0, 0, 5)));
+  EXPECT_TRUE(s.camera->up.isApprox(Vec3(0, 1, 0)));
+  EXPECT_DOUBLE_EQ(s.camera->fovYDegrees, 30);
+  EXPECT_TRUE((s.materials[1].reflectance == Rgb::Constant(0.25)).all());
+}
+
+TEST(SceneJson, RejectsMissingFileAndUnknownExtension) {
+  try {
+    loadScene("/nonexistent/scene.json");
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/scene.json: error: cannot open"), std::string::npos)
+        << e.what();
+  }
+  try {
+    loadScene("scene.stl");
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("scene.stl: error: unknown scene format '.stl'"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(SceneJson, LoadsCornellBoxWithSplitLeftWall) {

@@ -109,8 +109,10 @@ void addPolygon(Scene& scene, const Polygon& polygon, int surface, const SourceL
   const Vec3 newell = newellNormal(outline);
   const double area = 0.5 * newell.norm();
   if (!(area > kZeroAreaTolerance * size * size))
-    throw InputError(where, "degenerate polygon: zero area (its vertices are collinear); longest edge " +
-                                formatNumber(size) + " " + scene.unit + ", area " + formatNumber(area));
+    throw InputError(where,
+                     "degenerate polygon: zero area (collinear vertices, or an outline folded onto itself); "
+                     "longest edge " +
+                         formatNumber(size) + " " + scene.unit + ", area " + formatNumber(area));
   const Vec3 normal = newell / newell.norm();
 
   // Convexity is judged about the Newell normal, i.e. on the polygon's projection onto its best-fit plane, so

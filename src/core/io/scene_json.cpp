@@ -1,5 +1,6 @@
 // The project's JSON scene format (docs/scene-format.md). Every message names the file, the line and the JSON
 // path of the offending value.
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <map>
@@ -75,6 +76,19 @@ class SceneJsonReader {
       what = detail == std::string::npos ? what : what.substr(detail + 2);
       throw InputError({fileName, line, ""},
                        "JSON syntax error at column " + std::to_string(column) + ": " + what);
+    } catch (const json::exception& e) {
+      // E.g. "number overflow parsing '1e999'": no position is given, so find the quoted text.
+      std::string what = e.what();
+      const std::size_t bracket = what.find("] ");
+      if (bracket != std::string::npos) what = what.substr(bracket + 2);
+      int line = 0;
+      const std::size_t open = what.find('\''), close = what.rfind('\'');
+      if (open != std::string::npos && close > open) {
+        const std::size_t at = text.find(what.substr(open + 1, close - open - 1));
+        if (at != std::string::npos)
+          line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+      }
+      throw InputError({fileName, line, ""}, "JSON: " + what);
     }
   }
 
@@ -243,7 +257,13 @@ class SceneJsonReader {
 }  // namespace
 
 Scene parseSceneJson(const std::string& text, const std::string& fileName) {
-  return SceneJsonReader(text, fileName).read();
+  try {
+    return SceneJsonReader(text, fileName).read();
+  } catch (const json::exception& e) {
+    // Every expected problem is reported above with its path; this only keeps a surprise from escaping as a
+    // crash.
+    throw InputError({fileName}, std::string("cannot read the JSON scene: ") + e.what());
+  }
 }
 
 Scene loadSceneJson(const std::string& path) {
