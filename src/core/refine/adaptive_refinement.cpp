@@ -1,0 +1,142 @@
+// Adaptive subdivision (Cohen & Wallace, "Radiosity and Realistic Image Synthesis", ch. 8): solve, look at
+// the radiosity differences between neighbouring elements, split where they are large, and compute only the
+// form factors that the split made new. Also the uniform mesh, which is the same loop stopped after its first
+// solve.
+#include <algorithm>
+#include <chrono>
+
+#include "core/polygon.h"
+#include "core/refine/dense_transfer.h"
+#include "core/refine/piece_mesh.h"
+#include "core/refine/refine_modes.h"
+
+namespace rt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// Elements whose radiosity jumps against a neighbour's by more than the threshold, largest jumps first,
+// limited to what the element budget allows and to elements whose children would not be smaller than minEdge.
+std::vector<int> elementsToSplit(const Scene& scene, const Mesh& mesh, const RgbField& B,
+                                 const std::vector<TVertex>& tVertices, const RefineOptions& options) {
+  const std::size_t n = mesh.size();
+  double weighted = 0, area = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if ((mesh.emission.row(i).array() > 0).any()) continue;
+    weighted += mesh.elements[i].area * luminance(B.row(i));
+    area += mesh.elements[i].area;
+  }
+  const double threshold = options.gradientTolerance * (area > 0 ? weighted / area : 0.0);
+  const auto neighbours = smoothNeighbours(scene, mesh, tVertices);
+  std::vector<double> jump(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int j : neighbours[i]) {
+      const double d = std::abs(luminance(B.row(i)) - luminance(B.row(j)));
+      jump[i] = std::max(jump[i], d);
+    }
+  std::vector<int> marked;
+  for (std::size_t i = 0; i < n; ++i)
+    if (jump[i] > threshold && maxEdgeLength(mesh.polygon(static_cast<int>(i))) >= 2 * options.minEdge)
+      marked.push_back(static_cast<int>(i));
+  std::sort(marked.begin(), marked.end(), [&](int a, int b) { return jump[a] > jump[b]; });
+  const std::size_t room = options.maxElements > static_cast<int>(n) ? (options.maxElements - n) / 3 : 0;
+  if (marked.size() > room) marked.resize(room);
+  std::sort(marked.begin(), marked.end());
+  return marked;
+}
+
+RefinedSolution refineLoop(const Scene& scene, const RefineOptions& options, Progress& progress, int passes) {
+  const auto start = Clock::now();
+  RefinedSolution solution;
+  solution.stats.mode = options.mode;
+  const VisibilityOracle visibility(scene);
+  TransferOptions transfer;
+  transfer.visibilitySamples = options.visibilitySamples;
+
+  MeshOptions meshOptions;
+  meshOptions.mode = MeshOptions::Mode::MaxEdge;
+  meshOptions.maxEdge = options.initialMaxEdge;
+  Mesh mesh = buildMesh(scene, meshOptions);
+  solution.stats.initialElements = mesh.size();
+  std::vector<int> level(mesh.size(), 0);
+  std::vector<int> oldIndex;
+  FormFactorMatrix F;
+  RgbField B = mesh.emission;
+
+  for (int pass = 0;; ++pass) {
+    RefinePass record;
+    record.elements = mesh.size();
+    const auto passStart = Clock::now();
+    std::vector<Polygon> storage;
+    const std::vector<SurfacePiece> pieces = piecesOfMesh(mesh, storage);
+    const auto ffStart = Clock::now();
+    F = updateFormFactors(F, oldIndex, pieces, visibility, transfer, progress,
+                          "form factors, pass " + std::to_string(pass + 1), record.pairsComputed);
+    solution.stats.formFactorSeconds += secondsSince(ffStart);
+    const auto solveStart = Clock::now();
+    record.sweeps = gatherSolve(F, mesh.reflectance, mesh.emission, B, options.solverTolerance,
+                                options.maxSweeps, progress);
+    solution.stats.solveSeconds += secondsSince(solveStart);
+    solution.stats.pairsComputed += record.pairsComputed;
+    std::vector<TVertex> tVertices = findTVertices(mesh);
+
+    std::vector<int> split;
+    if (pass + 1 < passes) split = elementsToSplit(scene, mesh, B, tVertices, options);
+    record.split = split.size();
+    record.seconds = secondsSince(passStart);
+    solution.stats.passes.push_back(record);
+    if (split.empty()) {
+      solution.tVertices = std::move(tVertices);
+      break;
+    }
+
+    // Children replace their parent in place of order; they start from the parent's radiosity.
+    std::vector<Polygon> nextPieces;
+    std::vector<int> nextPatch, nextLevel, nextOld;
+    std::vector<Eigen::RowVector3d> nextB;
+    std::size_t s = 0;
+    for (std::size_t e = 0; e < mesh.size(); ++e) {
+      const bool splitThis = s < split.size() && split[s] == static_cast<int>(e);
+      if (splitThis) ++s;
+      const Polygon polygon = mesh.polygon(static_cast<int>(e));
+      const std::vector<Polygon> parts = splitThis ? splitInFour(polygon) : std::vector<Polygon>{polygon};
+      for (const Polygon& part : parts) {
+        nextPieces.push_back(part);
+        nextPatch.push_back(mesh.elements[e].patch);
+        nextLevel.push_back(level[e] + (splitThis ? 1 : 0));
+        nextOld.push_back(splitThis ? -1 : static_cast<int>(e));
+        nextB.push_back(B.row(static_cast<Eigen::Index>(e)));
+      }
+    }
+    mesh = meshFromPieces(scene, nextPieces, nextPatch);
+    level = std::move(nextLevel);
+    oldIndex = std::move(nextOld);
+    B.resize(static_cast<Eigen::Index>(nextB.size()), 3);
+    for (std::size_t k = 0; k < nextB.size(); ++k) B.row(static_cast<Eigen::Index>(k)) = nextB[k];
+  }
+
+  solution.mesh = std::move(mesh);
+  solution.B = std::move(B);
+  solution.elementLevel = std::move(level);
+  solution.stats.elements = solution.mesh.size();
+  for (int l : solution.elementLevel) solution.stats.maxLevel = std::max(solution.stats.maxLevel, l);
+  solution.stats.tVertices = solution.tVertices.size();
+  solution.stats.raysCast = visibility.raysCast();
+  solution.stats.seconds = secondsSince(start);
+  return solution;
+}
+
+}  // namespace
+
+RefinedSolution solveUniform(const Scene& scene, const RefineOptions& options, Progress& progress) {
+  return refineLoop(scene, options, progress, 1);
+}
+
+RefinedSolution solveAdaptive(const Scene& scene, const RefineOptions& options, Progress& progress) {
+  return refineLoop(scene, options, progress, options.maxPasses);
+}
+
+}  // namespace rt

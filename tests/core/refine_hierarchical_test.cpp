@@ -1,0 +1,51 @@
+#include <gtest/gtest.h>
+
+#include "core/refine/refine.h"
+#include "refine_test_scenes.h"
+
+namespace rt {
+namespace {
+
+TEST(RefineHierarchical, ConvergesToTheFineUniformSolution) {
+  const Scene scene = test::closedRoom();
+  RefineOptions fine;
+  fine.mode = RefineMode::Uniform;
+  fine.initialMaxEdge = 0.125;
+  const RefinedSolution reference = solveRefined(scene, fine);
+
+  double previous = 1e9;
+  for (double tolerance : {0.05, 0.01, 0.002}) {
+    RefineOptions o;
+    o.mode = RefineMode::Hierarchical;
+    o.linkTolerance = tolerance;
+    o.minArea = 0.125 * 0.125 / 2;
+    const RefinedSolution h = solveRefined(scene, o);
+    const double error = relativeRmsError(h, reference);
+    EXPECT_LT(error, previous * 1.05) << "tolerance " << tolerance << ": " << h.stats.summary();
+    previous = std::min(previous, error);
+    const double n = static_cast<double>(h.stats.elements);
+    EXPECT_LT(static_cast<double>(h.stats.links), n * n) << h.stats.summary();
+    EXPECT_EQ(h.links.size(), h.stats.links);
+  }
+  EXPECT_LT(previous, 0.08);
+}
+
+TEST(RefineHierarchical, LeavesReconstructTheHierarchy) {
+  RefineOptions o;
+  o.mode = RefineMode::Hierarchical;
+  o.linkTolerance = 0.01;
+  o.minArea = 0.01;
+  const Scene scene = test::shadowScene();
+  const RefinedSolution h = solveRefined(scene, o);
+  // The leaves tile every patch exactly.
+  std::vector<double> area(scene.patches.size(), 0.0);
+  for (const Element& e : h.mesh.elements) area[e.patch] += e.area;
+  for (std::size_t p = 0; p < scene.patches.size(); ++p) EXPECT_NEAR(area[p], scene.patches[p].area, 1e-9);
+  EXPECT_GT(h.stats.maxLevel, 1);
+  ASSERT_EQ(h.elementLevel.size(), h.mesh.size());
+  // The floor in the umbra gets nothing directly; far from it, plenty.
+  EXPECT_LT(radiosityAt(h, 2, Vec3(0, 0, 0))[0], 0.1 * radiosityAt(h, 2, Vec3(1.8, 0, 0))[0]);
+}
+
+}  // namespace
+}  // namespace rt
