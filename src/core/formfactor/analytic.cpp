@@ -1,0 +1,280 @@
+#include "core/formfactor/analytic.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/formfactor/gauss_legendre.h"
+#include "core/polygon.h"
+
+namespace rt {
+namespace {
+
+constexpr double kInvTwoPi = 0.5 / std::numbers::pi;
+
+// Antiderivative in u of ln sqrt(u^2 + h^2): the inner integral along a line at distance h.
+double logLineIntegral(double u, double h) {
+  const double rr = u * u + h * h;
+  if (rr == 0) return 0;
+  double value = 0.5 * u * std::log(rr) - u;
+  if (h > 0) value += h * std::atan(u / h);
+  return value;
+}
+
+// Second antiderivative: the double integral of ln r over two parallel lines at distance h.
+double logLineIntegral2(double u, double h) {
+  const double rr = u * u + h * h;
+  if (rr == 0) return 0;
+  double value = 0.25 * (u * u - h * h) * std::log(rr) - 0.75 * u * u;
+  if (h > 0) value += h * u * std::atan(u / h);
+  return value;
+}
+
+struct Segment {
+  Vec3 start;
+  Vec3 direction;  // unit
+  double length;
+};
+
+Segment segmentOf(const Vec3& a, const Vec3& b) {
+  const Vec3 d = b - a;
+  const double length = d.norm();
+  return {a, length > 0 ? Vec3(d / length) : Vec3::Zero(), length};
+}
+
+// int_0^L ln |p - (start + t direction)| dt, in closed form.
+double innerIntegral(const Vec3& p, const Segment& b) {
+  const Vec3 w = p - b.start;
+  const double foot = w.dot(b.direction);
+  const double h = (w - foot * b.direction).norm();
+  return logLineIntegral(b.length - foot, h) - logLineIntegral(-foot, h);
+}
+
+double distanceToSegment(const Vec3& p, const Segment& b) {
+  const double t = std::clamp((p - b.start).dot(b.direction), 0.0, b.length);
+  return (p - (b.start + t * b.direction)).norm();
+}
+
+// Parameter on segment a of the point closest to segment b (the distance along a is convex, minimal there).
+double closestParameter(const Segment& a, const Segment& b) {
+  // Minimise |a0 + s da - b0 - t db|^2 over the box [0,La] x [0,Lb] by alternating projections from the
+  // unconstrained solution; exact for a convex quadratic on a rectangle after clamping both ways.
+  const Vec3 r = a.start - b.start;
+  const double c = a.direction.dot(b.direction);
+  const double e = a.direction.dot(r), f = b.direction.dot(r);
+  const double denominator = 1 - c * c;
+  double s = denominator > 1e-14 ? (c * f - e) / denominator : 0.0;
+  s = std::clamp(s, 0.0, a.length);
+  double t = std::clamp(f + s * c, 0.0, b.length);
+  s = std::clamp(t * c - e, 0.0, a.length);
+  return s;
+}
+
+// Number of Gauss-Legendre points for a panel whose nearest singularity is `ratio` panel lengths away: the error of
+// the n-point rule decays like rho^-2n with rho the Bernstein ellipse through that singularity (worst case: above the
+// panel's middle). Aim at 1e-16.
+int pointsForRatio(double ratio) {
+  const double rho = 2 * ratio + std::sqrt(1 + 4 * ratio * ratio);
+  return std::clamp(static_cast<int>(std::ceil(18.5 / std::log(rho))), 4, 24);
+}
+
+double integratePanel(const Segment& a, const Segment& b, double s0, double s1, double distance) {
+  const double length = s1 - s0;
+  if (length <= 0) return 0;
+  const QuadratureRule& rule = gaussLegendre(pointsForRatio(distance / length));
+  double sum = 0;
+  for (std::size_t k = 0; k < rule.nodes.size(); ++k)
+    sum += rule.weights[k] * innerIntegral(a.start + (s0 + length * rule.nodes[k]) * a.direction, b);
+  return sum * length;
+}
+
+// int over [s0, s1] of the inner integral, where the distance to b grows monotonically from the `near` end. Panels
+// are laid from the far end towards the near one, each at most as long as its own distance to b (the distance is
+// 1-Lipschitz, so half the distance at the panel's far end guarantees it), which grades them geometrically towards a
+// touching point and keeps every panel's rule converged.
+double integrateMonotone(const Segment& a, const Segment& b, double s0, double s1, bool nearIsStart) {
+  const double total = s1 - s0;
+  if (total <= 0) return 0;
+  const double nearPoint = nearIsStart ? s0 : s1;
+  const double nearDistance = distanceToSegment(a.start + nearPoint * a.direction, b);
+  const double floor = 1e-16 * std::max(a.length, b.length);
+  double remaining = total, sum = 0;
+  for (int panel = 0; panel < 200000 && remaining > 0; ++panel) {
+    const double farPoint = nearIsStart ? s0 + remaining : s1 - remaining;
+    const double farDistance = distanceToSegment(a.start + farPoint * a.direction, b);
+    double step = std::max(0.5 * farDistance, nearDistance);
+    if (step >= remaining || remaining < floor) step = remaining;
+    const double inner = nearIsStart ? farPoint - step : farPoint + step;
+    const double lo = std::min(inner, farPoint), hi = std::max(inner, farPoint);
+    const double panelDistance = std::max(nearDistance, farDistance - step);
+    sum += integratePanel(a, b, lo, hi, panelDistance);
+    remaining -= step;
+  }
+  return sum;
+}
+
+// int_a int_b ln r ds dt over two segments (arc length).
+double edgePairIntegral(const Segment& a, const Segment& b) {
+  if (a.length == 0 || b.length == 0) return 0;
+  const double sine = a.direction.cross(b.direction).norm();
+  if (sine < 1e-13) {
+    // Parallel or collinear: closed form of the double integral along the common direction.
+    const Vec3 w0 = b.start - a.start;
+    const Vec3 w1 = w0 + b.length * b.direction;
+    const double beta0 = w0.dot(a.direction), beta1 = w1.dot(a.direction);
+    const double lo = std::min(beta0, beta1), hi = std::max(beta0, beta1);
+    const double h = 0.5 * ((w0 - beta0 * a.direction).norm() + (w1 - beta1 * a.direction).norm());
+    return logLineIntegral2(a.length - lo, h) - logLineIntegral2(-lo, h) - logLineIntegral2(a.length - hi, h) +
+           logLineIntegral2(-hi, h);
+  }
+  const double closest = closestParameter(a, b);
+  return integrateMonotone(a, b, 0, closest, false) + integrateMonotone(a, b, closest, a.length, true);
+}
+
+Vec3 unitNormal(const Vec3* v, int n) {
+  Vec3 sum = Vec3::Zero();
+  for (int k = 0; k < n; ++k) sum += v[k].cross(v[(k + 1) % n]);
+  const double length = sum.norm();
+  return length > 0 ? Vec3(sum / length) : Vec3::Zero();
+}
+
+double areaOf(const Vec3* v, int n) {
+  Vec3 sum = Vec3::Zero();
+  for (int k = 0; k < n; ++k) sum += v[k].cross(v[(k + 1) % n]);
+  return 0.5 * sum.norm();
+}
+
+// Sutherland-Hodgman against one plane into `out` (capacity n + 1). Returns the vertex count, 0 when nothing is in
+// front (entirely behind, or lying in the plane).
+int clipInto(const Vec3* v, int n, const Vec3& origin, const Vec3& normal, Vec3* out) {
+  if (n <= 0) return 0;
+  double scale = 0;
+  for (int k = 0; k < n; ++k) scale = std::max(scale, (v[k] - origin).norm());
+  const double eps = 1e-12 * scale * normal.norm();
+  constexpr int kStack = 64;
+  double stackSide[kStack];
+  std::vector<double> heapSide;
+  double* side = stackSide;
+  if (n > kStack) {
+    heapSide.resize(n);
+    side = heapSide.data();
+  }
+  bool anyBehind = false, anyFront = false;
+  for (int k = 0; k < n; ++k) {
+    double d = normal.dot(v[k] - origin);
+    if (std::abs(d) <= eps) d = 0;
+    side[k] = d;
+    anyBehind |= d < 0;
+    anyFront |= d > 0;
+  }
+  if (!anyFront) return 0;
+  int count = 0;
+  if (!anyBehind) {
+    for (int k = 0; k < n; ++k) out[count++] = v[k];
+    return count;
+  }
+  for (int k = 0; k < n; ++k) {
+    const int next = (k + 1) % n;
+    const double dp = side[k], dq = side[next];
+    if (dp >= 0) out[count++] = v[k];
+    if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0)) out[count++] = v[k] + (v[next] - v[k]) * (dp / (dp - dq));
+  }
+  return count >= 3 ? count : 0;
+}
+
+double contourArea(const Vec3* from, int m, const Vec3* to, int n) {
+  double sum = 0;
+  for (int p = 0; p < m; ++p) {
+    const Segment a = segmentOf(from[p], from[(p + 1) % m]);
+    for (int q = 0; q < n; ++q) {
+      const Segment b = segmentOf(to[q], to[(q + 1) % n]);
+      const double alignment = a.direction.dot(b.direction);
+      if (alignment == 0) continue;  // perpendicular edges exchange nothing in the contour integral
+      sum += alignment * edgePairIntegral(a, b);
+    }
+  }
+  return kInvTwoPi * sum;
+}
+
+double lambertSum(const Vec3& point, const Vec3& normal, const Vec3* v, int n) {
+  double sum = 0;
+  for (int k = 0; k < n; ++k) {
+    const Vec3 a = v[k] - point, b = v[(k + 1) % n] - point;
+    const Vec3 c = a.cross(b);
+    const double sine = c.norm();  // |a||b| sin(theta)
+    if (sine == 0) continue;       // edge seen edge-on (or through the point): no solid angle
+    const double theta = std::atan2(sine, a.dot(b));
+    sum += theta * normal.dot(c) / sine;
+  }
+  // A polygon facing the point runs clockwise as seen from it: the raw sum is negative.
+  return -kInvTwoPi * sum;
+}
+
+// Scratch space for clipped copies without touching the heap for mesh-sized polygons.
+struct ClipBuffer {
+  static constexpr int kInline = 15;
+  Vec3 inlineStorage[kInline + 1];
+  std::vector<Vec3> heap;
+  Vec3* reserve(int n) {
+    if (n <= kInline) return inlineStorage;
+    heap.resize(n + 1);
+    return heap.data();
+  }
+};
+
+}  // namespace
+
+Polygon clipPolygonToPlane(const Polygon& polygon, const Vec3& origin, const Vec3& normal) {
+  Polygon out(polygon.size() + 1);
+  const int count = clipInto(polygon.data(), static_cast<int>(polygon.size()), origin, normal, out.data());
+  out.resize(count);
+  return out;
+}
+
+double lambertContourSum(const Vec3& point, const Vec3& normal, const Polygon& polygon) {
+  return lambertSum(point, normal, polygon.data(), static_cast<int>(polygon.size()));
+}
+
+double pointToPolygonFormFactor(const Vec3& point, const Vec3& normal, const Vec3* polygon, int count) {
+  if (count < 3) return 0;
+  Vec3 polygonNormal = Vec3::Zero();
+  for (int k = 0; k < count; ++k) polygonNormal += polygon[k].cross(polygon[(k + 1) % count]);
+  if (polygonNormal.dot(point - polygon[0]) <= 0) return 0;  // behind the polygon: one-sided
+  ClipBuffer buffer;
+  Vec3* visible = buffer.reserve(count);
+  const int n = clipInto(polygon, count, point, normal, visible);
+  if (n < 3) return 0;
+  return std::max(0.0, lambertSum(point, normal, visible, n));
+}
+
+double pointToPolygonFormFactor(const Vec3& point, const Vec3& normal, const Polygon& polygon) {
+  return pointToPolygonFormFactor(point, normal, polygon.data(), static_cast<int>(polygon.size()));
+}
+
+double contourFormFactorArea(const Polygon& from, const Polygon& to) {
+  return contourArea(from.data(), static_cast<int>(from.size()), to.data(), static_cast<int>(to.size()));
+}
+
+double polygonToPolygonFormFactor(const Vec3* from, int m, const Vec3* to, int n) {
+  if (m < 3 || n < 3) return 0;
+  const double area = areaOf(from, m);
+  if (!(area > 0)) return 0;
+  const Vec3 ni = unitNormal(from, m), nj = unitNormal(to, n);
+  ClipBuffer toBuffer, fromBuffer;
+  Vec3* toVisible = toBuffer.reserve(n);
+  const int nv = clipInto(to, n, from[0], ni, toVisible);
+  if (nv < 3) return 0;
+  Vec3* fromVisible = fromBuffer.reserve(m);
+  const int mv = clipInto(from, m, to[0], nj, fromVisible);
+  if (mv < 3) return 0;
+  // Edge-on leftovers have no area facing the other side.
+  if (areaOf(toVisible, nv) <= 1e-14 * areaOf(to, n) || areaOf(fromVisible, mv) <= 1e-14 * area) return 0;
+  return std::max(0.0, contourArea(fromVisible, mv, toVisible, nv) / area);
+}
+
+double polygonToPolygonFormFactor(const Polygon& from, const Polygon& to) {
+  return polygonToPolygonFormFactor(from.data(), static_cast<int>(from.size()), to.data(),
+                                    static_cast<int>(to.size()));
+}
+
+}  // namespace rt
