@@ -70,9 +70,9 @@ double closestParameter(const Segment& a, const Segment& b) {
   return s;
 }
 
-// Number of Gauss-Legendre points for a panel whose nearest singularity is `ratio` panel lengths away: the error of
-// the n-point rule decays like rho^-2n with rho the Bernstein ellipse through that singularity (worst case: above the
-// panel's middle). Aim at 1e-16.
+// Number of Gauss-Legendre points for a panel whose nearest singularity is `ratio` panel lengths away: the
+// error of the n-point rule decays like rho^-2n with rho the Bernstein ellipse through that singularity
+// (worst case: above the panel's middle). Aim at 1e-16.
 int pointsForRatio(double ratio) {
   const double rho = 2 * ratio + std::sqrt(1 + 4 * ratio * ratio);
   return std::clamp(static_cast<int>(std::ceil(18.5 / std::log(rho))), 4, 24);
@@ -88,10 +88,10 @@ double integratePanel(const Segment& a, const Segment& b, double s0, double s1, 
   return sum * length;
 }
 
-// int over [s0, s1] of the inner integral, where the distance to b grows monotonically from the `near` end. Panels
-// are laid from the far end towards the near one, each at most as long as its own distance to b (the distance is
-// 1-Lipschitz, so half the distance at the panel's far end guarantees it), which grades them geometrically towards a
-// touching point and keeps every panel's rule converged.
+// int over [s0, s1] of the inner integral, where the distance to b grows monotonically from the `near` end.
+// Panels are laid from the far end towards the near one, each at most as long as its own distance to b (the
+// distance is 1-Lipschitz, so half the distance at the panel's far end guarantees it), which grades them
+// geometrically towards a touching point and keeps every panel's rule converged.
 double integrateMonotone(const Segment& a, const Segment& b, double s0, double s1, bool nearIsStart) {
   const double total = s1 - s0;
   if (total <= 0) return 0;
@@ -124,8 +124,8 @@ double edgePairIntegral(const Segment& a, const Segment& b) {
     const double beta0 = w0.dot(a.direction), beta1 = w1.dot(a.direction);
     const double lo = std::min(beta0, beta1), hi = std::max(beta0, beta1);
     const double h = 0.5 * ((w0 - beta0 * a.direction).norm() + (w1 - beta1 * a.direction).norm());
-    return logLineIntegral2(a.length - lo, h) - logLineIntegral2(-lo, h) - logLineIntegral2(a.length - hi, h) +
-           logLineIntegral2(-hi, h);
+    return logLineIntegral2(a.length - lo, h) - logLineIntegral2(-lo, h) -
+           logLineIntegral2(a.length - hi, h) + logLineIntegral2(-hi, h);
   }
   const double closest = closestParameter(a, b);
   return integrateMonotone(a, b, 0, closest, false) + integrateMonotone(a, b, closest, a.length, true);
@@ -144,8 +144,8 @@ double areaOf(const Vec3* v, int n) {
   return 0.5 * sum.norm();
 }
 
-// Sutherland-Hodgman against one plane into `out` (capacity n + 1). Returns the vertex count, 0 when nothing is in
-// front (entirely behind, or lying in the plane).
+// Sutherland-Hodgman against one plane into `out` (capacity n + 1). Returns the vertex count, 0 when nothing
+// is in front (entirely behind, or lying in the plane).
 int clipInto(const Vec3* v, int n, const Vec3& origin, const Vec3& normal, Vec3* out) {
   if (n <= 0) return 0;
   double scale = 0;

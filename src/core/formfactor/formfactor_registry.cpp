@@ -1,10 +1,16 @@
+#include "core/formfactor/analytic_method.h"
 #include "core/formfactor/formfactor_method.h"
 
 namespace rt {
 
 void registerBuiltinFormFactorMethods() {
   static const bool once = [] {
-    // Built-in methods are added here as they land.
+    registerFormFactorMethod("analytic", [] { return makeAnalyticMethod(false); });
+    registerFormFactorMethod("analytic-visibility", [] { return makeAnalyticMethod(true); });
+    registerFormFactorMethod("raycast", [] { return makeRaycastMethod(); });
+    registerFormFactorMethod("montecarlo", [] { return makeMonteCarloMethod(); });
+    registerFormFactorMethod("hemicube", [] { return makeHemicubeMethod(); });
+    registerFormFactorMethod("nusselt", [] { return makeNusseltMethod(); });
     return true;
   }();
   (void)once;

@@ -1,0 +1,263 @@
+#include "core/formfactor/hemicube.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+
+#include "core/formfactor/analytic.h"
+
+namespace rt {
+namespace {
+
+// A face as three axes in the element's local frame (x = u, y = v, z = normal): pixels run along `across`
+// (columns) and `up` (rows); `forward` points from the eye through the face.
+struct FaceAxes {
+  Vec3 across, up, forward;
+  double upMin;  // the top face spans up in [-1, 1]; the sides span [0, 1] (horizon to the top edge)
+};
+
+FaceAxes axesOf(HemicubeFace face) {
+  switch (face) {
+    case HemicubeFace::Top:
+      return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, -1};
+    case HemicubeFace::PlusU:
+      return {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}, 0};
+    case HemicubeFace::PlusV:
+      return {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}, 0};
+    case HemicubeFace::MinusU:
+      return {{0, -1, 0}, {0, 0, 1}, {-1, 0, 0}, 0};
+    case HemicubeFace::MinusV:
+      return {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}, 0};
+  }
+  return {};
+}
+
+int heightOf(int resolution, HemicubeFace face) {
+  return face == HemicubeFace::Top ? resolution : hemicubeSideRows(resolution);
+}
+
+std::vector<double> computeDeltas(int resolution, HemicubeFace face) {
+  const FaceAxes axes = axesOf(face);
+  const int width = resolution, height = heightOf(resolution, face);
+  const double du = 2.0 / width, dv = (1.0 - axes.upMin) / height;
+  std::vector<double> deltas(static_cast<std::size_t>(width) * height);
+  const Vec3 eye = Vec3::Zero(), normal(0, 0, 1);
+  for (int row = 0; row < height; ++row)
+    for (int column = 0; column < width; ++column) {
+      const double a0 = -1 + column * du, a1 = a0 + du;
+      const double b0 = axes.upMin + row * dv, b1 = b0 + dv;
+      auto corner = [&](double a, double b) { return Vec3(a * axes.across + b * axes.up + axes.forward); };
+      const Polygon pixel = {corner(a0, b0), corner(a1, b0), corner(a1, b1), corner(a0, b1)};
+      deltas[static_cast<std::size_t>(row) * width + column] =
+          std::abs(lambertContourSum(eye, normal, pixel));
+    }
+  return deltas;
+}
+
+// One element projected onto one face, ready for scan conversion.
+struct ProjectedPolygon {
+  std::array<Vec2, 16> screen;  // in pixel units
+  int count = 0;
+  // Inverse depth is affine in the face's projective coordinates: 1/d = k0 * x + k1 * y + k2.
+  double k0 = 0, k1 = 0, k2 = 0;
+};
+
+}  // namespace
+
+int hemicubeSideRows(int resolution) {
+  return (resolution + 1) / 2;
+}
+
+const std::vector<double>& deltaFormFactors(int resolution, HemicubeFace face) {
+  if (resolution < 2) throw std::invalid_argument("hemicube resolution must be at least 2");
+  static std::mutex mutex;
+  static std::map<int, std::array<std::unique_ptr<std::vector<double>>, 5>> cache;
+  std::lock_guard lock(mutex);
+  auto& entry = cache[resolution];
+  auto& deltas = entry[static_cast<int>(face)];
+  if (!deltas) deltas = std::make_unique<std::vector<double>>(computeDeltas(resolution, face));
+  return *deltas;
+}
+
+HemicubeFaces renderHemicube(const Mesh& mesh, int element, int resolution) {
+  if (resolution < 2) throw std::invalid_argument("hemicube resolution must be at least 2");
+  const Element& self = mesh.elements[element];
+  HemicubeFaces result;
+  result.resolution = resolution;
+  result.element = element;
+  result.origin = self.centroid;
+  result.normal = self.normal.normalized();
+  // Tangent frame from the first edge: any choice is valid, this one aligns the top face with quads.
+  const Vec3 edge = mesh.vertices[self.vertices[1]] - mesh.vertices[self.vertices[0]];
+  result.u = (edge - edge.dot(result.normal) * result.normal).normalized();
+  result.v = result.normal.cross(result.u);
+
+  Eigen::AlignedBox3d box;
+  for (const Vec3& p : mesh.vertices) box.extend(p);
+  const double size = box.isEmpty() ? 1.0 : box.diagonal().norm();
+  const double near = 1e-9 * size;
+
+  std::array<FaceAxes, 5> axes;
+  for (int f = 0; f < 5; ++f) {
+    const HemicubeFace face = static_cast<HemicubeFace>(f);
+    axes[f] = axesOf(face);
+    HemicubeFaceBuffer& buffer = result.faces[f];
+    buffer.width = resolution;
+    buffer.height = heightOf(resolution, face);
+    buffer.element.assign(static_cast<std::size_t>(buffer.width) * buffer.height, -1);
+    buffer.depth.assign(buffer.element.size(), std::numeric_limits<float>::infinity());
+  }
+  // Inverse depths of the z-buffer (larger = nearer): affine in screen space, so no division per pixel.
+  std::array<std::vector<double>, 5> inverseDepth;
+  for (int f = 0; f < 5; ++f) inverseDepth[f].assign(result.faces[f].element.size(), 0.0);
+
+  const double eyeEps = 1e-12 * size;
+  for (int j = 0; j < static_cast<int>(mesh.size()); ++j) {
+    if (j == element) continue;
+    const Element& other = mesh.elements[j];
+    const Vec3& anchor = mesh.vertices[other.vertices[0]];
+    if (other.normal.dot(result.origin - anchor) <= eyeEps)
+      continue;  // back face (or edge-on) seen from the eye
+    // Local coordinates (u, v, normal) of the vertices.
+    std::array<Vec3, 8> local;
+    const int count = static_cast<int>(other.vertices.size());
+    bool above = false;
+    for (int k = 0; k < count; ++k) {
+      const Vec3 d = mesh.vertices[other.vertices[k]] - result.origin;
+      local[k] = Vec3(d.dot(result.u), d.dot(result.v), d.dot(result.normal));
+      above |= local[k].z() > near;
+    }
+    if (!above) continue;  // entirely below the horizon
+    // The plane of the element in local coordinates: m . p = c.
+    const Vec3 m(other.normal.dot(result.u), other.normal.dot(result.v), other.normal.dot(result.normal));
+    const double c = m.dot(local[0]);
+
+    for (int f = 0; f < 5; ++f) {
+      const FaceAxes& face = axes[f];
+      HemicubeFaceBuffer& buffer = result.faces[f];
+      // Face coordinates (across, up, depth), then clip against the near plane depth >= near.
+      std::array<Vec3, 16> in, clipped;
+      bool anyInFront = false;
+      for (int k = 0; k < count; ++k) {
+        in[k] = Vec3(local[k].dot(face.across), local[k].dot(face.up), local[k].dot(face.forward));
+        anyInFront |= in[k].z() > near;
+      }
+      if (!anyInFront) continue;
+      // Clip to the face's frustum (slightly widened: pixel centres lie at least half a pixel inside), so
+      // projected coordinates stay bounded; the near plane alone would leave points at depth ~0 projecting to
+      // ~1e9 pixels, where edge functions lose all precision.
+      constexpr double margin = 1e-3;
+      int n = count;
+      auto clipBy = [&](auto distance) {
+        int m = 0;
+        for (int k = 0; k < n; ++k) {
+          const Vec3& p = in[k];
+          const Vec3& q = in[(k + 1) % n];
+          const double dp = distance(p), dq = distance(q);
+          if (dp >= 0) clipped[m++] = p;
+          if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0)) clipped[m++] = p + (q - p) * (dp / (dp - dq));
+        }
+        n = m;
+        for (int k = 0; k < n; ++k) in[k] = clipped[k];
+      };
+      clipBy([&](const Vec3& p) { return p.z() - near; });
+      if (n >= 3) clipBy([&](const Vec3& p) { return (1 + margin) * p.z() - p.x(); });
+      if (n >= 3) clipBy([&](const Vec3& p) { return (1 + margin) * p.z() + p.x(); });
+      if (n >= 3) clipBy([&](const Vec3& p) { return (1 + margin) * p.z() - p.y(); });
+      if (n >= 3) clipBy([&](const Vec3& p) { return p.y() - (face.upMin - margin) * p.z(); });
+      if (n < 3) continue;
+      // Project to pixel units: x in [0, width), y in [0, height).
+      ProjectedPolygon projected;
+      const double sx = buffer.width / 2.0, sy = buffer.height / (1.0 - face.upMin);
+      double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
+      for (int k = 0; k < n; ++k) {
+        const double x = (clipped[k].x() / clipped[k].z() + 1.0) * sx;
+        const double y = (clipped[k].y() / clipped[k].z() - face.upMin) * sy;
+        projected.screen[k] = Vec2(x, y);
+        xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y),
+        ymax = std::max(ymax, y);
+      }
+      projected.count = n;
+      const int c0 = std::max(0, static_cast<int>(std::ceil(xmin - 0.5)));
+      const int c1 = std::min(buffer.width - 1, static_cast<int>(std::floor(xmax - 0.5)));
+      const int r0 = std::max(0, static_cast<int>(std::ceil(ymin - 0.5)));
+      const int r1 = std::min(buffer.height - 1, static_cast<int>(std::floor(ymax - 0.5)));
+      if (c0 > c1 || r0 > r1) continue;
+      // Plane in face coordinates: m_face . (X, Y, 1) * depth = c, so 1/depth = (m_face . (X, Y, 1)) / c with
+      // X = x / sx - 1, Y = y / sy + upMin.
+      const Vec3 mf(m.dot(face.across), m.dot(face.up), m.dot(face.forward));
+      if (c == 0) continue;
+      const double kx = mf.x() / (c * sx), ky = mf.y() / (c * sy);
+      const double k0 = (mf.z() - mf.x() + mf.y() * face.upMin) / c;
+      // Orientation of the projected polygon, so that inside means all edge functions >= 0.
+      double area2 = 0;
+      for (int k = 0; k < n; ++k) {
+        const Vec2& p = projected.screen[k];
+        const Vec2& q = projected.screen[(k + 1) % n];
+        area2 += p.x() * q.y() - q.x() * p.y();
+      }
+      if (area2 == 0) continue;
+      const double orientation = area2 > 0 ? 1.0 : -1.0;
+      std::array<double, 16> ea, eb, ec;  // edge functions e(x, y) = ea x + eb y + ec
+      for (int k = 0; k < n; ++k) {
+        const Vec2& p = projected.screen[k];
+        const Vec2& q = projected.screen[(k + 1) % n];
+        ea[k] = -(q.y() - p.y()) * orientation;
+        eb[k] = (q.x() - p.x()) * orientation;
+        ec[k] = -(ea[k] * p.x() + eb[k] * p.y());
+      }
+      std::vector<double>& zbuffer = inverseDepth[f];
+      for (int row = r0; row <= r1; ++row) {
+        const double y = row + 0.5;
+        // Span of the row: intersect the half-planes along x.
+        double lo = c0 + 0.5, hi = c1 + 0.5;
+        bool empty = false;
+        for (int k = 0; k < n && !empty; ++k) {
+          const double rest = eb[k] * y + ec[k];
+          if (ea[k] > 0)
+            lo = std::max(lo, -rest / ea[k]);
+          else if (ea[k] < 0)
+            hi = std::min(hi, -rest / ea[k]);
+          else if (rest < -1e-9)
+            empty = true;
+        }
+        if (empty) continue;
+        // A pixel centre exactly on an edge shared by two elements must not fall through both (rounding in
+        // the divisions above): widen the span by a hair; the z-buffer settles the double coverage.
+        lo -= 1e-7, hi += 1e-7;
+        const int first = std::max(c0, static_cast<int>(std::ceil(lo - 0.5)));
+        const int last = std::min(c1, static_cast<int>(std::floor(hi - 0.5)));
+        const std::size_t base = static_cast<std::size_t>(row) * buffer.width;
+        for (int column = first; column <= last; ++column) {
+          const double inverse = kx * (column + 0.5) + ky * y + k0;
+          double& current = zbuffer[base + column];
+          if (inverse > current) {
+            current = inverse;
+            buffer.element[base + column] = j;
+          }
+        }
+      }
+    }
+  }
+  for (int f = 0; f < 5; ++f) {
+    HemicubeFaceBuffer& buffer = result.faces[f];
+    for (std::size_t p = 0; p < buffer.element.size(); ++p)
+      if (buffer.element[p] >= 0) buffer.depth[p] = static_cast<float>(1.0 / inverseDepth[f][p]);
+  }
+  return result;
+}
+
+void accumulateHemicubeRow(const HemicubeFaces& faces, double* row) {
+  for (int f = 0; f < 5; ++f) {
+    const std::vector<double>& deltas = deltaFormFactors(faces.resolution, static_cast<HemicubeFace>(f));
+    const std::vector<int>& ids = faces.faces[f].element;
+    for (std::size_t p = 0; p < ids.size(); ++p)
+      if (ids[p] >= 0) row[ids[p]] += deltas[p];
+  }
+}
+
+}  // namespace rt

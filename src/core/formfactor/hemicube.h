@@ -1,0 +1,47 @@
+// The hemicube (Cohen & Greenberg 1985): a half cube of pixels around an element's centre. Every other
+// element is z-buffered onto its five faces; the form factor to element j is the sum of the delta form
+// factors of the pixels where j is nearest. Exposed piece by piece for the lessons: the face buffers of one
+// element and the delta form factors of a resolution.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/mesh.h"
+
+namespace rt {
+
+// Face order: top (along the normal), then the four sides +u, +v, -u, -v of the element's tangent frame.
+enum class HemicubeFace { Top = 0, PlusU = 1, PlusV = 2, MinusU = 3, MinusV = 4 };
+
+struct HemicubeFaceBuffer {
+  int width = 0, height = 0;  // top: res x res; sides: res x ceil(res/2) (rows from the horizon upwards)
+  std::vector<int> element;   // width * height, row-major; -1 where nothing is seen
+  std::vector<float> depth;   // distance along the face's axis, +inf where nothing is seen
+};
+
+struct HemicubeFaces {
+  int resolution = 0;
+  int element = -1;
+  Vec3 origin, u, v,
+      normal;  // eye (the element's centroid) and frame: top face along normal, sides along +-u, +-v
+  std::array<HemicubeFaceBuffer, 5> faces;
+};
+
+// Side faces have ceil(resolution / 2) rows, each 1 / rows high.
+int hemicubeSideRows(int resolution);
+
+// Delta form factors of one face at a resolution (row-major, same layout as the buffers). Each is the exact
+// form factor from the eye to the pixel's square (Lambert's formula), so all five faces together sum to 1 to
+// rounding at every resolution. Cached per resolution; thread-safe. Throws std::invalid_argument for
+// resolution < 2.
+const std::vector<double>& deltaFormFactors(int resolution, HemicubeFace face);
+
+// Renders the hemicube of `element`: pixel-centre coverage, near-plane clipping, z-buffer. Elements whose
+// back faces the eye, and the parts below the element's horizon, are not drawn.
+HemicubeFaces renderHemicube(const Mesh& mesh, int element, int resolution);
+
+// Row i of the form-factor matrix from a rendered hemicube: sums the delta form factors per visible element.
+void accumulateHemicubeRow(const HemicubeFaces& faces, double* row);
+
+}  // namespace rt

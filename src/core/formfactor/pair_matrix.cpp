@@ -1,0 +1,110 @@
+#include "core/formfactor/pair_matrix.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+
+namespace rt {
+
+bool elementsFaceEachOther(const Mesh& mesh, int i, int j) {
+  const Element& a = mesh.elements[i];
+  const Element& b = mesh.elements[j];
+  // Relative tolerance: vertices shared by abutting elements lie exactly on both planes.
+  const double eps = 1e-10 * std::sqrt(std::max(a.area, b.area));
+  auto anyInFront = [&](const Element& plane, const Element& other) {
+    const Vec3& origin = mesh.vertices[plane.vertices[0]];
+    for (int v : other.vertices)
+      if (plane.normal.dot(mesh.vertices[v] - origin) > eps) return true;
+    return false;
+  };
+  return anyInFront(a, b) && anyInFront(b, a);
+}
+
+void forEachRow(std::size_t rows, const FormFactorOptions& options, Progress& progress,
+                const std::string& stage, FormFactorStats& stats,
+                const std::function<void(int row, RowCounters& counters)>& rowFunction) {
+  const auto start = std::chrono::steady_clock::now();
+  std::atomic<bool> cancelled{false};
+  std::atomic<std::size_t> done{0};
+  std::mutex merge;
+  RowCounters total;
+  const std::size_t reportEvery = std::max<std::size_t>(1, rows / 100);
+  progress.report(0.0, stage);
+  auto body = [&](const tbb::blocked_range<std::size_t>& range) {
+    RowCounters local;
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      if (cancelled.load(std::memory_order_relaxed)) return;
+      if (progress.cancelled()) {
+        cancelled = true;
+        return;
+      }
+      rowFunction(static_cast<int>(i), local);
+      const std::size_t finished = done.fetch_add(1) + 1;
+      if (finished % reportEvery == 0) {
+        std::unique_lock lock(merge, std::try_to_lock);
+        if (lock.owns_lock()) progress.report(static_cast<double>(finished) / rows, stage);
+      }
+    }
+    std::lock_guard lock(merge);
+    total.pairsComputed += local.pairsComputed;
+    total.pairsSkippedFacing += local.pairsSkippedFacing;
+    total.pairsByReciprocity += local.pairsByReciprocity;
+    total.pairsUnoccluded += local.pairsUnoccluded;
+    total.raysCast += local.raysCast;
+    total.varianceSum += local.varianceSum;
+  };
+  const tbb::blocked_range<std::size_t> all(0, rows, 1);
+  if (options.threads > 0) {
+    tbb::task_arena arena(options.threads);
+    arena.execute([&] { tbb::parallel_for(all, body); });
+  } else {
+    tbb::parallel_for(all, body);
+  }
+  if (cancelled) throw Cancelled();
+  progress.report(1.0, stage);
+  stats.pairsComputed += total.pairsComputed;
+  stats.pairsSkippedFacing += total.pairsSkippedFacing;
+  stats.pairsByReciprocity += total.pairsByReciprocity;
+  stats.pairsUnoccluded += total.pairsUnoccluded;
+  stats.raysCast += total.raysCast;
+  const std::size_t entries = rows * rows;
+  if (total.varianceSum > 0 && entries > 0) stats.standardError = std::sqrt(total.varianceSum / entries);
+  stats.elements = rows;
+  stats.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+FormFactorMatrix computeReciprocalMatrix(const Mesh& mesh, const FormFactorOptions& options,
+                                         Progress& progress, FormFactorStats& stats, const std::string& stage,
+                                         const std::function<PairResult(int i, int j)>& pairFunction,
+                                         bool useSkipRules) {
+  const auto n = static_cast<Eigen::Index>(mesh.size());
+  FormFactorMatrix F = FormFactorMatrix::Zero(n, n);
+  forEachRow(mesh.size(), options, progress, stage, stats, [&](int i, RowCounters& counters) {
+    // Row i owns the pairs (i, j > i) and writes both F(i, j) and F(j, i): no two rows touch the same entry.
+    const int first = useSkipRules ? i + 1 : 0;
+    for (int j = first; j < n; ++j) {
+      if (j == i) continue;
+      if (useSkipRules && !elementsFaceEachOther(mesh, i, j)) {
+        ++counters.pairsSkippedFacing;
+        continue;
+      }
+      const PairResult result = pairFunction(i, j);
+      ++counters.pairsComputed;
+      counters.raysCast += result.rays;
+      if (!result.needsVisibility) ++counters.pairsUnoccluded;
+      F(i, j) = result.value;
+      if (useSkipRules) {
+        F(j, i) = result.value * mesh.elements[i].area / mesh.elements[j].area;
+        ++counters.pairsByReciprocity;
+      }
+    }
+  });
+  return F;
+}
+
+}  // namespace rt

@@ -1,0 +1,45 @@
+// Shared machinery of the form-factor methods: parallel rows with progress and cancellation, the facing test,
+// and the symmetric driver that integrates each pair once and derives the other direction by reciprocity.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+
+#include "core/formfactor/formfactor_method.h"
+
+namespace rt {
+
+// False when one element lies entirely on or behind the other's plane: then F_ij = F_ji = 0 without
+// integration.
+bool elementsFaceEachOther(const Mesh& mesh, int i, int j);
+
+// Counters a row accumulates locally and the driver adds into FormFactorStats.
+struct RowCounters {
+  std::size_t pairsComputed = 0, pairsSkippedFacing = 0, pairsByReciprocity = 0, pairsUnoccluded = 0,
+              raysCast = 0;
+  double varianceSum = 0;  // stochastic methods: sum over entries of the estimator variance
+};
+
+// Runs rowFunction(i, counters) for every row in parallel (TBB, options.threads), reports progress per chunk
+// of rows under `stage`, and throws Cancelled when progress.cancelled() (checked before each row).
+void forEachRow(std::size_t rows, const FormFactorOptions& options, Progress& progress,
+                const std::string& stage, FormFactorStats& stats,
+                const std::function<void(int row, RowCounters& counters)>& rowFunction);
+
+// The result of integrating one pair.
+struct PairResult {
+  double value = 0;              // F_ij
+  std::size_t rays = 0;          // rays cast for it
+  bool needsVisibility = false;  // false: the shaft test proved it unoccluded
+};
+
+// For methods whose pair integral is symmetric (analytic, raycast): computes F_ij for i < j only when the
+// elements face each other, sets F_ji = A_i F_ij / A_j. With `useSkipRules` false every ordered pair is
+// integrated (for tests that check the rules never change the answer).
+FormFactorMatrix computeReciprocalMatrix(const Mesh& mesh, const FormFactorOptions& options,
+                                         Progress& progress, FormFactorStats& stats, const std::string& stage,
+                                         const std::function<PairResult(int i, int j)>& pairFunction,
+                                         bool useSkipRules = true);
+
+}  // namespace rt

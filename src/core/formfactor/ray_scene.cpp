@@ -1,0 +1,136 @@
+#include "core/formfactor/ray_scene.h"
+
+#include <embree3/rtcore.h>
+
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace rt {
+namespace {
+
+// The context Embree hands to the filter: which two elements the current ray must pass through.
+struct IgnoringContext {
+  RTCIntersectContext base;
+  const std::vector<int>* primitiveElement;
+  int ignoreA, ignoreB;
+};
+
+void ignoreOwnElements(const RTCFilterFunctionNArguments* args) {
+  const auto* context = reinterpret_cast<const IgnoringContext*>(args->context);
+  for (unsigned k = 0; k < args->N; ++k) {
+    if (args->valid[k] == 0) continue;
+    const unsigned primitive = RTCHitN_primID(args->hit, args->N, k);
+    const int element = (*context->primitiveElement)[primitive];
+    if (element == context->ignoreA || element == context->ignoreB) args->valid[k] = 0;
+  }
+}
+
+}  // namespace
+
+struct RayScene::Impl {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  std::vector<int> primitiveElement;  // triangle -> element
+  std::vector<Vec3> normals;          // per element
+  float epsilon = 0;
+};
+
+RayScene::RayScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
+  Eigen::AlignedBox3d box;
+  for (const Vec3& v : mesh.vertices) box.extend(v);
+  size_ = box.isEmpty() ? 1.0 : std::max(box.diagonal().norm(), 1e-300);
+  impl_->epsilon = static_cast<float>(1e-6 * size_);
+  impl_->device = rtcNewDevice(nullptr);
+  if (!impl_->device) throw std::runtime_error("Embree: cannot create a device");
+  impl_->scene = rtcNewScene(impl_->device);
+  rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
+  RTCGeometry geometry = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+    for (int c = 0; c < 3; ++c) vertices[3 * v + c] = static_cast<float>(mesh.vertices[v][c]);
+  std::size_t triangles = 0;
+  for (const Element& e : mesh.elements) triangles += e.vertices.size() - 2;
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangles));
+  impl_->primitiveElement.reserve(triangles);
+  std::size_t t = 0;
+  for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
+    const auto& vs = mesh.elements[e].vertices;
+    for (std::size_t k = 1; k + 1 < vs.size(); ++k, ++t) {
+      indices[3 * t] = static_cast<unsigned>(vs[0]);
+      indices[3 * t + 1] = static_cast<unsigned>(vs[k]);
+      indices[3 * t + 2] = static_cast<unsigned>(vs[k + 1]);
+      impl_->primitiveElement.push_back(static_cast<int>(e));
+    }
+    impl_->normals.push_back(mesh.elements[e].normal);
+  }
+  rtcSetGeometryIntersectFilterFunction(geometry, ignoreOwnElements);
+  rtcSetGeometryOccludedFilterFunction(geometry, ignoreOwnElements);
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(impl_->scene, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(impl_->scene);
+}
+
+RayScene::~RayScene() {
+  if (impl_->scene) rtcReleaseScene(impl_->scene);
+  if (impl_->device) rtcReleaseDevice(impl_->device);
+}
+
+bool RayScene::visible(const Vec3& from, const Vec3& to, int ignoreA, int ignoreB) const {
+  const Vec3 d = to - from;
+  const double length = d.norm();
+  if (length == 0) return true;
+  IgnoringContext context;
+  rtcInitIntersectContext(&context.base);
+  context.primitiveElement = &impl_->primitiveElement;
+  context.ignoreA = ignoreA;
+  context.ignoreB = ignoreB;
+  RTCRay ray{};
+  ray.org_x = static_cast<float>(from.x());
+  ray.org_y = static_cast<float>(from.y());
+  ray.org_z = static_cast<float>(from.z());
+  ray.dir_x = static_cast<float>(d.x() / length);
+  ray.dir_y = static_cast<float>(d.y() / length);
+  ray.dir_z = static_cast<float>(d.z() / length);
+  // Both ends' own elements are filtered out; the epsilons only keep float rounding at the end points from
+  // registering grazing hits on their neighbours.
+  ray.tnear = impl_->epsilon;
+  ray.tfar = static_cast<float>(length) - impl_->epsilon;
+  ray.mask = 0xFFFFFFFFu;
+  ray.flags = 0;
+  if (!(ray.tfar > ray.tnear)) return true;
+  rtcOccluded1(impl_->scene, &context.base, &ray);
+  return ray.tfar >= 0;  // Embree sets tfar to -inf on a hit
+}
+
+RayHit RayScene::firstHit(const Vec3& origin, const Vec3& direction, int ignore) const {
+  IgnoringContext context;
+  rtcInitIntersectContext(&context.base);
+  context.primitiveElement = &impl_->primitiveElement;
+  context.ignoreA = ignore;
+  context.ignoreB = ignore;
+  RTCRayHit query{};
+  query.ray.org_x = static_cast<float>(origin.x());
+  query.ray.org_y = static_cast<float>(origin.y());
+  query.ray.org_z = static_cast<float>(origin.z());
+  query.ray.dir_x = static_cast<float>(direction.x());
+  query.ray.dir_y = static_cast<float>(direction.y());
+  query.ray.dir_z = static_cast<float>(direction.z());
+  query.ray.tnear = impl_->epsilon;
+  query.ray.tfar = std::numeric_limits<float>::infinity();
+  query.ray.mask = 0xFFFFFFFFu;
+  query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  query.hit.primID = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(impl_->scene, &context.base, &query);
+  RayHit hit;
+  if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
+  hit.element = impl_->primitiveElement[query.hit.primID];
+  hit.distance = query.ray.tfar;
+  hit.frontSide = impl_->normals[hit.element].dot(direction) < 0;
+  return hit;
+}
+
+}  // namespace rt

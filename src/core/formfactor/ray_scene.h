@@ -1,0 +1,37 @@
+// Visibility queries on a mesh with Embree 3: one scene of all elements as triangles. Public header: no
+// Embree types.
+#pragma once
+
+#include <memory>
+
+#include "core/mesh.h"
+
+namespace rt {
+
+struct RayHit {
+  int element = -1;  // -1: the ray escaped
+  double distance = 0;
+  bool frontSide = false;  // hit the side the element faces (the only side that receives)
+};
+
+class RayScene {
+ public:
+  explicit RayScene(const Mesh& mesh);
+  ~RayScene();
+  RayScene(const RayScene&) = delete;
+  RayScene& operator=(const RayScene&) = delete;
+
+  // True when the open segment from `from` to `to` crosses no element other than `ignoreA`/`ignoreB` (the two
+  // ends' own elements, which a ray leaving or reaching them must not count as occluders). Thread-safe.
+  bool visible(const Vec3& from, const Vec3& to, int ignoreA, int ignoreB) const;
+  // First element hit along origin + t direction (direction unit), skipping element `ignore`. Thread-safe.
+  RayHit firstHit(const Vec3& origin, const Vec3& direction, int ignore) const;
+  double sceneSize() const { return size_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  double size_ = 1;
+};
+
+}  // namespace rt

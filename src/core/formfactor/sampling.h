@@ -1,0 +1,37 @@
+// Deterministic random numbers and stratified points on elements for the stochastic form-factor methods.
+// Every element pair gets its own generator seeded from (seed, i, j), so results do not depend on thread
+// scheduling.
+#pragma once
+
+#include <cstdint>
+
+#include "core/vec.h"
+
+namespace rt {
+
+// SplitMix64: tiny, fast, statistically fine for sampling, and trivially seedable per pair.
+class PairRandom {
+ public:
+  PairRandom(std::uint64_t seed, std::uint64_t i, std::uint64_t j);
+  std::uint64_t next();
+  double uniform();  // in [0, 1)
+
+ private:
+  std::uint64_t state_;
+};
+
+// Sample k of n of a jittered grid over [0,1]^2 (ceil(sqrt n) columns): stratified, so errors fall faster
+// than 1/sqrt n for smooth integrands.
+Vec2 jitteredSample(int k, int n, PairRandom& random);
+
+// Maps (u, v) in [0,1]^2 to a uniformly distributed point on a convex polygon (fan triangles chosen by area
+// with u, then the square-to-triangle map), preserving stratification.
+Vec3 pointOnPolygon(const Vec3* polygon, int count, double u, double v);
+inline Vec3 pointOnPolygon(const Polygon& polygon, double u, double v) {
+  return pointOnPolygon(polygon.data(), static_cast<int>(polygon.size()), u, v);
+}
+
+// Cosine-distributed direction about `normal` from (u, v) in [0,1]^2 (Malley's method: uniform disk, lifted).
+Vec3 cosineDirection(const Vec3& normal, double u, double v);
+
+}  // namespace rt

@@ -1,0 +1,34 @@
+#include "core/formfactor/visibility.h"
+
+#include <stdexcept>
+
+#include "core/formfactor/sampling.h"
+
+namespace rt {
+
+ElementPolygon::ElementPolygon(const Mesh& mesh, int element) {
+  const auto& vs = mesh.elements[element].vertices;
+  if (vs.size() > v.size()) throw std::invalid_argument("element with more than 8 vertices");
+  for (int index : vs) v[count++] = mesh.vertices[index];
+}
+
+PairVisibility::PairVisibility(const Mesh& mesh)
+    : mesh_(mesh), shafts_(mesh), rays_(std::make_unique<RayScene>(mesh)) {}
+
+double PairVisibility::fraction(int i, int j, int samples, std::uint64_t seed) const {
+  const ElementPolygon a(mesh_, i), b(mesh_, j);
+  PairRandom random(seed ^ 0x5bd1e995ull, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(j));
+  const int shift = static_cast<int>(random.next() % static_cast<std::uint64_t>(samples));
+  int visible = 0;
+  for (int k = 0; k < samples; ++k) {
+    const Vec2 s = jitteredSample(k, samples, random);
+    // Pair stratum k on i with a shifted stratum on j so that the pairs do not line up.
+    const Vec2 t = jitteredSample((k + shift) % samples, samples, random);
+    const Vec3 x = pointOnPolygon(a.v.data(), a.count, s.x(), s.y());
+    const Vec3 y = pointOnPolygon(b.v.data(), b.count, t.x(), t.y());
+    visible += rays_->visible(x, y, i, j) ? 1 : 0;
+  }
+  return static_cast<double>(visible) / samples;
+}
+
+}  // namespace rt
