@@ -42,9 +42,7 @@ ComputationRunner::~ComputationRunner() {
   }
 }
 
-void ComputationRunner::start(const Scene& scene, const PipelineSettings& settings,
-                              const PipelineResult* previous) {
-  Job job{scene, settings, previous ? std::optional<PipelineResult>(*previous) : std::nullopt};
+void ComputationRunner::start(Job job) {
   if (thread_) {
     queued_ = std::move(job);
     cancel();
@@ -65,8 +63,7 @@ void ComputationRunner::launch(Job job) {
   auto progress = currentProgress_;
   thread_ = QThread::create([this, job = std::move(job), progress] {
     try {
-      outcome_ = std::make_shared<PipelineResult>(
-          runPipeline(job.scene, job.settings, *progress, job.previous ? &*job.previous : nullptr));
+      outcome_ = std::make_shared<PipelineResult>(job(*progress));
     } catch (const Cancelled&) {
       wasCancelled_ = true;
     } catch (const InputError& e) {
@@ -99,10 +96,9 @@ void ComputationRunner::onThreadDone() {
     emit finished(std::move(outcome_));
 }
 
-void ComputationRunner::runBlocking(const Scene& scene, const PipelineSettings& settings,
-                                    const PipelineResult* previous) {
+void ComputationRunner::runBlocking(const Job& job) {
   try {
-    auto result = std::make_shared<PipelineResult>(runPipeline(scene, settings, noProgress(), previous));
+    auto result = std::make_shared<PipelineResult>(job(noProgress()));
     emit finished(std::move(result));
   } catch (const Cancelled&) {
     emit cancelled();

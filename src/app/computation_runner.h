@@ -5,6 +5,7 @@
 
 #include <QObject>
 #include <QString>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -20,12 +21,16 @@ class ComputationRunner : public QObject {
   explicit ComputationRunner(QObject* parent = nullptr);
   ~ComputationRunner() override;
 
-  // `previous` lets the pipeline reuse F; it is copied (shared pointers), so it may change meanwhile.
-  void start(const Scene& scene, const PipelineSettings& settings, const PipelineResult* previous);
+  // A computation: everything it needs is captured by value, it reports to and polls the Progress it is
+  // given.
+  using Job = std::function<PipelineResult(Progress&)>;
+
+  // Starts `job` on a worker thread (or queues it behind the running one, which is cancelled).
+  void start(Job job);
   void cancel();
   bool busy() const { return thread_ != nullptr; }
   // Runs on the calling thread (screenshots, tests that need the result now). Emits the same signals.
-  void runBlocking(const Scene& scene, const PipelineSettings& settings, const PipelineResult* previous);
+  void runBlocking(const Job& job);
 
  signals:
   void progress(double fraction, const QString& stage);
@@ -35,11 +40,6 @@ class ComputationRunner : public QObject {
   void busyChanged(bool busy);
 
  private:
-  struct Job {
-    Scene scene;
-    PipelineSettings settings;
-    std::optional<PipelineResult> previous;
-  };
   void launch(Job job);
   void onThreadDone();
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "app/app_options.h"
+#include "app/lesson_session.h"
 #include "app/main_window.h"
 #include "app/screenshot.h"
 #include "app/vtk_widget.h"

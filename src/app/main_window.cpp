@@ -1,30 +1,53 @@
+// MainWindow: construction of the widgets, menus, shortcuts, presenter and compare modes, exports.
+// Navigation and results are in main_window_steps.cpp.
 #include "app/main_window.h"
 
+#include <QAction>
 #include <QApplication>
-#include <QElapsedTimer>
+#include <QCheckBox>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDockWidget>
 #include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QShortcut>
 #include <QSplitter>
 #include <QStatusBar>
-#include <QThread>
+#include <QTabWidget>
+#include <QTextBrowser>
+#include <QVBoxLayout>
 
-#include "app/builtin_scene.h"
+#include "app/contents_tree.h"
+#include "app/exports.h"
+#include "app/iteration_player.h"
+#include "app/lesson_session.h"
+#include "app/matrix_view.h"
+#include "app/parameter_panel.h"
+#include "app/residual_chart.h"
 #include "app/scene_view.h"
-#include "core/io/scene_loader.h"
+#include "core/formfactor/formfactor_method.h"
+#include "core/solvers/solver.h"
 
 namespace rt::app {
 
-MainWindow::MainWindow(const AppOptions& options, QWidget* parent) : QMainWindow(parent), options_(options) {
-  setWindowTitle("Radiosity Textbook");
+MainWindow::MainWindow(const AppOptions& options, std::unique_ptr<LessonLibrary> library, QWidget* parent)
+    : QMainWindow(parent), options_(options), library_(std::move(library)) {
+  setWindowTitle(tr("Radiosity Textbook"));
+  if (!library_) library_ = std::make_unique<LessonLibrary>(lesson::defaultFolders());
+  normalLook_ = currentLook();
   runner_ = new ComputationRunner(this);
   connect(runner_, &ComputationRunner::finished, this, &MainWindow::showResult);
   connect(runner_, &ComputationRunner::failed, this, &MainWindow::showError);
-  connect(runner_, &ComputationRunner::cancelled, this,
-          [this] { statusLabel_->setText("Cancelled: the previous result is still shown."); });
+  connect(runner_, &ComputationRunner::cancelled, this, [this] {
+    newStepPending_ = false;
+    statusLabel_->setText(tr("Cancelled: the previous result is still shown."));
+  });
   connect(runner_, &ComputationRunner::busyChanged, this, &MainWindow::setBusy);
   connect(runner_, &ComputationRunner::progress, this, [this](double fraction, const QString& stage) {
     progressBar_->setValue(static_cast<int>(fraction * 1000));
@@ -32,31 +55,148 @@ MainWindow::MainWindow(const AppOptions& options, QWidget* parent) : QMainWindow
   });
   buildUi();
   buildMenus();
+  buildShortcuts();
+  contents_->setLessons(library_->lessons());
   resize(options.size);
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  // The worker may be inside the lesson library: stop it before the library goes.
+  delete runner_;
+  runner_ = nullptr;
+  if (presenter_) applyLook(normalLook_);
+}
+
+bool MainWindow::busy() const {
+  return runner_ && runner_->busy();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  rememberPosition();
+  if (runner_) runner_->cancel();
+  QMainWindow::closeEvent(event);
+}
 
 void MainWindow::buildUi() {
-  viewSplitter_ = new QSplitter(Qt::Horizontal, this);
+  // Centre: the step's text | (views, player, chart and matrix).
+  auto* centre = new QSplitter(Qt::Horizontal, this);
+  auto* textPane = new QWidget(centre);
+  auto* textLayout = new QVBoxLayout(textPane);
+  textLayout->setContentsMargins(4, 4, 4, 4);
+  text_ = new QTextBrowser(textPane);
+  text_->setObjectName("stepText");
+  text_->setOpenExternalLinks(true);
+  auto* navigation = new QHBoxLayout();
+  backButton_ = new QPushButton(tr("< Back"), textPane);
+  nextButton_ = new QPushButton(tr("Next >"), textPane);
+  backButton_->setToolTip(tr("Previous step (Left, Page Up)"));
+  nextButton_->setToolTip(tr("Next step (Right, Page Down)"));
+  stepLabel_ = new QLabel(textPane);
+  stepLabel_->setAlignment(Qt::AlignCenter);
+  navigation->addWidget(backButton_);
+  navigation->addWidget(stepLabel_, 1);
+  navigation->addWidget(nextButton_);
+  textLayout->addWidget(text_, 1);
+  textLayout->addLayout(navigation);
+  connect(backButton_, &QPushButton::clicked, this, &MainWindow::previousStep);
+  connect(nextButton_, &QPushButton::clicked, this, &MainWindow::nextStep);
+
+  auto* right = new QSplitter(Qt::Vertical, centre);
+  viewSplitter_ = new QSplitter(Qt::Horizontal, right);
   primaryView_ = new SceneView(viewSplitter_);
+  primaryView_->setObjectName("primaryView");
   secondaryView_ = new SceneView(viewSplitter_);
+  secondaryView_->setObjectName("secondaryView");
   secondaryView_->hide();
-  viewSplitter_->addWidget(primaryView_);
-  viewSplitter_->addWidget(secondaryView_);
-  setCentralWidget(viewSplitter_);
+  auto* lower = new QWidget(right);
+  auto* lowerLayout = new QVBoxLayout(lower);
+  lowerLayout->setContentsMargins(0, 0, 0, 0);
+  player_ = new IterationPlayer(lower);
+  tabs_ = new QTabWidget(lower);
+  chart_ = new ResidualChart(tabs_);
+  matrix_ = new MatrixView(tabs_);
+  tabs_->addTab(chart_, tr("Convergence"));
+  tabs_->addTab(matrix_, tr("Form factors F"));
+  lowerLayout->addWidget(player_);
+  lowerLayout->addWidget(tabs_, 1);
+  right->addWidget(viewSplitter_);
+  right->addWidget(lower);
+  right->setStretchFactor(0, 3);
+  right->setStretchFactor(1, 1);
+  right->setSizes({620, 380});  // proportions: the 3D view gets most of the height
+  centre->addWidget(textPane);
+  centre->addWidget(right);
+  centre->setStretchFactor(0, 2);
+  centre->setStretchFactor(1, 5);
+  centre->setSizes({380, 900});
+  setCentralWidget(centre);
+
+  // The shared camera of compare mode: whichever view the reader moves, the other follows.
+  connect(primaryView_, &VtkWidget::cameraInteraction, this, [this] {
+    if (compare_) secondaryView_->syncCameraFrom(*primaryView_);
+  });
+  connect(secondaryView_, &VtkWidget::cameraInteraction, this, [this] {
+    if (compare_) primaryView_->syncCameraFrom(*secondaryView_);
+  });
+  connect(player_, &IterationPlayer::currentChanged, this, &MainWindow::showIteration);
+  connect(primaryView_, &SceneView::elementPicked, this, [this](int e) { selectElements(e, -1); });
+  connect(secondaryView_, &SceneView::elementPicked, this, [this](int e) { selectElements(e, -1); });
+  connect(matrix_, &MatrixView::elementsSelected, this, &MainWindow::selectElements);
+
+  // Left: contents. Right: parameters and compare.
+  contents_ = new ContentsTree(this);
+  contentsDock_ = new QDockWidget(tr("Contents"), this);
+  contentsDock_->setObjectName("contentsDock");
+  contentsDock_->setWidget(contents_);
+  addDockWidget(Qt::LeftDockWidgetArea, contentsDock_);
+  connect(contents_, &ContentsTree::stepActivated, this, [this](int l, int s) { openStep(l, s); });
+
+  auto* side = new QWidget(this);
+  auto* sideLayout = new QVBoxLayout(side);
+  panel_ = new ParameterPanel(side);
+  connect(panel_, &ParameterPanel::parametersChanged, this, &MainWindow::applyParameters);
+  auto* compareForm = new QFormLayout();
+  compareBox_ = new QCheckBox(tr("Compare side by side"), side);
+  compareSolver_ = new QComboBox(side);
+  compareMethod_ = new QComboBox(side);
+  compareSolver_->addItem(tr("(same solver)"));
+  for (const auto& n : solverNames()) compareSolver_->addItem(QString::fromStdString(n));
+  compareMethod_->addItem(tr("(same method)"));
+  for (const auto& n : formFactorMethodNames()) compareMethod_->addItem(QString::fromStdString(n));
+  if (compareSolver_->findText("jacobi") >= 0) compareSolver_->setCurrentText("jacobi");
+  compareForm->addRow(compareBox_);
+  compareForm->addRow(tr("Right pane solver"), compareSolver_);
+  compareForm->addRow(tr("Right pane form factors"), compareMethod_);
+  sideLayout->addWidget(panel_);
+  sideLayout->addLayout(compareForm);
+  sideLayout->addStretch(1);
+  connect(compareBox_, &QCheckBox::toggled, this, &MainWindow::setCompareMode);
+  auto recompareIfOn = [this] {
+    if (compare_) requestComputation();
+  };
+  connect(compareSolver_, &QComboBox::currentTextChanged, this, recompareIfOn);
+  connect(compareMethod_, &QComboBox::currentTextChanged, this, recompareIfOn);
+  parametersDock_ = new QDockWidget(tr("Parameters"), this);
+  parametersDock_->setObjectName("parametersDock");
+  parametersDock_->setWidget(side);
+  addDockWidget(Qt::RightDockWidgetArea, parametersDock_);
 
   statusLabel_ = new QLabel(this);
   progressBar_ = new QProgressBar(this);
   progressBar_->setRange(0, 1000);
-  progressBar_->setMaximumWidth(320);
+  progressBar_->setMaximumWidth(360);
   progressBar_->hide();
   cancelButton_ = new QPushButton(tr("Cancel"), this);
+  cancelButton_->setObjectName("cancelButton");
   cancelButton_->hide();
   connect(cancelButton_, &QPushButton::clicked, this, &MainWindow::cancelComputation);
   statusBar()->addWidget(statusLabel_, 1);
   statusBar()->addPermanentWidget(progressBar_);
   statusBar()->addPermanentWidget(cancelButton_);
+}
+
+QString MainWindow::exportFileDialog(const QString& title, const QString& filters) {
+  return QFileDialog::getSaveFileName(this, title, QString(), filters);
 }
 
 void MainWindow::buildMenus() {
@@ -66,80 +206,195 @@ void MainWindow::buildMenus() {
                                                       tr("Scenes (*.json *.obj);;All files (*)"));
     if (!path.isEmpty()) openScene(path);
   });
+  file->addAction(tr("Open the built-in &Cornell box"), this, [this] { openScene(QString()); });
+  file->addSeparator();
+  file->addAction(tr("Export &view (PNG, SVG, PDF)..."), QKeySequence(tr("Ctrl+E")), this, [this] {
+    const QString path = exportFileDialog(tr("Export view"), tr("PNG (*.png);;SVG (*.svg);;PDF (*.pdf)"));
+    if (!path.isEmpty()) exportView(path);
+  });
+  const QString matrixFilters = tr("CSV (*.csv);;Matrix Market (*.mtx);;NumPy (*.npy);;LaTeX (*.tex)");
+  file->addAction(tr("Export form factors &F..."), this, [this, matrixFilters] {
+    const QString path = exportFileDialog(tr("Export F"), matrixFilters);
+    if (!path.isEmpty()) exportMatrixFile("F", path);
+  });
+  file->addAction(tr("Export matrix &K = I - diag(rho) F..."), this, [this, matrixFilters] {
+    const QString path = exportFileDialog(tr("Export K"), matrixFilters);
+    if (!path.isEmpty()) exportMatrixFile("K", path);
+  });
+  file->addAction(tr("Export radiosity &B..."), this, [this, matrixFilters] {
+    const QString path = exportFileDialog(tr("Export B"), matrixFilters);
+    if (!path.isEmpty()) exportMatrixFile("B", path);
+  });
+  file->addAction(tr("Export &all figures of this lesson..."), this, [this] {
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Folder for the figures"));
+    if (!folder.isEmpty()) exportAllFigures(folder);
+  });
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+  QMenu* go = menuBar()->addMenu(tr("&Go"));
+  go->addAction(tr("&Next step"), this, &MainWindow::nextStep);
+  go->addAction(tr("&Previous step"), this, &MainWindow::previousStep);
+  go->addAction(tr("Play / &pause iterations"), player_, &IterationPlayer::togglePlay);
+  go->addAction(tr("Next &iteration"), player_, &IterationPlayer::next);
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  presenterAction_ = view->addAction(tr("&Presenter mode"));
+  presenterAction_->setCheckable(true);
+  presenterAction_->setShortcut(QKeySequence(Qt::Key_F11));
+  presenterAction_->setShortcutContext(Qt::ApplicationShortcut);
+  connect(presenterAction_, &QAction::toggled, this, &MainWindow::setPresenterMode);
+  addAction(presenterAction_);  // keeps F11 working while the menu bar is hidden
+  compareAction_ = view->addAction(tr("&Compare side by side"));
+  compareAction_->setCheckable(true);
+  connect(compareAction_, &QAction::toggled, this, &MainWindow::setCompareMode);
+  QAction* edges = view->addAction(tr("Show mesh &edges"));
+  edges->setCheckable(true);
+  connect(edges, &QAction::toggled, this, [this](bool on) {
+    primaryView_->setShowEdges(on);
+    secondaryView_->setShowEdges(on);
+  });
+  view->addAction(tr("Text &larger"), QKeySequence::ZoomIn, this, [this] { text_->zoomIn(2); });
+  view->addAction(tr("Text &smaller"), QKeySequence::ZoomOut, this, [this] { text_->zoomOut(2); });
+  view->addSeparator();
+  view->addAction(contentsDock_->toggleViewAction());
+  view->addAction(parametersDock_->toggleViewAction());
+
+  QMenu* help = menuBar()->addMenu(tr("&Help"));
+  help->addAction(tr("&Keys"), this, [this] {
+    QMessageBox::information(
+        this, tr("Keys"),
+        tr("Right / Page Down: next step\nLeft / Page Up: previous step\nSpace: play or pause "
+           "the iterations\nN: next iteration\nF11: presenter mode (Esc leaves it)\n"
+           "Ctrl + / Ctrl -: text size\nClick an element: select it (and its row of F)"));
+  });
 }
 
-bool MainWindow::start() {
-  if (!options_.scene.isEmpty()) return openScene(options_.scene);
-  return openScene(QString());
+void MainWindow::buildShortcuts() {
+  auto add = [this](const QKeySequence& key, auto slot) {
+    auto* shortcut = new QShortcut(key, this);
+    shortcut->setContext(Qt::WindowShortcut);
+    connect(shortcut, &QShortcut::activated, this, slot);
+  };
+  add(QKeySequence(Qt::Key_Right), [this] { nextStep(); });
+  add(QKeySequence(Qt::Key_PageDown), [this] { nextStep(); });
+  add(QKeySequence(Qt::Key_Left), [this] { previousStep(); });
+  add(QKeySequence(Qt::Key_PageUp), [this] { previousStep(); });
+  add(QKeySequence(Qt::Key_Space), [this] { player_->togglePlay(); });
+  add(QKeySequence(Qt::Key_N), [this] { player_->next(); });
+  add(QKeySequence(Qt::Key_Escape), [this] {
+    if (presenter_) setPresenterMode(false);
+  });
 }
 
-bool MainWindow::openScene(const QString& path) {
+void MainWindow::setCompareMode(bool on) {
+  if (compare_ == on) return;
+  compare_ = on;
+  {
+    const QSignalBlocker a(compareBox_), b(compareAction_);
+    compareBox_->setChecked(on);
+    compareAction_->setChecked(on);
+  }
+  secondaryView_->setVisible(on);
+  if (on) secondaryView_->syncCameraFrom(*primaryView_);
+  if (mode_ != Mode::None) requestComputation();
+}
+
+void MainWindow::setPresenterMode(bool on) {
+  if (presenter_ == on) return;
+  presenter_ = on;
+  {
+    const QSignalBlocker block(presenterAction_);
+    presenterAction_->setChecked(on);
+  }
+  if (on) {
+    normalLook_ = currentLook();
+    applyPresenterLook(normalLook_);
+    text_->zoomIn(4);
+    menuBar()->hide();
+    statusBar()->hide();
+    contentsDock_->hide();
+    parametersDock_->hide();
+    showFullScreen();
+  } else {
+    applyLook(normalLook_);
+    text_->zoomOut(4);
+    menuBar()->show();
+    statusBar()->show();
+    contentsDock_->show();
+    parametersDock_->show();
+    showNormal();
+  }
+  chart_->setLargeFonts(on);
+}
+
+bool MainWindow::exportView(const QString& path) {
+  if (!result_ || !result_->mesh) {
+    showError(tr("There is no view to export yet."));
+    return false;
+  }
   try {
-    scene_ = path.isEmpty() ? builtinCornellBox() : loadScene(path.toStdString());
+    viz::SceneViewOptions options = primaryView_->viewOptions();
+    options.image.width = std::max(primaryView_->width(), 640);
+    options.image.height = std::max(primaryView_->height(), 480);
+    exportSceneFigure(*result_->mesh, primaryView_->currentCamera(), primaryView_->viewData(), options,
+                      path.toStdString());
+    statusLabel_->setText(tr("View written to %1").arg(path));
+    return true;
   } catch (const std::exception& e) {
     showError(QString::fromStdString(e.what()));
     return false;
   }
-  settings_ = PipelineSettings{};
-  settings_.mesh.mode = MeshOptions::Mode::Count;
-  settings_.mesh.count = 4;
-  result_.reset();
-  primaryView_->setMesh(nullptr, {}, false);
-  recompute(settings_);
-  return true;
 }
 
-void MainWindow::recompute(const PipelineSettings& settings) {
-  settings_ = settings;
-  lastError_.clear();
-  if (blocking_)
-    runner_->runBlocking(scene_, settings_, result_.get());
-  else
-    runner_->start(scene_, settings_, result_.get());
-}
-
-void MainWindow::cancelComputation() {
-  runner_->cancel();
-}
-
-bool MainWindow::waitUntilIdle(int timeoutMs) {
-  QElapsedTimer timer;
-  timer.start();
-  while (runner_->busy()) {
-    if (timer.elapsed() > timeoutMs) return false;
-    QApplication::processEvents(QEventLoop::AllEvents, 50);
-    QThread::msleep(5);
+bool MainWindow::exportMatrixFile(const QString& which, const QString& path) {
+  if (!result_) {
+    showError(tr("There is nothing to export yet."));
+    return false;
   }
-  QApplication::processEvents();
-  return true;
+  try {
+    exportMatrix(*result_, which.toStdString(), path.toStdString());
+    statusLabel_->setText(tr("%1 written to %2").arg(which, path));
+    return true;
+  } catch (const std::exception& e) {
+    showError(QString::fromStdString(e.what()));
+    return false;
+  }
 }
 
-void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
-  const bool newMesh = !result_ || result_->mesh->geometryHash() != result->mesh->geometryHash();
-  result_ = std::move(result);
-  const Camera camera = result_->scene->cameraOrDefault();
-  primaryView_->setRadiosity(result_->B);
-  primaryView_->setMesh(result_->mesh.get(), camera, newMesh);
-  QString text =
-      QString("%1: %2 elements").arg(QString::fromStdString(result_->scene->name)).arg(result_->mesh->size());
-  if (!result_->solverName.empty())
-    text += QString(", %1: %2 after %3 iterations, residual %4")
-                .arg(QString::fromStdString(result_->solverName),
-                     QString::fromStdString(toString(result_->status)))
-                .arg(result_->iterations)
-                .arg(result_->residual, 0, 'g', 3);
-  if (result_->formFactorsReused) text += ", form factors reused";
-  if (!result_->note.empty()) text += " (" + QString::fromStdString(result_->note) + ")";
-  statusLabel_->setText(text);
-  emit resultShown();
+bool MainWindow::exportAllFigures(const QString& folder) {
+  if (mode_ != Mode::Lesson || lesson_ < 0) {
+    showError(tr("Open a lesson first: its figures are written one per step."));
+    return false;
+  }
+  if (busy()) {
+    showError(tr("Wait for the current computation to finish (or cancel it) first."));
+    return false;
+  }
+  // Runs on the GUI thread with events processed between steps: the figures use offscreen VTK windows, which
+  // must not be created on a worker thread.
+  QApplication::setOverrideCursor(Qt::WaitCursor);
+  bool ok = true;
+  try {
+    const int written = exportLessonFigures(
+        *library_, lesson_, folder.toStdString(), 1200, 900, noProgress(), [this](int s, int n) {
+          statusLabel_->setText(tr("Writing the figures of step %1 of %2...").arg(s + 1).arg(n));
+          QApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
+        });
+    statusLabel_->setText(tr("%1 figures written to %2").arg(written).arg(folder));
+  } catch (const std::exception& e) {
+    showError(QString::fromStdString(e.what()));
+    ok = false;
+  }
+  QApplication::restoreOverrideCursor();
+  return ok;
 }
 
 void MainWindow::showError(const QString& message) {
   lastError_ = message;
+  newStepPending_ = false;
   statusLabel_->setText(tr("Error: %1").arg(message));
-  if (options_.screenshot.isEmpty() && isVisible())
+  if (options_.screenshot.isEmpty() && isVisible() && !blocking_)
     QMessageBox::warning(this, tr("Radiosity Textbook"), message);
 }
 

@@ -1,6 +1,6 @@
-// The main window: the lesson text beside the step's views, the table of contents, the iteration player, the
-// residual chart, the matrix view and the parameter controls. It owns no computation: the pipeline runs in a
-// ComputationRunner and results arrive as PipelineResult.
+// The main window: the table of contents, the step's text beside its views, the iteration player and residual
+// chart, the form-factor matrix, the parameter controls and compare mode. It owns no computation: steps and
+// scenes are computed by a ComputationRunner on a worker thread and arrive as PipelineResult.
 #pragma once
 
 #include <QMainWindow>
@@ -9,63 +9,142 @@
 #include "app/app_options.h"
 #include "app/computation_runner.h"
 #include "app/pipeline.h"
+#include "app/presenter_style.h"
+#include "lesson/lesson.h"
 
+class QAction;
+class QCheckBox;
+class QComboBox;
+class QDockWidget;
 class QLabel;
 class QProgressBar;
 class QPushButton;
 class QSplitter;
+class QTabWidget;
+class QTextBrowser;
 
 namespace rt::app {
 
+class ContentsTree;
+class IterationPlayer;
+class LessonLibrary;
+class MatrixView;
+class ParameterPanel;
+class ResidualChart;
 class SceneView;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
  public:
-  explicit MainWindow(const AppOptions& options, QWidget* parent = nullptr);
+  // `library` null: lessons from lesson::defaultFolders().
+  explicit MainWindow(const AppOptions& options, std::unique_ptr<LessonLibrary> library = nullptr,
+                      QWidget* parent = nullptr);
   ~MainWindow() override;
 
-  // Opens what the options ask for (a lesson step, a scene, or the last position). False on error
-  // (lastError()).
+  // Opens what the options ask for: a scene, a lesson step, the remembered position, or the welcome lesson.
+  // False on error (lastError()).
   bool start();
-  // Opens a scene file (or the built-in Cornell box when `path` is empty) with default settings and solves
-  // it.
+  // A lesson by id at a 0-based step; false (lastError()) when there is no such lesson or step.
+  bool openLesson(const QString& id, int step = 0);
+  bool openStep(int lessonIndex, int step);
+  bool nextStep();
+  bool previousStep();
+  // Opens a scene file (empty: the built-in Cornell box) and solves it with every control enabled.
   bool openScene(const QString& path);
-  // Recomputes the current scene with `settings` (reusing F when only materials or the light changed).
-  void recompute(const PipelineSettings& settings);
+
+  // Recomputes the current step or scene with changed parameters (F is reused when only light/materials
+  // changed).
+  void applyParameters(const lesson::StepParameters& parameters);
   void cancelComputation();
   // Blocks (processing events) until no computation runs; false on timeout.
-  bool waitUntilIdle(int timeoutMs = 60000);
+  bool waitUntilIdle(int timeoutMs = 120000);
   // Computations run on the calling thread (screenshots, deterministic tests).
   void setBlockingComputations(bool blocking) { blocking_ = blocking; }
 
+  void setCompareMode(bool on);
+  bool compareMode() const { return compare_; }
+  void setPresenterMode(bool on);
+  bool presenterMode() const { return presenter_; }
+
+  // Exports (errors go to lastError() and a message box when visible; false then).
+  bool exportView(const QString& path);
+  bool exportMatrixFile(const QString& which, const QString& path);  // which: F, K or B
+  bool exportAllFigures(const QString& folder);
+
+  // State for tests and the status bar.
   const PipelineResult* result() const { return result_.get(); }
+  int currentLesson() const { return lesson_; }
+  int currentStep() const { return step_; }
+  LessonLibrary* library() const { return library_.get(); }
+  const QString& lastError() const { return lastError_; }
+  bool busy() const;
   SceneView* primaryView() const { return primaryView_; }
   SceneView* secondaryView() const { return secondaryView_; }
-  const QString& lastError() const { return lastError_; }
-  bool busy() const { return runner_->busy(); }
+  QTextBrowser* textView() const { return text_; }
+  IterationPlayer* player() const { return player_; }
+  ResidualChart* residualChart() const { return chart_; }
+  MatrixView* matrixView() const { return matrix_; }
+  ParameterPanel* parameterPanel() const { return panel_; }
+  ContentsTree* contents() const { return contents_; }
 
  signals:
   void resultShown();
 
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+
  private:
+  enum class Mode { None, Lesson, Scene };
   void buildUi();
   void buildMenus();
+  void buildShortcuts();
+  void requestComputation();
   void showResult(std::shared_ptr<const PipelineResult> result);
+  void showIteration(int index);
+  void selectElements(int first, int second);
   void showError(const QString& message);
   void setBusy(bool busy);
+  void updateNavigation();
+  void rememberPosition();
+  void applyStepDisplay(const lesson::Step* step);
+  QString exportFileDialog(const QString& title, const QString& filters);
 
   AppOptions options_;
+  std::unique_ptr<LessonLibrary> library_;
   ComputationRunner* runner_ = nullptr;
   bool blocking_ = false;
+  Mode mode_ = Mode::None;
+  int lesson_ = -1;
+  int step_ = -1;
+  lesson::StepParameters parameters_;
+  bool newStepPending_ = false;
   Scene scene_;
-  PipelineSettings settings_;
   std::shared_ptr<const PipelineResult> result_;
   QString lastError_;
+  bool compare_ = false;
+  bool presenter_ = false;
+  AppLook normalLook_;
 
+  ContentsTree* contents_ = nullptr;
+  QTextBrowser* text_ = nullptr;
+  QLabel* stepLabel_ = nullptr;
+  QPushButton* backButton_ = nullptr;
+  QPushButton* nextButton_ = nullptr;
   SceneView* primaryView_ = nullptr;
   SceneView* secondaryView_ = nullptr;
   QSplitter* viewSplitter_ = nullptr;
+  IterationPlayer* player_ = nullptr;
+  ResidualChart* chart_ = nullptr;
+  MatrixView* matrix_ = nullptr;
+  QTabWidget* tabs_ = nullptr;
+  ParameterPanel* panel_ = nullptr;
+  QCheckBox* compareBox_ = nullptr;
+  QComboBox* compareSolver_ = nullptr;
+  QComboBox* compareMethod_ = nullptr;
+  QDockWidget* contentsDock_ = nullptr;
+  QDockWidget* parametersDock_ = nullptr;
+  QAction* presenterAction_ = nullptr;
+  QAction* compareAction_ = nullptr;
   QLabel* statusLabel_ = nullptr;
   QProgressBar* progressBar_ = nullptr;
   QPushButton* cancelButton_ = nullptr;

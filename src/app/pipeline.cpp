@@ -56,6 +56,35 @@ RgbField ambientEstimate(const Mesh& mesh) {
   return B;
 }
 
+void solveWithHistory(PipelineResult& result, const std::string& requestedSolver, SolverOptions options,
+                      Progress& progress) {
+  const Mesh& mesh = *result.mesh;
+  result.solverName = requestedSolver.empty() ? chooseSolver(mesh.size()) : requestedSolver;
+  std::unique_ptr<Solver> solver;
+  try {
+    solver = makeSolver(result.solverName);
+  } catch (const std::invalid_argument& e) {
+    result.note = std::string(e.what()) + ": showing direct light plus an ambient estimate";
+    result.B = ambientEstimate(mesh);
+    return;
+  }
+  options.recordHistory = true;
+  solver->setOptions(options);
+  solver->setProgress(&progress);
+  const int cap = std::max(1, options.maxIterations);
+  const std::string stage = "solve (" + result.solverName + ")";
+  solver->setObserver([&](const IterationRecord& r) {
+    progress.report(std::min(1.0, static_cast<double>(r.iteration) / cap), stage);
+  });
+  const RadiositySystem system = RadiositySystem::fromMesh(mesh, *result.F);
+  progress.report(0.0, stage);
+  result.B = solver->compute(system).solve();
+  result.history = solver->history();
+  result.status = solver->info();
+  result.iterations = solver->iterations();
+  result.residual = system.relativeResidual(result.B);
+}
+
 PipelineResult runPipeline(const Scene& input, const PipelineSettings& settings, Progress& progress,
                            const PipelineResult* previous) {
   PipelineResult result;
@@ -64,6 +93,8 @@ PipelineResult runPipeline(const Scene& input, const PipelineSettings& settings,
   progress.report(0.0, "mesh");
   auto mesh = std::make_shared<Mesh>(buildMesh(*scene, settings.mesh));
   result.mesh = mesh;
+  result.camera = scene->cameraOrDefault();
+  result.title = scene->name;
   if (progress.cancelled()) throw Cancelled();
 
   result.formFactorKey = formFactorKey(*mesh, settings);
@@ -89,31 +120,7 @@ PipelineResult runPipeline(const Scene& input, const PipelineSettings& settings,
     return result;
   }
 
-  result.solverName = settings.solver.empty() ? chooseSolver(mesh->size()) : settings.solver;
-  std::unique_ptr<Solver> solver;
-  try {
-    solver = makeSolver(result.solverName);
-  } catch (const std::invalid_argument& e) {
-    result.note = std::string(e.what()) + ": showing direct light plus an ambient estimate";
-    result.B = ambientEstimate(*mesh);
-    return result;
-  }
-  SolverOptions options = settings.solverOptions;
-  options.recordHistory = true;
-  solver->setOptions(options);
-  solver->setProgress(&progress);
-  const int cap = std::max(1, options.maxIterations);
-  solver->setObserver([&](const IterationRecord& r) {
-    progress.report(std::min(1.0, static_cast<double>(r.iteration) / cap),
-                    "solve (" + result.solverName + ")");
-  });
-  const RadiositySystem system = RadiositySystem::fromMesh(*mesh, *result.F);
-  progress.report(0.0, "solve (" + result.solverName + ")");
-  result.B = solver->compute(system).solve();
-  result.history = solver->history();
-  result.status = solver->info();
-  result.iterations = solver->iterations();
-  result.residual = system.relativeResidual(result.B);
+  solveWithHistory(result, settings.solver, settings.solverOptions, progress);
   return result;
 }
 

@@ -40,6 +40,15 @@ struct PipelineResult {
   int iterations = 0;
   double residual = 0;
   std::string note;  // why the result is an approximation, when it is one
+  Camera camera;
+  // Lesson steps: the title, the step's text with its placeholders filled in, and what the step runner
+  // returned.
+  std::string title;
+  std::string text;
+  std::shared_ptr<const void>
+      stepResult;  // a lesson::StepResult (kept opaque so that core users need no lesson)
+  // Compare mode: the same scene with the compared settings (another solver or form-factor method).
+  std::shared_ptr<const PipelineResult> compared;
 
   bool valid() const { return mesh != nullptr; }
 };
@@ -50,6 +59,11 @@ Scene applyOverrides(const Scene& scene, const PipelineSettings& settings);
 // Direct light plus the classic ambient term: B_i = E_i + rho_i * ambient, ambient = (sum E A / sum A) / (1 -
 // rho_avg). Shown when no form-factor method or solver is available, so that the view is never empty.
 RgbField ambientEstimate(const Mesh& mesh);
+
+// Solves result.mesh with result.F, recording the history for replay; fills B, history, status, iterations,
+// residual and solverName (falls back to the ambient estimate, with a note, when the solver is unknown).
+void solveWithHistory(PipelineResult& result, const std::string& solverName, SolverOptions options,
+                      Progress& progress);
 
 // May throw Cancelled (then nothing of `previous` is touched) and InputError.
 PipelineResult runPipeline(const Scene& scene, const PipelineSettings& settings, Progress& progress,

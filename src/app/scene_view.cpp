@@ -6,6 +6,7 @@
 #include <vtkCellData.h>
 #include <vtkCellPicker.h>
 #include <vtkIntArray.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -13,17 +14,22 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
+#include "viz/vtk_render.h"
+#include "viz/vtk_views.h"
+
 namespace rt::app {
 
 SceneView::SceneView(QWidget* parent) : VtkWidget(parent) {
-  renderer()->SetBackground(0.12, 0.12, 0.14);
+  renderer()->SetBackground(viz::kBackground[0], viz::kBackground[1], viz::kBackground[2]);
   mapper_ = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper_->SetScalarModeToUseCellData();
+  mapper_->SetScalarModeToUsePointData();
   mapper_->SetColorModeToDirectScalars();
   actor_ = vtkSmartPointer<vtkActor>::New();
   actor_->SetMapper(mapper_);
   // Radiosity is the colour: no lighting on top of it.
   actor_->GetProperty()->SetLighting(false);
+  actor_->GetProperty()->BackfaceCullingOn();
+  actor_->GetProperty()->SetInterpolationToFlat();
   actor_->GetProperty()->SetEdgeColor(0.2, 0.2, 0.2);
   actor_->VisibilityOff();
   renderer()->AddActor(actor_);
@@ -59,9 +65,8 @@ void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera
     requestRender();
     return;
   }
-  if (B_.rows() != static_cast<Eigen::Index>(mesh_->size())) B_ = mesh_->emission;
-  polyData_ = makeRadiosityPolyData(*mesh_, B_, display_);
-  mapper_->SetInputData(polyData_);
+  if (data_.B.rows() != static_cast<Eigen::Index>(mesh_->size())) data_.B = mesh_->emission;
+  repaint3d();
   actor_->VisibilityOn();
   rebuildHighlight();
   if (resetCamera) applyCamera(camera);
@@ -79,20 +84,44 @@ void SceneView::applyCamera(const Camera& c) {
 }
 
 void SceneView::setRadiosity(const RgbField& B) {
-  B_ = B;
+  data_.B = B;
   if (!mesh_ || B.rows() != static_cast<Eigen::Index>(mesh_->size())) return;
-  polyData_ = makeRadiosityPolyData(*mesh_, B_, display_);
-  mapper_->SetInputData(polyData_);
+  repaint3d();
   requestRender();
 }
 
-void SceneView::setDisplayOptions(const DisplayOptions& options) {
-  display_ = options;
-  if (mesh_) setRadiosity(B_);
+void SceneView::setViewOptions(const viz::SceneViewOptions& options) {
+  options_ = options;
+  actor_->GetProperty()->SetInterpolation(options_.image.smooth ? VTK_GOURAUD : VTK_FLAT);
+  setShowEdges(options_.image.showEdges);
+  if (mesh_) repaint3d();
+  requestRender();
+}
+
+void SceneView::repaint3d() {
+  // The viz layer's paint: the same exposure, tone map and gamma as the exported figures.
+  try {
+    polyData_ = viz::makeElementPolyData(*mesh_, viz::paintScene(*mesh_, data_, options_));
+  } catch (const std::exception&) {
+    polyData_ = viz::makeElementPolyData(*mesh_, viz::ScenePaint{});  // data that does not fit: plain grey
+  }
+  mapper_->SetInputData(polyData_);
+  rebuildHighlight();
+}
+
+Camera SceneView::currentCamera() const {
+  vtkCamera* camera = renderer()->GetActiveCamera();
+  Camera c;
+  camera->GetPosition(c.position.data());
+  camera->GetFocalPoint(c.target.data());
+  camera->GetViewUp(c.up.data());
+  c.fovYDegrees = camera->GetViewAngle();
+  return c;
 }
 
 void SceneView::setShowEdges(bool show) {
   showEdges_ = show;
+  options_.image.showEdges = show;
   actor_->GetProperty()->SetEdgeVisibility(show);
   requestRender();
 }
@@ -114,14 +143,16 @@ void SceneView::rebuildHighlight() {
     return;
   }
   auto cells = vtkSmartPointer<vtkCellArray>::New();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
   for (int e : highlighted_) {
     if (e < 0 || e >= static_cast<int>(mesh_->size())) continue;
     const auto& vertices = mesh_->elements[e].vertices;
-    std::vector<vtkIdType> ids(vertices.begin(), vertices.end());
-    cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    cells->InsertNextCell(static_cast<vtkIdType>(vertices.size()));
+    for (int v : vertices) cells->InsertCellPoint(points->InsertNextPoint(mesh_->vertices[v].data()));
   }
   auto outline = vtkSmartPointer<vtkPolyData>::New();
-  outline->SetPoints(polyData_->GetPoints());
+  outline->SetPoints(points);
   outline->SetPolys(cells);
   auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
   mapper->SetInputData(outline);
@@ -149,7 +180,7 @@ int SceneView::pickElement(QPoint position) {
   if (!picker->Pick(x, y, 0, renderer())) return -1;
   if (picker->GetActor() != actor_.Get()) return -1;
   const vtkIdType cell = picker->GetCellId();
-  auto* ids = vtkIntArray::SafeDownCast(polyData_->GetCellData()->GetArray("ElementId"));
+  auto* ids = vtkIntArray::SafeDownCast(polyData_->GetCellData()->GetArray("element"));
   if (cell < 0 || !ids || cell >= ids->GetNumberOfTuples()) return -1;
   return ids->GetValue(cell);
 }

@@ -5,9 +5,9 @@
 
 #include <vector>
 
-#include "app/radiosity_polydata.h"
 #include "app/vtk_widget.h"
 #include "core/scene.h"
+#include "viz/scene_view.h"
 
 class vtkActor;
 class vtkPolyData;
@@ -26,7 +26,13 @@ class SceneView : public VtkWidget {
   void setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera);
   // New colours for the same mesh (an iteration of the replay, a re-solve).
   void setRadiosity(const RgbField& B);
-  void setDisplayOptions(const DisplayOptions& options);
+  // Colouring, exposure, tone map, gamma, smooth shading: the same options the figure exporters take.
+  void setViewOptions(const viz::SceneViewOptions& options);
+  const viz::SceneViewOptions& viewOptions() const { return options_; }
+  const viz::SceneViewData& viewData() const { return data_; }
+  const Mesh* mesh() const { return mesh_; }
+  // The camera as the reader left it (for exporting the current view).
+  Camera currentCamera() const;
   void setShowEdges(bool show);
   void setCaption(const QString& text);
   void setHighlighted(const std::vector<int>& elements);
@@ -45,8 +51,9 @@ class SceneView : public VtkWidget {
   void rebuildHighlight();
 
   const Mesh* mesh_ = nullptr;
-  RgbField B_;
-  DisplayOptions display_;
+  void repaint3d();
+  viz::SceneViewData data_;
+  viz::SceneViewOptions options_;
   vtkSmartPointer<vtkPolyData> polyData_;
   vtkSmartPointer<vtkPolyDataMapper> mapper_;
   vtkSmartPointer<vtkActor> actor_;

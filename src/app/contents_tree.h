@@ -1,0 +1,28 @@
+// The table of contents: chapters, their lessons in book order, and each lesson's steps. Activating an item
+// opens that lesson (at its first step) or that step.
+#pragma once
+
+#include <QTreeWidget>
+#include <vector>
+
+#include "lesson/lesson.h"
+
+namespace rt::app {
+
+class ContentsTree : public QTreeWidget {
+  Q_OBJECT
+ public:
+  explicit ContentsTree(QWidget* parent = nullptr);
+  void setLessons(const std::vector<lesson::Lesson>& lessons);
+  // Marks the current step (without emitting stepActivated).
+  void setCurrent(int lesson, int step);
+
+ signals:
+  void stepActivated(int lesson, int step);
+
+ private:
+  QTreeWidgetItem* findItem(int lesson, int step) const;
+  bool updating_ = false;
+};
+
+}  // namespace rt::app

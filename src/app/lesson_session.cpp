@@ -1,0 +1,159 @@
+#include "app/lesson_session.h"
+
+#include <algorithm>
+#include <optional>
+
+#include "core/input_error.h"
+#include "core/solvers/radiosity_system.h"
+#include "lesson/step_result.h"
+#include "lesson/step_runner.h"
+
+namespace rt::app {
+
+LessonLibrary::LessonLibrary(lesson::LessonFolders folders) : folders_(std::move(folders)) {
+  runner_ = std::make_unique<lesson::StepRunner>(folders_.scenes);
+  reload();
+}
+
+LessonLibrary::~LessonLibrary() = default;
+
+void LessonLibrary::reload() {
+  lessons_.clear();
+  errors_.clear();
+  std::vector<std::string> files;
+  try {
+    files = lesson::lessonFiles(folders_.lessons);
+  } catch (const std::exception& e) {
+    errors_.push_back(e.what());
+  }
+  for (const std::string& file : files) {
+    try {
+      lessons_.push_back(lesson::loadLesson(file, folders_.scenes));
+    } catch (const std::exception& e) {
+      errors_.push_back(e.what());
+    }
+  }
+  std::stable_sort(lessons_.begin(), lessons_.end(), [](const lesson::Lesson& a, const lesson::Lesson& b) {
+    return a.order != b.order ? a.order < b.order : a.id < b.id;
+  });
+}
+
+int LessonLibrary::indexOf(const std::string& id) const {
+  for (std::size_t i = 0; i < lessons_.size(); ++i)
+    if (lessons_[i].id == id) return static_cast<int>(i);
+  return -1;
+}
+
+int LessonLibrary::welcomeIndex() const {
+  const int welcome = indexOf("welcome");
+  if (welcome >= 0) return welcome;
+  return lessons_.empty() ? -1 : 0;
+}
+
+int LessonLibrary::formFactorComputations() const {
+  std::lock_guard lock(runMutex_);
+  return runner_->formFactorComputations();
+}
+
+SolverOptions solverOptionsFromParameters(const lesson::StepParameters& p) {
+  SolverOptions options;
+  if (p.iterations) options.maxIterations = *p.iterations;
+  if (p.tolerance) options.tolerance = *p.tolerance;
+  if (p.relaxation) options.relaxation = *p.relaxation;
+  if (p.seed) options.seed = *p.seed;
+  options.ambient = p.ambient;
+  return options;
+}
+
+PipelineSettings settingsFromParameters(const lesson::StepParameters& p) {
+  PipelineSettings s;
+  if (p.subdivide) {
+    s.mesh.mode = MeshOptions::Mode::Count;
+    s.mesh.count = *p.subdivide;
+  } else if (p.maxEdge) {
+    s.mesh.mode = MeshOptions::Mode::MaxEdge;
+    s.mesh.maxEdge = *p.maxEdge;
+  }
+  s.method = p.method;
+  if (p.resolution) s.formFactors.hemicubeResolution = *p.resolution;
+  if (p.samples) s.formFactors.samples = *p.samples;
+  if (p.seed) s.formFactors.seed = *p.seed;
+  s.solver = p.solver;
+  s.solverOptions = solverOptionsFromParameters(p);
+  s.reflectance = p.reflectance;
+  s.lightScale = p.lightScale;
+  return s;
+}
+
+PipelineResult LessonLibrary::runOne(const lesson::Lesson& lesson, const lesson::Step& step,
+                                     Progress& progress) {
+  auto stepResult = std::make_shared<lesson::StepResult>(runner_->run(lesson, step, progress));
+  PipelineResult out;
+  out.scene = std::make_shared<Scene>(stepResult->scene);
+  out.mesh = std::make_shared<Mesh>(stepResult->mesh);
+  out.camera = stepResult->camera;
+  out.F = stepResult->F;
+  out.formFactorStats = stepResult->formFactorStats;
+  out.title = step.title;
+  // What the 3D view shows: the solution, else the local-illumination estimate, else the scene's own light.
+  if (stepResult->B.rows() == static_cast<Eigen::Index>(stepResult->mesh.size()))
+    out.B = stepResult->B;
+  else if (stepResult->local.rows() == static_cast<Eigen::Index>(stepResult->mesh.size()))
+    out.B = stepResult->local;
+  else
+    out.B = ambientEstimate(stepResult->mesh);
+  // Solving steps are replayed iteration by iteration: solve again with the history recorded (F is at hand,
+  // so this costs a solve, never a form-factor computation). A bounces step replays its partial sums, bounce
+  // by bounce.
+  const bool solves = step.stage == lesson::Stage::Solve || step.stage == lesson::Stage::Compare ||
+                      step.stage == lesson::Stage::Matrix;
+  if (step.stage == lesson::Stage::Bounces && !stepResult->bounceTerms.empty()) {
+    std::optional<RadiositySystem> system;
+    if (out.F) system = RadiositySystem::fromMesh(stepResult->mesh, *out.F);
+    RgbField sum = RgbField::Zero(static_cast<Eigen::Index>(stepResult->mesh.size()), 3);
+    for (std::size_t k = 0; k < stepResult->bounceTerms.size(); ++k) {
+      sum += stepResult->bounceTerms[k];
+      IterationRecord record;
+      record.iteration = static_cast<int>(k);
+      record.B = sum;
+      record.residual = system ? system->relativeResidual(sum) : 0.0;
+      out.history.push_back(std::move(record));
+    }
+    out.solverName = "bounces";
+    out.iterations = static_cast<int>(out.history.size());
+    out.residual = out.history.back().residual;
+    out.status = SolverStatus::Success;
+  } else if (out.F && solves && stepResult->B.rows() > 0) {
+    solveWithHistory(out, step.parameters.solver, solverOptionsFromParameters(step.parameters), progress);
+  }
+  try {
+    std::string text = "## " + step.title + "\n\n" + lesson::resolvedText(lesson, step, *stepResult);
+    if (step.index == 0 && !lesson.intro.empty())
+      text = "# " + lesson.title + "\n\n" + lesson.intro + "\n\n" + text;
+    out.text = text;
+  } catch (const InputError& e) {
+    out.text = step.text;
+    out.note = e.what();
+  }
+  out.stepResult = stepResult;
+  return out;
+}
+
+PipelineResult LessonLibrary::runStep(int lessonIndex, int stepIndex,
+                                      const lesson::StepParameters& parameters,
+                                      const std::string& compareSolver, const std::string& compareMethod,
+                                      Progress& progress) {
+  std::lock_guard lock(runMutex_);
+  const lesson::Lesson& lesson = lessons_.at(static_cast<std::size_t>(lessonIndex));
+  lesson::Step step = lesson.steps.at(static_cast<std::size_t>(stepIndex));
+  step.parameters = parameters;
+  PipelineResult result = runOne(lesson, step, progress);
+  if (!compareSolver.empty() || !compareMethod.empty()) {
+    if (!compareSolver.empty()) step.parameters.solver = compareSolver;
+    if (!compareMethod.empty()) step.parameters.method = compareMethod;
+    result.compared = std::make_shared<PipelineResult>(runOne(lesson, step, progress));
+  }
+  return result;
+}
+
+}  // namespace rt::app

@@ -1,0 +1,60 @@
+// The lessons as the app sees them: the catalogue of a lessons folder (a broken lesson file is reported, the
+// others still open), and running a step, with the reader's parameter changes, into a PipelineResult the
+// window shows. No Qt widgets: the step runs on a worker thread.
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "app/pipeline.h"
+#include "lesson/lesson.h"
+#include "lesson/lesson_loader.h"
+
+namespace rt::lesson {
+class StepRunner;
+}
+
+namespace rt::app {
+
+class LessonLibrary {
+ public:
+  explicit LessonLibrary(lesson::LessonFolders folders);
+  ~LessonLibrary();
+
+  // Re-reads every lesson file; files that fail to load are listed in errors().
+  void reload();
+  const lesson::LessonFolders& folders() const { return folders_; }
+  const std::vector<lesson::Lesson>& lessons() const { return lessons_; }
+  const std::vector<std::string>& errors() const { return errors_; }
+  // Index in lessons() or -1.
+  int indexOf(const std::string& id) const;
+  // The lesson a first-time reader starts with: "welcome" when there is one, else the first of the book.
+  int welcomeIndex() const;
+
+  // Runs a step with `parameters` in place of the step's own (the reader's changes) and, when `compareSolver`
+  // or `compareMethod` is set, the same step with that solver or method for the compare pane. Serialised: one
+  // step at a time (the step runner's form-factor cache is not shared between threads). May throw InputError,
+  // Cancelled.
+  PipelineResult runStep(int lessonIndex, int stepIndex, const lesson::StepParameters& parameters,
+                         const std::string& compareSolver, const std::string& compareMethod,
+                         Progress& progress);
+  // How often form factors were computed (the rest came from the cache).
+  int formFactorComputations() const;
+
+ private:
+  PipelineResult runOne(const lesson::Lesson& lesson, const lesson::Step& step, Progress& progress);
+
+  lesson::LessonFolders folders_;
+  std::vector<lesson::Lesson> lessons_;
+  std::vector<std::string> errors_;
+  std::unique_ptr<lesson::StepRunner> runner_;
+  mutable std::mutex runMutex_;
+};
+
+// The pipeline settings equivalent to a step's parameters (for user scenes opened with the same controls).
+PipelineSettings settingsFromParameters(const lesson::StepParameters& parameters);
+SolverOptions solverOptionsFromParameters(const lesson::StepParameters& parameters);
+
+}  // namespace rt::app

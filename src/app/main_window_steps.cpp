@@ -1,0 +1,379 @@
+// MainWindow: opening lessons, steps and scenes, computing them, and showing results (views, text, replay,
+// chart, matrix, linked selection).
+#include <QApplication>
+#include <QComboBox>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QPushButton>
+#include <QSettings>
+#include <QTextBrowser>
+#include <QThread>
+
+#include "app/builtin_scene.h"
+#include "app/contents_tree.h"
+#include "app/iteration_player.h"
+#include "app/lesson_session.h"
+#include "app/main_window.h"
+#include "app/matrix_view.h"
+#include "app/parameter_panel.h"
+#include "app/residual_chart.h"
+#include "app/scene_view.h"
+#include "core/formfactor/formfactor_method.h"
+#include "core/io/scene_loader.h"
+#include "lesson/step_result.h"
+
+namespace rt::app {
+namespace {
+
+// The form-factor method for scenes the reader opens: one that handles occlusion when the build has it.
+std::string defaultMethod() {
+  const auto names = formFactorMethodNames();
+  for (const char* preferred : {"hemicube", "raycast", "analytic"})
+    if (std::find(names.begin(), names.end(), preferred) != names.end()) return preferred;
+  return names.empty() ? std::string("analytic") : names.front();
+}
+
+QString sceneSummary(const PipelineResult& r) {
+  QString md =
+      QString("# %1\n\n").arg(QString::fromStdString(r.scene->name.empty() ? "Scene" : r.scene->name));
+  md += QString("%1 patches on %2 surfaces, meshed into **%3 elements**.\n\n")
+            .arg(r.scene->patches.size())
+            .arg(r.scene->surfaces.size())
+            .arg(r.mesh->size());
+  if (r.F)
+    md += QString("Form factors: %1%2.\n\n")
+              .arg(QString::fromStdString(r.formFactorStats.summary()))
+              .arg(r.formFactorsReused ? " (reused: only materials or the light changed)" : "");
+  if (!r.solverName.empty())
+    md += QString("Solver **%1**: %2 after %3 iterations, relative residual %4.\n\n")
+              .arg(QString::fromStdString(r.solverName), QString::fromStdString(toString(r.status)))
+              .arg(r.iterations)
+              .arg(r.residual, 0, 'g', 3);
+  if (!r.note.empty()) md += QString("*%1*\n\n").arg(QString::fromStdString(r.note));
+  for (const auto& w : r.scene->warnings) md += QString("- warning: %1\n").arg(QString::fromStdString(w));
+  md += "\nChange the parameters on the right; click an element to see its row of the form-factor matrix.\n";
+  return md;
+}
+
+std::vector<double> residualsOf(const PipelineResult& r) {
+  std::vector<double> out;
+  for (const IterationRecord& record : r.history) out.push_back(record.residual);
+  return out;
+}
+
+}  // namespace
+
+bool MainWindow::start() {
+  if (options_.compare) setCompareMode(true);
+  if (options_.presenter) setPresenterMode(true);
+  if (!options_.scene.isEmpty()) return openScene(options_.scene);
+  if (!options_.lesson.isEmpty()) return openLesson(options_.lesson, std::max(0, options_.step - 1));
+  if (options_.step > 0) {
+    lastError_ = tr("--step needs --lesson");
+    return false;
+  }
+  QSettings settings;
+  const QString remembered = settings.value("position/lesson").toString();
+  if (!remembered.isEmpty() && library_->indexOf(remembered.toStdString()) >= 0)
+    return openLesson(remembered, settings.value("position/step", 0).toInt());
+  if (library_->welcomeIndex() >= 0) return openStep(library_->welcomeIndex(), 0);
+  return openScene(QString());  // no lessons at all: the built-in Cornell box
+}
+
+bool MainWindow::openLesson(const QString& id, int step) {
+  const int index = library_->indexOf(id.toStdString());
+  if (index < 0) {
+    QString known;
+    for (const auto& l : library_->lessons())
+      known += (known.isEmpty() ? "" : ", ") + QString::fromStdString(l.id);
+    QString message = tr("no lesson '%1' in %2 (known: %3)")
+                          .arg(id, QString::fromStdString(library_->folders().lessons), known);
+    for (const auto& e : library_->errors()) message += "\n" + QString::fromStdString(e);
+    showError(message);
+    return false;
+  }
+  return openStep(index, step);
+}
+
+bool MainWindow::openStep(int lessonIndex, int step) {
+  const auto& lessons = library_->lessons();
+  if (lessonIndex < 0 || lessonIndex >= static_cast<int>(lessons.size())) return false;
+  const lesson::Lesson& lesson = lessons[static_cast<std::size_t>(lessonIndex)];
+  if (step < 0 || step >= static_cast<int>(lesson.steps.size())) {
+    showError(tr("lesson '%1' has %2 steps: there is no step %3")
+                  .arg(QString::fromStdString(lesson.id))
+                  .arg(lesson.steps.size())
+                  .arg(step + 1));
+    return false;
+  }
+  mode_ = Mode::Lesson;
+  lesson_ = lessonIndex;
+  step_ = step;
+  const lesson::Step& s = lesson.steps[static_cast<std::size_t>(step)];
+  parameters_ = s.parameters;
+  newStepPending_ = true;
+  setWindowTitle(tr("%1 - Radiosity Textbook").arg(QString::fromStdString(lesson.title)));
+  contents_->setCurrent(lessonIndex, step);
+  // The text appears at once; numbers quoted from the result are filled in when it arrives.
+  text_->setMarkdown(QString("## %1\n\n*Computing...*").arg(QString::fromStdString(s.title)));
+  updateNavigation();
+  rememberPosition();
+  requestComputation();
+  return true;
+}
+
+bool MainWindow::nextStep() {
+  if (mode_ != Mode::Lesson) return false;
+  const auto& lessons = library_->lessons();
+  if (step_ + 1 < static_cast<int>(lessons[static_cast<std::size_t>(lesson_)].steps.size()))
+    return openStep(lesson_, step_ + 1);
+  if (lesson_ + 1 < static_cast<int>(lessons.size())) return openStep(lesson_ + 1, 0);
+  return false;
+}
+
+bool MainWindow::previousStep() {
+  if (mode_ != Mode::Lesson) return false;
+  if (step_ > 0) return openStep(lesson_, step_ - 1);
+  if (lesson_ > 0) {
+    const auto& previous = library_->lessons()[static_cast<std::size_t>(lesson_ - 1)];
+    return openStep(lesson_ - 1, static_cast<int>(previous.steps.size()) - 1);
+  }
+  return false;
+}
+
+bool MainWindow::openScene(const QString& path) {
+  try {
+    scene_ = path.isEmpty() ? builtinCornellBox() : loadScene(path.toStdString());
+  } catch (const std::exception& e) {
+    showError(QString::fromStdString(e.what()));
+    return false;
+  }
+  mode_ = Mode::Scene;
+  lesson_ = step_ = -1;
+  parameters_ = lesson::StepParameters{};
+  parameters_.method = defaultMethod();
+  parameters_.solver = chooseSolver(scene_.patches.size() * 16);
+  parameters_.subdivide = 4;
+  newStepPending_ = true;
+  result_.reset();
+  setWindowTitle(tr("%1 - Radiosity Textbook").arg(QString::fromStdString(scene_.name)));
+  text_->setMarkdown(QString("# %1\n\n*Computing...*").arg(QString::fromStdString(scene_.name)));
+  updateNavigation();
+  requestComputation();
+  return true;
+}
+
+void MainWindow::applyParameters(const lesson::StepParameters& parameters) {
+  if (mode_ == Mode::None) return;
+  parameters_ = parameters;
+  requestComputation();
+}
+
+void MainWindow::requestComputation() {
+  lastError_.clear();
+  const std::string compareSolver = compare_ && compareSolver_->currentIndex() > 0
+                                        ? compareSolver_->currentText().toStdString()
+                                        : std::string();
+  const std::string compareMethod = compare_ && compareMethod_->currentIndex() > 0
+                                        ? compareMethod_->currentText().toStdString()
+                                        : std::string();
+  const bool compare = compare_;
+  ComputationRunner::Job job;
+  if (mode_ == Mode::Lesson) {
+    LessonLibrary* library = library_.get();
+    const int l = lesson_, s = step_;
+    const lesson::StepParameters parameters = parameters_;
+    // Compare mode with nothing chosen still fills the right pane (the same computation), so both panes show.
+    const std::string solver =
+        compare && compareSolver.empty() && compareMethod.empty() ? parameters.solver : compareSolver;
+    job = [library, l, s, parameters, solver, compareMethod](Progress& progress) {
+      return library->runStep(l, s, parameters, solver, compareMethod, progress);
+    };
+  } else if (mode_ == Mode::Scene) {
+    const Scene scene = scene_;
+    const PipelineSettings settings = settingsFromParameters(parameters_);
+    std::shared_ptr<const PipelineResult> previous = result_;
+    job = [scene, settings, previous, compare, compareSolver, compareMethod](Progress& progress) {
+      PipelineResult result = runPipeline(scene, settings, progress, previous.get());
+      if (compare) {
+        PipelineSettings other = settings;
+        if (!compareSolver.empty()) other.solver = compareSolver;
+        if (!compareMethod.empty()) other.method = compareMethod;
+        result.compared = std::make_shared<PipelineResult>(runPipeline(scene, other, progress, &result));
+      }
+      return result;
+    };
+  } else {
+    return;
+  }
+  if (blocking_)
+    runner_->runBlocking(job);
+  else
+    runner_->start(std::move(job));
+}
+
+void MainWindow::cancelComputation() {
+  if (runner_) runner_->cancel();
+}
+
+bool MainWindow::waitUntilIdle(int timeoutMs) {
+  QElapsedTimer timer;
+  timer.start();
+  while (runner_->busy()) {
+    if (timer.elapsed() > timeoutMs) return false;
+    QApplication::processEvents(QEventLoop::AllEvents, 50);
+    QThread::msleep(2);
+  }
+  QApplication::processEvents();
+  return true;
+}
+
+void MainWindow::applyStepDisplay(const lesson::Step* step) {
+  viz::SceneViewOptions options = primaryView_->viewOptions();
+  if (step) {
+    const lesson::StepParameters& p = step->parameters;
+    options.image.exposure = p.exposure;
+    options.image.toneMap = p.toneMap == "reinhard" ? viz::ToneMap::Reinhard : viz::ToneMap::LinearClamp;
+    options.image.srgbGamma = p.gamma;
+    options.image.smooth = p.smooth;
+    options.image.showEdges = p.edges;
+  } else {
+    options = viz::SceneViewOptions{};
+  }
+  options.colourBar = false;
+  primaryView_->setViewOptions(options);
+  secondaryView_->setViewOptions(options);
+}
+
+void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
+  const bool newStep = newStepPending_ || !result_;
+  newStepPending_ = false;
+  result_ = std::move(result);
+  const PipelineResult& r = *result_;
+  auto stepResult = std::static_pointer_cast<const lesson::StepResult>(r.stepResult);
+  const lesson::Step* step =
+      mode_ == Mode::Lesson
+          ? &library_->lessons()[static_cast<std::size_t>(lesson_)].steps[static_cast<std::size_t>(step_)]
+          : nullptr;
+  if (newStep) applyStepDisplay(step);
+
+  primaryView_->setRadiosity(r.B);
+  primaryView_->setMesh(r.mesh.get(), r.camera, newStep);
+  primaryView_->setCaption(QString::fromStdString(r.solverName.empty() ? r.title : r.solverName));
+  if (stepResult && !stepResult->highlighted.empty()) primaryView_->setHighlighted(stepResult->highlighted);
+  if (compare_ && r.compared) {
+    secondaryView_->setRadiosity(r.compared->B);
+    secondaryView_->setMesh(r.compared->mesh.get(), r.camera, false);
+    secondaryView_->syncCameraFrom(*primaryView_);
+    secondaryView_->setCaption(
+        QString::fromStdString(r.compared->solverName.empty() ? r.compared->title : r.compared->solverName));
+  }
+
+  text_->setMarkdown(mode_ == Mode::Lesson ? QString::fromStdString(r.text) : sceneSummary(r));
+  std::vector<QString> names{QString::fromStdString(r.solverName)};
+  std::vector<std::vector<double>> runs{residualsOf(r)};
+  if (compare_ && r.compared && !r.compared->history.empty()) {
+    names.push_back(QString::fromStdString(r.compared->solverName) + tr(" (right)"));
+    runs.push_back(residualsOf(*r.compared));
+  }
+  if (runs.front().empty()) runs.clear(), names.clear();
+  // A step that compares several runs itself (solvers, methods) shows all of its curves.
+  if (stepResult && stepResult->runs.size() > 1 && !compare_) {
+    names.clear();
+    runs.clear();
+    for (const auto& run : stepResult->runs) {
+      names.push_back(QString::fromStdString(run.label));
+      runs.push_back(run.residuals);
+    }
+  }
+  chart_->setRuns(names, runs);
+  int longest = static_cast<int>(r.history.size());
+  if (compare_ && r.compared) longest = std::max(longest, static_cast<int>(r.compared->history.size()));
+  player_->setIterationCount(longest);
+  matrix_->setMatrix(r.F);
+
+  if (newStep) {
+    std::vector<std::pair<QString, Rgb>> surfaces;
+    for (const Surface& s : r.scene->surfaces)
+      surfaces.emplace_back(QString::fromStdString(s.name), r.scene->materials[s.material].reflectance);
+    if (step)
+      panel_->setStep(parameters_, step->controls, false, surfaces);
+    else
+      panel_->setStep(parameters_, {}, true, surfaces);
+  }
+
+  QString status = QString("%1 elements").arg(r.mesh->size());
+  if (!r.solverName.empty())
+    status += QString(", %1: %2 after %3 iterations, residual %4")
+                  .arg(QString::fromStdString(r.solverName), QString::fromStdString(toString(r.status)))
+                  .arg(r.iterations)
+                  .arg(r.residual, 0, 'g', 3);
+  if (r.formFactorsReused) status += tr(", form factors reused");
+  if (!r.note.empty()) status += " (" + QString::fromStdString(r.note) + ")";
+  statusLabel_->setText(status);
+  emit resultShown();
+}
+
+void MainWindow::showIteration(int index) {
+  if (!result_) return;
+  auto show = [index](SceneView* view, const PipelineResult& r) {
+    if (r.history.empty()) return;
+    const int i = std::min(index, static_cast<int>(r.history.size()) - 1);
+    view->setRadiosity(r.history[static_cast<std::size_t>(i)].B);
+  };
+  show(primaryView_, *result_);
+  if (compare_ && result_->compared) show(secondaryView_, *result_->compared);
+  chart_->setCurrent(index);
+}
+
+void MainWindow::selectElements(int first, int second) {
+  if (!result_ || !result_->mesh) return;
+  const int n = static_cast<int>(result_->mesh->size());
+  if (first < 0 || first >= n) return;
+  std::vector<int> elements{first};
+  if (second >= 0 && second < n && second != first) elements.push_back(second);
+  primaryView_->setHighlighted(elements);
+  if (compare_) secondaryView_->setHighlighted(elements);
+  if (second < 0) matrix_->selectElementRow(first);
+  const Element& e = result_->mesh->elements[static_cast<std::size_t>(first)];
+  const std::string& surface = result_->scene->surfaces[result_->scene->patches[e.patch].surface].name;
+  QString text = tr("element %1 (patch %2, %3): B = (%4, %5, %6) W/m^2")
+                     .arg(first)
+                     .arg(e.patch)
+                     .arg(QString::fromStdString(surface))
+                     .arg(result_->B(first, 0), 0, 'g', 4)
+                     .arg(result_->B(first, 1), 0, 'g', 4)
+                     .arg(result_->B(first, 2), 0, 'g', 4);
+  if (second >= 0 && result_->F)
+    text += tr("; F[%1][%2] = %3").arg(first).arg(second).arg((*result_->F)(first, second), 0, 'g', 6);
+  statusLabel_->setText(text);
+}
+
+void MainWindow::updateNavigation() {
+  const bool lesson = mode_ == Mode::Lesson;
+  backButton_->setVisible(lesson);
+  nextButton_->setVisible(lesson);
+  if (!lesson) {
+    stepLabel_->setText(tr("Your scene"));
+    return;
+  }
+  const auto& lessons = library_->lessons();
+  const auto& current = lessons[static_cast<std::size_t>(lesson_)];
+  stepLabel_->setText(tr("%1 - step %2 of %3")
+                          .arg(QString::fromStdString(current.title))
+                          .arg(step_ + 1)
+                          .arg(current.steps.size()));
+  backButton_->setEnabled(step_ > 0 || lesson_ > 0);
+  nextButton_->setEnabled(step_ + 1 < static_cast<int>(current.steps.size()) ||
+                          lesson_ + 1 < static_cast<int>(lessons.size()));
+}
+
+void MainWindow::rememberPosition() {
+  if (mode_ != Mode::Lesson || !options_.screenshot.isEmpty()) return;
+  QSettings settings;
+  settings.setValue("position/lesson",
+                    QString::fromStdString(library_->lessons()[static_cast<std::size_t>(lesson_)].id));
+  settings.setValue("position/step", step_);
+}
+
+}  // namespace rt::app

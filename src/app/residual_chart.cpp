@@ -1,0 +1,131 @@
+#include "app/residual_chart.h"
+
+#include <QChart>
+#include <QLegendMarker>
+#include <QLineSeries>
+#include <QLogValueAxis>
+#include <QPen>
+#include <QScatterSeries>
+#include <QValueAxis>
+#include <algorithm>
+#include <cmath>
+
+namespace rt::app {
+namespace {
+
+// Log axes cannot show 0: residuals that reached exactly zero are drawn at a floor below the smallest
+// positive one.
+double plotted(double value, double floor) {
+  return value > floor ? value : floor;
+}
+
+const QColor kRunColours[] = {QColor(0, 114, 178),
+                              QColor(213, 94, 0)};  // colour-blind-safe blue and vermilion
+
+}  // namespace
+
+ResidualChart::ResidualChart(QWidget* parent) : QChartView(parent) {
+  auto* chart = new QChart();
+  chart->setMargins(QMargins(4, 4, 4, 4));
+  chart->legend()->setAlignment(Qt::AlignBottom);
+  xAxis_ = new QValueAxis(chart);
+  xAxis_->setTitleText(tr("iteration"));
+  xAxis_->setLabelFormat("%d");
+  yAxis_ = new QLogValueAxis(chart);
+  yAxis_->setTitleText(tr("relative residual"));
+  yAxis_->setLabelFormat("%.0e");
+  yAxis_->setBase(10);
+  chart->addAxis(xAxis_, Qt::AlignBottom);
+  chart->addAxis(yAxis_, Qt::AlignLeft);
+  setChart(chart);
+  setRenderHint(QPainter::Antialiasing);
+  setMinimumHeight(160);
+}
+
+void ResidualChart::setRuns(const std::vector<QString>& names,
+                            const std::vector<std::vector<double>>& residuals) {
+  QChart* c = chart();
+  for (auto* s : full_) c->removeSeries(s), delete s;
+  for (auto* s : shown_) c->removeSeries(s), delete s;
+  if (marker_) c->removeSeries(marker_), delete marker_;
+  full_.clear();
+  shown_.clear();
+  marker_ = nullptr;
+  residuals_ = residuals;
+
+  double lowest = 1e300, highest = 0;
+  int longest = 1;
+  for (const auto& run : residuals_) {
+    longest = std::max(longest, static_cast<int>(run.size()));
+    for (double r : run)
+      if (r > 0 && std::isfinite(r)) lowest = std::min(lowest, r), highest = std::max(highest, r);
+  }
+  if (highest <= 0) lowest = 1e-6, highest = 1;
+  const double floor = lowest / 10;
+  for (std::size_t k = 0; k < residuals_.size(); ++k) {
+    const QColor colour = kRunColours[k % 7];
+    auto* full = new QLineSeries();
+    auto* shown = new QLineSeries();
+    full->setName(k < names.size() ? names[k] + tr(" (all)") : QString());
+    shown->setName(k < names.size() ? names[k] : QString());
+    QColor faint = colour;
+    faint.setAlpha(60);
+    full->setPen(QPen(faint, 2));
+    shown->setPen(QPen(colour, 3));
+    for (std::size_t i = 0; i < residuals_[k].size(); ++i)
+      full->append(static_cast<double>(i + 1), plotted(residuals_[k][i], floor));
+    for (QLineSeries* s : {full, shown}) {
+      c->addSeries(s);
+      s->attachAxis(xAxis_);
+      s->attachAxis(yAxis_);
+    }
+    c->legend()->markers(full).first()->setVisible(false);
+    full_.push_back(full);
+    shown_.push_back(shown);
+  }
+  marker_ = new QScatterSeries();
+  marker_->setMarkerSize(10);
+  marker_->setColor(QColor(0, 0, 0));
+  c->addSeries(marker_);
+  marker_->attachAxis(xAxis_);
+  marker_->attachAxis(yAxis_);
+  c->legend()->markers(marker_).first()->setVisible(false);
+  xAxis_->setRange(1, std::max(2, longest));
+  yAxis_->setRange(std::pow(10, std::floor(std::log10(floor))), std::pow(10, std::ceil(std::log10(highest))));
+  c->legend()->setVisible(residuals_.size() > 1);
+  setCurrent(longest - 1);
+}
+
+void ResidualChart::setCurrent(int index) {
+  if (!marker_) return;
+  double lowest = 1e300;
+  for (const auto& run : residuals_)
+    for (double r : run)
+      if (r > 0) lowest = std::min(lowest, r);
+  const double floor = lowest / 10;
+  marker_->clear();
+  for (std::size_t k = 0; k < residuals_.size(); ++k) {
+    QList<QPointF> points;
+    const int last = std::min(index, static_cast<int>(residuals_[k].size()) - 1);
+    for (int i = 0; i <= last; ++i) points.append(QPointF(i + 1, plotted(residuals_[k][i], floor)));
+    shown_[k]->replace(points);
+    if (last >= 0) marker_->append(points.back());
+  }
+}
+
+int ResidualChart::pointsShown(int run) const {
+  return run < static_cast<int>(shown_.size()) ? static_cast<int>(shown_[run]->count()) : 0;
+}
+
+void ResidualChart::setLargeFonts(bool large) {
+  QFont font = this->font();
+  font.setPointSizeF(large ? font.pointSizeF() * 1.6 : font.pointSizeF());
+  chart()->setTitleFont(font);
+  xAxis_->setLabelsFont(font);
+  yAxis_->setLabelsFont(font);
+  xAxis_->setTitleFont(font);
+  yAxis_->setTitleFont(font);
+  chart()->legend()->setFont(font);
+}
+
+}  // namespace rt::app

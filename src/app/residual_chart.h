@@ -1,0 +1,37 @@
+// The convergence chart beside an iterative step: relative residual against iteration on a log axis, drawn up
+// to the iteration being shown (so it grows while the replay plays), the whole curve faint behind it. A
+// compare pane's run is a second curve.
+#pragma once
+
+#include <QChartView>
+#include <QString>
+#include <vector>
+
+class QLineSeries;
+class QLogValueAxis;
+class QValueAxis;
+class QScatterSeries;
+
+namespace rt::app {
+
+class ResidualChart : public QChartView {
+  Q_OBJECT
+ public:
+  explicit ResidualChart(QWidget* parent = nullptr);
+
+  // One or two runs: residual per recorded iteration. Empty clears the chart.
+  void setRuns(const std::vector<QString>& names, const std::vector<std::vector<double>>& residuals);
+  // Shows the curves up to `index` (0-based).
+  void setCurrent(int index);
+  int pointsShown(int run) const;
+  void setLargeFonts(bool large);
+
+ private:
+  std::vector<std::vector<double>> residuals_;
+  std::vector<QLineSeries*> full_, shown_;
+  QScatterSeries* marker_ = nullptr;
+  QValueAxis* xAxis_ = nullptr;
+  QLogValueAxis* yAxis_ = nullptr;
+};
+
+}  // namespace rt::app
