@@ -127,10 +127,15 @@ void computeCompare(StageContext& c) {
   if (!p.solvers.empty()) {
     const auto F = mainFormFactors(c);
     const RadiositySystem system = RadiositySystem::fromMesh(r.mesh, *F);
+    // The first solver is the reference the others are measured against (the error view shows the last one).
     for (const auto& s : p.solvers) {
       RgbField B;
       r.runs.push_back(runSolver(c, s, system, B, s));
       addSurfaceValues(r, "B", B, "." + s);
+      if (r.reference.rows() == 0)
+        r.reference = B;
+      else
+        r.values["difference." + s] = maxRelativeDifference(r.mesh, B, r.reference);
       r.B = B;
     }
     if (r.runs.size() >= 2 && r.runs[1].iterations > 0)

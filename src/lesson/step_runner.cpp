@@ -56,10 +56,8 @@ void quickCaps(StepParameters& p) {
   if (p.subdivide) p.subdivide = std::min(*p.subdivide, 3);
   if (p.resolution) p.resolution = std::min(*p.resolution, 32);
   p.samples = std::min(p.samples.value_or(8), 8);
-  if (p.subdivisions.size() > 2) p.subdivisions.resize(2);
-  for (int& s : p.subdivisions) s = std::min(s, 3);
-  if (p.sweep.size() > 2) p.sweep.resize(2);
-  for (int& s : p.sweep) s = std::min(s, 32);
+  // Lists keep their length and labels (the text names their entries); only the largest values shrink.
+  for (int& s : p.sweep) s = std::min(s, 64);
   if (p.maxEdge) p.maxEdge = *p.maxEdge * 2.0;
 }
 

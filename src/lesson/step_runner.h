@@ -16,7 +16,7 @@ namespace rt::lesson {
 
 struct RunOptions {
   // Small parameters for quick renders (the documentation test): subdivision <= 3, hemicube resolution <= 32,
-  // samples <= 8, sweeps and subdivision lists cut to their first values, refinement kept small.
+  // samples <= 8, sweep values <= 64, refinement kept small. Lists keep their entries, so placeholders still resolve.
   bool quick = false;
   std::string outputDir;  // where a matrix step writes its export (empty: the export is skipped)
 };
