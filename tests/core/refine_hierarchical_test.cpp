@@ -7,27 +7,31 @@ namespace rt {
 namespace {
 
 TEST(RefineHierarchical, ConvergesToTheFineUniformSolution) {
+  // Few visibility rays keep this quick; the reference and the hierarchy share the same transfer kernel.
   const Scene scene = test::closedRoom();
   RefineOptions fine;
   fine.mode = RefineMode::Uniform;
-  fine.initialMaxEdge = 0.125;
+  fine.initialMaxEdge = 0.15;
+  fine.visibilitySamples = 4;
   const RefinedSolution reference = solveRefined(scene, fine);
 
-  double previous = 1e9;
-  for (double tolerance : {0.05, 0.01, 0.002}) {
+  std::vector<double> errors;
+  for (double tolerance : {0.04, 0.015, 0.006}) {
     RefineOptions o;
     o.mode = RefineMode::Hierarchical;
     o.linkTolerance = tolerance;
-    o.minArea = 0.125 * 0.125 / 2;
+    o.brightnessWeighted = false;  // the plain F oracle: the error bound shrinks with the tolerance
+    o.minArea = 0.15 * 0.15 / 2;
+    o.visibilitySamples = 4;
     const RefinedSolution h = solveRefined(scene, o);
-    const double error = relativeRmsError(h, reference);
-    EXPECT_LT(error, previous * 1.05) << "tolerance " << tolerance << ": " << h.stats.summary();
-    previous = std::min(previous, error);
+    errors.push_back(relativeRmsError(h, reference));
     const double n = static_cast<double>(h.stats.elements);
-    EXPECT_LT(static_cast<double>(h.stats.links), n * n) << h.stats.summary();
+    EXPECT_LT(static_cast<double>(h.stats.links), 0.25 * n * n) << h.stats.summary();
     EXPECT_EQ(h.links.size(), h.stats.links);
   }
-  EXPECT_LT(previous, 0.08);
+  EXPECT_LT(errors[1], errors[0]);
+  EXPECT_LT(errors[2], errors[1]);
+  EXPECT_LT(errors[2], 0.1);
 }
 
 TEST(RefineHierarchical, LeavesReconstructTheHierarchy) {

@@ -64,7 +64,7 @@ inline Scene shadowScene(double floorReflectance = 0.5) {
 inline Scene closedRoom() {
   Scene s;
   s.name = "room";
-  const int light = addMaterial(s, "light", Rgb::Constant(0.0), Rgb::Constant(10.0));
+  const int light = addMaterial(s, "light", Rgb::Constant(0.3), Rgb::Constant(10.0));
   const int white = addMaterial(s, "white", Rgb(0.7, 0.6, 0.5));
   const int red = addMaterial(s, "red", Rgb(0.6, 0.1, 0.1));
   const Vec3 centre(1, 1, 1);
