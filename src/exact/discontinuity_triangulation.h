@@ -1,0 +1,19 @@
+// CGAL's constrained Delaunay triangulation for discontinuity meshing, behind a header without CGAL: the
+// critical lines become constrained edges, then Delaunay refinement (Ruppert/Shewchuk, CGAL Mesh_2) adds
+// Steiner points until triangles are well shaped and no longer than the requested edge. Exact predicates,
+// inexact constructions: crossing critical lines are split at computed (rounded) intersection points.
+#pragma once
+
+#include "core/refine/constrained_triangulation.h"
+
+namespace rt::exact {
+
+// Triangulates the domain; throws std::invalid_argument for a boundary with fewer than 3 points.
+rt::PlanarTriangulation triangulateWithConstraints(const rt::PlanarDomain& domain);
+
+// Installs triangulateWithConstraints as the core's constrained triangulator
+// (rt::setConstrainedTriangulator), so that solveRefined in discontinuity mode uses it. Call once at start-up
+// in programs linking rt_exact.
+void registerDiscontinuityTriangulation();
+
+}  // namespace rt::exact
