@@ -265,6 +265,21 @@ TEST(SceneFiles, SmallScenesMatchTheReferenceFormFactorGeometry) {
     EXPECT_TRUE(materialOfSurface(s, "source").isEmitter());
     EXPECT_FALSE(materialOfSurface(s, "receiver").isEmitter());
   }
+  // The furnace cube's faces are the reference enclosure's, face for face and vertex for vertex.
+  const Scene cube = loadShipped("furnace-cube.json");
+  const json faces = geometryOf("enclosure_unit_cube")["faces"];
+  const std::vector<std::pair<std::string, std::string>> names = {
+      {"floor", "y0"}, {"ceiling", "y1"}, {"back", "z0"}, {"front", "z1"}, {"left", "x0"}, {"right", "x1"}};
+  for (const auto& [surface, face] : names) {
+    SCOPED_TRACE(surface);
+    const std::vector<Vec3> expected = toVertices(faces[face]["vertices"]);
+    const auto patches = patchesOf(cube, surface);
+    ASSERT_EQ(patches.size(), 1u);
+    ASSERT_EQ(patches[0]->vertices.size(), expected.size());
+    for (std::size_t k = 0; k < expected.size(); ++k)
+      EXPECT_TRUE(patches[0]->vertices[k].isApprox(expected[k]));
+  }
+
   const Scene occluded = loadShipped("occluded-plates.json");
   const auto top = patchesOf(occluded, "occluder_top");
   const auto bottom = patchesOf(occluded, "occluder_bottom");
