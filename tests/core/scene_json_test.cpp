@@ -199,6 +199,19 @@ TEST(SceneJson, RejectsMisspeltKey) {
                  "bad.json:6 at /materials/1/reflectence", "unknown key \"reflectence\"");
 }
 
+TEST(SceneJson, RejectsRepeatedKey) {
+  expectRejected(replaced(kTwoSquares, "\"reflectance\": [0.5, 0.5, 0.5]",
+                          "\"reflectance\": [0.5, 0.5, 0.5],\n \"reflectance\": [0.1, 0.1, 0.1]"),
+                 "bad.json:7 at /materials/1/reflectance", "appears twice");
+}
+
+TEST(SceneJson, AcceptsWindowsLineEndings) {
+  std::string text;
+  for (const char c : kTwoSquares) text += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  const Scene s = parseSceneJson(text);
+  EXPECT_EQ(s.patches[1].origin.line, 13);
+}
+
 TEST(SceneJson, RejectsMissingKey) {
   expectRejected(replaced(kTwoSquares, "\"material\": \"white\", ", ""), "bad.json:12 at /surfaces/1",
                  "missing required key \"material\"");

@@ -8,8 +8,8 @@ namespace {
 // pointer.
 class Scanner {
  public:
-  Scanner(const std::string& text, std::unordered_map<std::string, int>& lines)
-      : text_(text), lines_(lines) {}
+  Scanner(const std::string& text, std::unordered_map<std::string, int>& lines, std::string& duplicate)
+      : text_(text), lines_(lines), duplicate_(duplicate) {}
   void value(const std::string& pointer);
 
  private:
@@ -20,6 +20,7 @@ class Scanner {
 
   const std::string& text_;
   std::unordered_map<std::string, int>& lines_;
+  std::string& duplicate_;
   std::size_t pos_ = 0;
   int line_ = 1;
 };
@@ -67,7 +68,9 @@ void Scanner::object(const std::string& pointer) {
     skipWhitespace();
     if (pos_ >= text_.size() || text_[pos_] != ':') return;
     ++pos_;
-    value(pointer + "/" + escapeJsonPointerToken(key));
+    const std::string child = pointer + "/" + escapeJsonPointerToken(key);
+    if (duplicate_.empty() && lines_.count(child)) duplicate_ = child;
+    value(child);
     skipWhitespace();
     if (pos_ >= text_.size()) return;
     if (text_[pos_++] != ',') return;  // '}' ends the object
@@ -111,7 +114,7 @@ std::string Scanner::string() {
 }  // namespace
 
 JsonLineMap::JsonLineMap(const std::string& text) {
-  Scanner(text, lines_).value("");
+  Scanner(text, lines_, duplicate_).value("");
 }
 
 int JsonLineMap::lineOf(const std::string& pointer) const {

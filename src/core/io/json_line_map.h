@@ -14,9 +14,13 @@ class JsonLineMap {
   explicit JsonLineMap(const std::string& text);
   // 1-based line where the value at `pointer` starts; 0 when unknown. "" is the root.
   int lineOf(const std::string& pointer) const;
+  // JSON pointer of the first key that appears twice in one object ("" when none). nlohmann::json keeps only
+  // one of the two values, so a repeated key would otherwise silently lose data.
+  const std::string& firstDuplicateKey() const { return duplicate_; }
 
  private:
   std::unordered_map<std::string, int> lines_;
+  std::string duplicate_;
 };
 
 // RFC 6901 escaping of one reference token ("~" -> "~0", "/" -> "~1").

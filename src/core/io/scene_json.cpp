@@ -38,6 +38,11 @@ class SceneJsonReader {
     Scene scene;
     scene.sourceFile = file_;
     requireType(root_, "", json::value_t::object, "an object with \"materials\" and \"surfaces\"");
+    if (!lines_.firstDuplicateKey().empty()) {
+      const std::string& pointer = lines_.firstDuplicateKey();
+      fail(pointer,
+           "key \"" + pointer.substr(pointer.rfind('/') + 1) + "\" appears twice in the same object");
+    }
     checkKeys(root_, "", {"version", "name", "unit", "camera", "materials", "surfaces"});
     if (root_.contains("version")) {
       const json& v = root_["version"];
