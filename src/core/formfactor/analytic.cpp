@@ -50,24 +50,32 @@ double innerIntegral(const Vec3& p, const Segment& b) {
   return logLineIntegral(b.length - foot, h) - logLineIntegral(-foot, h);
 }
 
-double distanceToSegment(const Vec3& p, const Segment& b) {
-  const double t = std::clamp((p - b.start).dot(b.direction), 0.0, b.length);
-  return (p - (b.start + t * b.direction)).norm();
-}
-
-// Parameter on segment a of the point closest to segment b (the distance along a is convex, minimal there).
-double closestParameter(const Segment& a, const Segment& b) {
-  // Minimise |a0 + s da - b0 - t db|^2 over the box [0,La] x [0,Lb] by alternating projections from the
-  // unconstrained solution; exact for a convex quadratic on a rectangle after clamping both ways.
-  const Vec3 r = a.start - b.start;
-  const double c = a.direction.dot(b.direction);
-  const double e = a.direction.dot(r), f = b.direction.dot(r);
-  const double denominator = 1 - c * c;
-  double s = denominator > 1e-14 ? (c * f - e) / denominator : 0.0;
-  s = std::clamp(s, 0.0, a.length);
-  double t = std::clamp(f + s * c, 0.0, b.length);
-  s = std::clamp(t * c - e, 0.0, a.length);
-  return s;
+// Smallest distance between the segments [p0, p1] and b (Ericson, Real-Time Collision Detection, 5.1.9).
+double segmentDistance(const Vec3& p0, const Vec3& p1, const Segment& b) {
+  const Vec3 d1 = p1 - p0, d2 = b.direction * b.length, r = p0 - b.start;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  double s = 0, t = 0;
+  if (a <= 0 && e <= 0) return r.norm();
+  if (a <= 0) {
+    t = std::clamp(f / e, 0.0, 1.0);
+  } else {
+    const double c = d1.dot(r);
+    if (e <= 0) {
+      s = std::clamp(-c / a, 0.0, 1.0);
+    } else {
+      const double bb = d1.dot(d2), denominator = a * e - bb * bb;
+      s = denominator > 0 ? std::clamp((bb * f - c * e) / denominator, 0.0, 1.0) : 0.0;
+      t = (bb * s + f) / e;
+      if (t < 0) {
+        t = 0;
+        s = std::clamp(-c / a, 0.0, 1.0);
+      } else if (t > 1) {
+        t = 1;
+        s = std::clamp((bb - c) / a, 0.0, 1.0);
+      }
+    }
+  }
+  return (p0 + s * d1 - (b.start + t * d2)).norm();
 }
 
 // Number of Gauss-Legendre points for a panel whose nearest singularity is `ratio` panel lengths away: the
@@ -88,29 +96,18 @@ double integratePanel(const Segment& a, const Segment& b, double s0, double s1, 
   return sum * length;
 }
 
-// int over [s0, s1] of the inner integral, where the distance to b grows monotonically from the `near` end.
-// Panels are laid from the far end towards the near one, each at most as long as its own distance to b (the
-// distance is 1-Lipschitz, so half the distance at the panel's far end guarantees it), which grades them
-// geometrically towards a touching point and keeps every panel's rule converged.
-double integrateMonotone(const Segment& a, const Segment& b, double s0, double s1, bool nearIsStart) {
-  const double total = s1 - s0;
-  if (total <= 0) return 0;
-  const double nearPoint = nearIsStart ? s0 : s1;
-  const double nearDistance = distanceToSegment(a.start + nearPoint * a.direction, b);
-  const double floor = 1e-16 * std::max(a.length, b.length);
-  double remaining = total, sum = 0;
-  for (int panel = 0; panel < 200000 && remaining > 0; ++panel) {
-    const double farPoint = nearIsStart ? s0 + remaining : s1 - remaining;
-    const double farDistance = distanceToSegment(a.start + farPoint * a.direction, b);
-    double step = std::max(0.5 * farDistance, nearDistance);
-    if (step >= remaining || remaining < floor) step = remaining;
-    const double inner = nearIsStart ? farPoint - step : farPoint + step;
-    const double lo = std::min(inner, farPoint), hi = std::max(inner, farPoint);
-    const double panelDistance = std::max(nearDistance, farDistance - step);
-    sum += integratePanel(a, b, lo, hi, panelDistance);
-    remaining -= step;
-  }
-  return sum;
+// int over [s0, s1] of the inner integral. The integrand is analytic except where a point of a meets b; its
+// nearest complex singularity is exactly as far from the real axis as the panel is from b. So a panel at
+// least its own length away from b gets one Gauss rule (order from that ratio); closer panels are bisected,
+// which grades them geometrically towards any touching point and keeps every rule converged.
+double integrateAdaptive(const Segment& a, const Segment& b, double s0, double s1, double floor) {
+  const double length = s1 - s0;
+  if (length <= 0) return 0;
+  const Vec3 p0 = a.start + s0 * a.direction, p1 = a.start + s1 * a.direction;
+  const double distance = segmentDistance(p0, p1, b);
+  if (distance >= length || length <= floor) return integratePanel(a, b, s0, s1, distance);
+  const double middle = 0.5 * (s0 + s1);
+  return integrateAdaptive(a, b, s0, middle, floor) + integrateAdaptive(a, b, middle, s1, floor);
 }
 
 // int_a int_b ln r ds dt over two segments (arc length).
@@ -127,8 +124,7 @@ double edgePairIntegral(const Segment& a, const Segment& b) {
     return logLineIntegral2(a.length - lo, h) - logLineIntegral2(-lo, h) -
            logLineIntegral2(a.length - hi, h) + logLineIntegral2(-hi, h);
   }
-  const double closest = closestParameter(a, b);
-  return integrateMonotone(a, b, 0, closest, false) + integrateMonotone(a, b, closest, a.length, true);
+  return integrateAdaptive(a, b, 0, a.length, 1e-15 * std::max(a.length, b.length));
 }
 
 Vec3 unitNormal(const Vec3* v, int n) {
