@@ -1,5 +1,6 @@
 // Discontinuity meshing: the receivers are triangulated with the shadow boundaries as constrained edges, so
 // that elements do not straddle an umbra or penumbra boundary; then one full solve on that mesh.
+#include <algorithm>
 #include <chrono>
 
 #include "core/polygon.h"
@@ -46,6 +47,8 @@ RefinedSolution solveDiscontinuity(const Scene& scene, const RefineOptions& opti
   std::vector<std::vector<const CriticalSegment*>> byReceiver(scene.patches.size());
   for (const CriticalSegment& s : solution.discontinuities) byReceiver[s.receiver].push_back(&s);
   const ConstrainedTriangulator triangulate = constrainedTriangulator();
+  const Eigen::AlignedBox3d bounds = scene.bounds();
+  const double weldScale = 1e-7 * (bounds.isEmpty() ? 1.0 : bounds.diagonal().norm());
 
   std::vector<Polygon> pieces;
   std::vector<int> patchOf;
@@ -69,7 +72,11 @@ RefinedSolution solveDiscontinuity(const Scene& scene, const RefineOptions& opti
     const PlanarTriangulation t = triangulate(domain);
     for (const auto& tri : t.triangles) {
       Polygon piece{frame.to3d(t.points[tri[0]]), frame.to3d(t.points[tri[1]]), frame.to3d(t.points[tri[2]])};
-      if (polygonArea(piece) <= 1e-12 * patch.area) continue;
+      // Slivers from nearly coincident critical lines would weld into degenerate elements: drop them (their
+      // area is below any meaningful size).
+      const double shortest = std::min(
+          {(piece[1] - piece[0]).norm(), (piece[2] - piece[1]).norm(), (piece[0] - piece[2]).norm()});
+      if (shortest <= weldScale || polygonArea(piece) <= 1e-9 * patch.area) continue;
       if (newellNormal(piece).dot(patch.normal) < 0) std::swap(piece[1], piece[2]);
       pieces.push_back(std::move(piece));
       patchOf.push_back(static_cast<int>(p));

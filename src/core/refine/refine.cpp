@@ -199,13 +199,51 @@ Rgb radiosityAt(const RefinedSolution& solution, int patch, const Vec3& point) {
   return best < 0 ? Rgb::Zero() : Rgb(solution.B.row(best).array());
 }
 
-double relativeRmsError(const RefinedSolution& solution, const RefinedSolution& reference) {
+Rgb interpolatedRadiosityAt(const RefinedSolution& solution, int patch, const Vec3& point) {
+  const Mesh& mesh = solution.mesh;
+  auto vertexValue = [&](int v) {
+    Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+    double area = 0;
+    for (int e : mesh.vertexElements[v])
+      if (mesh.elements[e].patch == patch) {
+        sum += mesh.elements[e].area * solution.B.row(e);
+        area += mesh.elements[e].area;
+      }
+    return Eigen::RowVector3d(area > 0 ? Eigen::RowVector3d(sum / area) : sum);
+  };
+  int best = -1;
+  double bestDistance = 0;
+  for (std::size_t e = 0; e < mesh.size(); ++e) {
+    const Element& element = mesh.elements[e];
+    if (element.patch != patch) continue;
+    const auto& v = element.vertices;
+    for (std::size_t k = 1; k + 1 < v.size(); ++k) {
+      const Vec3 &a = mesh.vertices[v[0]], &b = mesh.vertices[v[k]], &c = mesh.vertices[v[k + 1]];
+      const double whole = (b - a).cross(c - a).dot(element.normal);
+      if (whole <= 0) continue;
+      const double wa = (b - point).cross(c - point).dot(element.normal) / whole;
+      const double wb = (c - point).cross(a - point).dot(element.normal) / whole;
+      const double wc = 1 - wa - wb;
+      if (wa < -1e-9 || wb < -1e-9 || wc < -1e-9) continue;
+      return (wa * vertexValue(v[0]) + wb * vertexValue(v[k]) + wc * vertexValue(v[k + 1]))
+          .transpose()
+          .array();
+    }
+    const double d = (element.centroid - point).norm();
+    if (best < 0 || d < bestDistance) best = static_cast<int>(e), bestDistance = d;
+  }
+  return best < 0 ? Rgb::Zero() : Rgb(solution.B.row(best).array());
+}
+
+double relativeRmsError(const RefinedSolution& solution, const RefinedSolution& reference,
+                        bool interpolated) {
   double sum = 0, mean = 0, area = 0;
   for (std::size_t e = 0; e < reference.mesh.size(); ++e) {
     const Element& element = reference.mesh.elements[e];
     if ((reference.mesh.emission.row(static_cast<Eigen::Index>(e)).array() > 0).any()) continue;
     const double ref = luminance(reference.B.row(static_cast<Eigen::Index>(e)));
-    const Rgb value = radiosityAt(solution, element.patch, element.centroid);
+    const Rgb value = interpolated ? interpolatedRadiosityAt(solution, element.patch, element.centroid)
+                                   : radiosityAt(solution, element.patch, element.centroid);
     const double got = luminance(value.matrix().transpose());
     sum += element.area * (got - ref) * (got - ref);
     mean += element.area * ref;

@@ -134,9 +134,15 @@ RgbField vertexRadiosity(const RefinedSolution& solution);
 // when the point is on no element). Used to compare solutions on different meshes.
 Rgb radiosityAt(const RefinedSolution& solution, int patch, const Vec3& point);
 
+// Radiosity at a point as smooth shading shows it: vertex values (area-weighted averages of the elements of
+// the same patch around each vertex) interpolated linearly over the element's fan triangles.
+Rgb interpolatedRadiosityAt(const RefinedSolution& solution, int patch, const Vec3& point);
+
 // Area-weighted RMS difference of luminance between `solution` and `reference`, sampled at the reference's
 // element centroids, divided by the reference's area-weighted mean luminance over reflecting elements.
-double relativeRmsError(const RefinedSolution& solution, const RefinedSolution& reference);
+// `interpolated` compares the smooth-shaded solution (interpolatedRadiosityAt) instead of the element values.
+double relativeRmsError(const RefinedSolution& solution, const RefinedSolution& reference,
+                        bool interpolated = false);
 
 double luminance(const Eigen::Ref<const Eigen::RowVector3d>& rgb);
 

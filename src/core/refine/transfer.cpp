@@ -65,8 +65,10 @@ std::vector<SurfaceSample> stratifiedSamples(const Polygon& P, int perSide) {
   }
   const int m = std::max(1, perSide);
   const double total = polygonArea(P);
+  if (!(total > 0)) return samples;
   for (const Polygon& t : fanTriangulate(P)) {
     const double w = polygonArea(t) / (total * m * m);
+    if (w <= 0) continue;
     for (int i = 0; i < m; ++i)
       for (int j = 0; j < m; ++j) {
         const double su = std::sqrt((i + 0.5) / m), v = (j + 0.5) / m;
