@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
+#include "core/io/scene_loader.h"
 #include "core/refine/refine.h"
 #include "core/scene.h"
+#include "support/test_paths.h"
 
 namespace rt::exact {
 namespace {
@@ -87,6 +90,32 @@ TEST(DiscontinuityTriangulation, DiscontinuityMeshOfTheShadowSceneFollowsTheUmbr
     }
   }
   EXPECT_LT(radiosityAt(r, 2, Vec3(0, 0, 0))[0], 0.05 * radiosityAt(r, 2, Vec3(1.8, 0, 0))[0]);
+}
+
+}  // namespace
+}  // namespace rt::exact
+
+namespace rt::exact {
+namespace {
+
+// Cornell box numbers for docs/benchmarks.md; disabled by default (a minute or two). Run with
+//   exact_tests --gtest_also_run_disabled_tests --gtest_filter='DiscontinuityTriangulation.DISABLED_*'
+TEST(DiscontinuityTriangulation, DISABLED_CornellBox) {
+  registerDiscontinuityTriangulation();
+  const Scene scene = loadScene(test::sourcePath("scenes/cornell-box.json"));
+  RefineOptions ref;
+  ref.mode = RefineMode::Uniform;
+  ref.initialMaxEdge = 30;
+  const RefinedSolution reference = solveRefined(scene, ref);
+  for (double edge : {193.0, 100.0, 65.0}) {
+    RefineOptions o;
+    o.mode = RefineMode::Discontinuity;
+    o.initialMaxEdge = edge;
+    const RefinedSolution s = solveRefined(scene, o);
+    std::printf("| discontinuity (CGAL), %.0f mm | %zu | %zu | %.2f | %.3f | %.3f |\n   %s\n", edge,
+                s.stats.elements, s.stats.pairsComputed, s.stats.seconds, relativeRmsError(s, reference),
+                relativeRmsError(s, reference, true), s.stats.summary().c_str());
+  }
 }
 
 }  // namespace
