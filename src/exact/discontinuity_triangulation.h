@@ -1,7 +1,7 @@
-// CGAL's constrained Delaunay triangulation for discontinuity meshing, behind a header without CGAL: the
-// critical lines become constrained edges, then Delaunay refinement (Ruppert/Shewchuk, CGAL Mesh_2) adds
-// Steiner points until triangles are well shaped and no longer than the requested edge. Exact predicates,
-// inexact constructions: crossing critical lines are split at computed (rounded) intersection points.
+// CGAL's constrained Delaunay triangulation for discontinuity meshing, behind a header without CGAL: the critical
+// lines become constrained edges (split into pieces of at most half the requested edge), a grid of Steiner points
+// at that spacing fills the interior, and the constrained Delaunay triangulation of it all is the receiver's mesh.
+// Exact predicates, inexact constructions: crossing critical lines are split at computed (rounded) intersections.
 #pragma once
 
 #include "core/refine/constrained_triangulation.h"
