@@ -1,6 +1,8 @@
 // The JSON scene format: what loads, and that every rejection names the file, the line and the JSON path.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "core/io/scene_loader.h"
@@ -262,6 +264,29 @@ TEST(SceneJson, RejectsMissingFileAndUnknownExtension) {
     EXPECT_NE(std::string(e.what()).find("scene.stl: error: unknown scene format '.stl'"), std::string::npos)
         << e.what();
   }
+}
+
+TEST(SceneJson, PlanarityToleranceIsRelativeToThePolygonsSize) {
+  // 1e-4 out of plane is planar for a 500-unit quad (2e-7 of its size) but not for a unit one (1e-4).
+  const Scene big =
+      parseSceneJson(withSourcePolygon("[[0, 0, 0], [500, 0, 0], [500, 500, 0.0001], [0, 500, 0]]"));
+  EXPECT_TRUE(big.warnings.empty());
+  const Scene small = parseSceneJson(withSourcePolygon("[[0, 0, 0], [1, 0, 0], [1, 1, 0.0001], [0, 1, 0]]"));
+  EXPECT_EQ(small.warnings.size(), 1u);
+}
+
+TEST(SceneJson, TheDocumentedExampleLoads) {
+  std::ifstream in(test::sourcePath("docs/scene-format.md"));
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string doc = text.str();
+  const std::size_t begin = doc.find("```json\n");
+  ASSERT_NE(begin, std::string::npos);
+  const std::size_t end = doc.find("```", begin + 8);
+  const Scene s = parseSceneJson(doc.substr(begin + 8, end - begin - 8), "scene-format.md");
+  EXPECT_EQ(s.patches.size(), 2u);
+  EXPECT_TRUE(s.camera.has_value());
+  EXPECT_TRUE((s.materials[1].reflectance == Rgb::Constant(0.5)).all());
 }
 
 TEST(SceneJson, LoadsCornellBoxWithSplitLeftWall) {
