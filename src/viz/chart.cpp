@@ -76,8 +76,9 @@ void writeLineChart(const std::vector<Series>& series, const ChartOptions& optio
     table->AddColumn(y);
     vtkPlot* plot = chart->AddPlot(vtkChart::LINE);
     plot->SetInputData(table, 0, 1);
-    // Black is the palette's last colour; start with the seven chromatic ones.
-    const Rgb8 colour = qualitativeColour(static_cast<int>(s % 7));
+    // Okabe-Ito without its yellow (too light on white) until the other seven are used.
+    static const int order[] = {0, 1, 2, 4, 5, 6, 7, 3};
+    const Rgb8 colour = qualitativeColour(order[s % 8]);
     plot->SetColor(colour[0], colour[1], colour[2], 255);
     plot->SetWidth(static_cast<float>(2.5 * scale));
     if (auto* points = vtkPlotPoints::SafeDownCast(plot)) {

@@ -51,9 +51,9 @@ double normalised(double v, const ScalarLegend& legend) {
 std::string defaultTitle(SceneColouring colouring) {
   switch (colouring) {
     case SceneColouring::UnshotPower:
-      return "unshot power (W)";
+      return "unshot\npower (W)";
     case SceneColouring::Error:
-      return "|B - B_ref| (W/m^2)";
+      return "|B - B_ref|\n(W/m^2)";
     default:
       return "value";
   }

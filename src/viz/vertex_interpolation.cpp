@@ -1,5 +1,7 @@
 #include "viz/vertex_interpolation.h"
 
+#include <Eigen/QR>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -130,20 +132,39 @@ CornerField smoothCornerValues(const Mesh& mesh, const RgbField& perElement) {
     for (int e : elements) sum += perElement.row(e).transpose().array();
     value[key] = sum / static_cast<double>(elements.size());
   }
-  // Boundary vertices: extrapolated through each element from its interior corners.
+  // Boundary vertices: extrapolated through each element around them, B_e + g_e . (v - c_e), with g_e the
+  // least-squares gradient from the centroids of e's neighbours in the region. On a regular grid this is the
+  // classic 2 B_e - B_interior of the book; in general it is exact for a linear field on any mesh.
+  std::map<int, Eigen::Matrix3Xd> gradient;  // element -> 3 x 3 (one column per channel)
+  auto gradientOf = [&](int e) -> const Eigen::Matrix3Xd& {
+    auto found = gradient.find(e);
+    if (found != gradient.end()) return found->second;
+    std::vector<int> neighbours;
+    for (int v : mesh.elements[e].vertices)
+      for (int other : mesh.vertexElements[v])
+        if (other != e && region[other] == region[e] &&
+            std::find(neighbours.begin(), neighbours.end(), other) == neighbours.end())
+          neighbours.push_back(other);
+    Eigen::Matrix3Xd g = Eigen::Matrix3Xd::Zero(3, 3);
+    if (!neighbours.empty()) {
+      Eigen::MatrixXd A(static_cast<Eigen::Index>(neighbours.size()), 3), b(A.rows(), 3);
+      for (Eigen::Index k = 0; k < A.rows(); ++k) {
+        A.row(k) = (mesh.elements[neighbours[k]].centroid - mesh.elements[e].centroid).transpose();
+        b.row(k) = perElement.row(neighbours[k]) - perElement.row(e);
+      }
+      // Minimum-norm solution: no gradient along the normal, and none across a strip one element wide.
+      g = A.completeOrthogonalDecomposition().solve(b);
+    }
+    return gradient.emplace(e, g).first->second;
+  };
   for (const auto& [key, elements] : cornered) {
     if (interior(key)) continue;
     Rgb sum = Rgb::Zero();
     for (int e : elements) {
-      const Rgb own = perElement.row(e).transpose().array();
-      Rgb inner = Rgb::Zero();
-      int count = 0;
-      for (int v : mesh.elements[e].vertices)
-        if (const Key other{key.first, v}; interior(other) && !tVertices.count(other)) {
-          inner += value[other];
-          ++count;
-        }
-      sum += count > 0 ? Rgb((2.0 * own - inner / count).max(0.0)) : own;
+      const Vec3 offset = mesh.vertices[key.second] - mesh.elements[e].centroid;
+      const Rgb extrapolated =
+          perElement.row(e).transpose().array() + (gradientOf(e).transpose() * offset).array();
+      sum += extrapolated.max(0.0);
     }
     value[key] = sum / static_cast<double>(elements.size());
   }

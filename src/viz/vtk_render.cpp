@@ -198,6 +198,7 @@ vtkSmartPointer<vtkScalarBarActor> makeColourBar(ColourMap map, double min, doub
   bar->SetPosition(0.84, 0.1);
   bar->SetPosition2(0.15, 0.78);
   bar->SetTextPositionToPrecedeScalarBar();
+  bar->SetVerticalTitleSeparation(fontSize);  // keeps the top label clear of the title
   return bar;
 }
 

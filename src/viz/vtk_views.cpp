@@ -116,7 +116,7 @@ vtkSmartPointer<vtkRenderer> makeSceneRenderer(const Mesh& mesh, const Camera& c
   renderer->ResetCameraClippingRange();
 
   if (!options.caption.empty())
-    renderer->AddViewProp(makeCaption(options.caption, readableFontSize(windowHeight, scale, 0.03)));
+    renderer->AddViewProp(makeCaption(options.caption, readableFontSize(windowHeight, scale, 0.028)));
   return renderer;
 }
 
@@ -125,15 +125,15 @@ void addSceneView(vtkRenderWindow* window, const Mesh& mesh, const Camera& camer
   const ScenePaint paint = paintScene(mesh, data, options);
   const int height = window->GetSize()[1] > 0 ? window->GetSize()[1] : options.image.height;
   const bool bar = paint.colourBar;
-  const double sceneViewport[4] = {0.0, 0.0, bar ? 0.8 : 1.0, 1.0};
+  const double sceneViewport[4] = {0.0, 0.0, bar ? 0.78 : 1.0, 1.0};
   window->AddRenderer(makeSceneRenderer(mesh, camera, paint, options, height, sceneViewport));
   if (!bar) return;
   auto barRenderer = vtkSmartPointer<vtkRenderer>::New();
-  barRenderer->SetViewport(0.8, 0.0, 1.0, 1.0);
+  barRenderer->SetViewport(0.78, 0.0, 1.0, 1.0);
   barRenderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
   const double scale = options.dpi > 0 ? options.dpi / 96.0 : 1.0;
   auto colourBar = makeColourBar(paint.legend.map, paint.legend.min, paint.legend.max, paint.legend.logScale,
-                                 paint.legend.title, readableFontSize(height, scale, 0.026));
+                                 paint.legend.title, readableFontSize(height, scale, 0.024));
   colourBar->SetPosition(0.08, 0.08);
   colourBar->SetPosition2(0.84, 0.8);
   barRenderer->AddViewProp(colourBar);

@@ -5,6 +5,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include "viz/drawing.h"
 #include "viz/scene_view.h"
 
 class vtkPolyData;
@@ -27,5 +28,9 @@ vtkSmartPointer<vtkRenderer> makeSceneRenderer(const Mesh& mesh, const Camera& c
 // window.
 void addSceneView(vtkRenderWindow* window, const Mesh& mesh, const Camera& camera, const SceneViewData& data,
                   const SceneViewOptions& options);
+
+// A 2D view (matrix, hemicube faces, Nusselt disk, visibility) as a renderer holding a context actor: the
+// drawing is fitted to the renderer's size, so it follows the host window.
+vtkSmartPointer<vtkRenderer> makeDrawingRenderer(const Drawing& drawing);
 
 }  // namespace rt::viz

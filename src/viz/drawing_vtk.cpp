@@ -1,0 +1,133 @@
+// Paints a Drawing with vtkContext2D: the same calls render to OpenGL (PNG) and to the SVG/PDF context
+// devices.
+#include <vtkBrush.h>
+#include <vtkContext2D.h>
+#include <vtkContextActor.h>
+#include <vtkContextItem.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkObjectFactory.h>
+#include <vtkPen.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkStdString.h>
+#include <vtkTextProperty.h>
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+#include "viz/drawing.h"
+#include "viz/vtk_render.h"
+#include "viz/vtk_views.h"
+
+namespace rt::viz {
+namespace {
+
+class DrawingItem : public vtkContextItem {
+ public:
+  static DrawingItem* New();
+  vtkTypeMacro(DrawingItem, vtkContextItem) void setDrawing(Drawing drawing) {
+    drawing_ = std::move(drawing);
+  }
+
+  bool Paint(vtkContext2D* painter) override {
+    // Fitted to the scene (the app's window may differ from the figure size), centred, fonts scaled alike.
+    double scale = 1.0;
+    Vec2 offset = Vec2::Zero();
+    if (vtkContextScene* scene = GetScene();
+        scene && scene->GetSceneWidth() > 0 && scene->GetSceneHeight() > 0) {
+      scale = std::min(scene->GetSceneWidth() / drawing_.width, scene->GetSceneHeight() / drawing_.height);
+      offset = 0.5 * Vec2(scene->GetSceneWidth() - scale * drawing_.width,
+                          scene->GetSceneHeight() - scale * drawing_.height);
+    }
+    std::vector<float> xy;
+    for (Drawing::Shape shape : drawing_.shapes) {
+      xy.clear();
+      for (const Vec2& p : shape.points) {
+        xy.push_back(static_cast<float>(offset.x() + scale * p.x()));
+        xy.push_back(static_cast<float>(offset.y() + scale * p.y()));
+      }
+      shape.fontSize *= scale;
+      shape.strokeWidth *= scale;
+      const int n = static_cast<int>(shape.points.size());
+      switch (shape.kind) {
+        case Drawing::Kind::Polygon:
+          if (n < 3) break;
+          painter->GetPen()->SetLineType(vtkPen::NO_PEN);
+          painter->GetBrush()->SetColor(shape.fill[0], shape.fill[1], shape.fill[2], 255);
+          painter->DrawPolygon(xy.data(), n);
+          if (shape.strokeWidth > 0) {
+            xy.push_back(xy[0]);
+            xy.push_back(xy[1]);
+            strokePen(painter, shape);
+            painter->DrawPoly(xy.data(), n + 1);
+          }
+          break;
+        case Drawing::Kind::Polyline:
+          if (n < 2 || shape.strokeWidth <= 0) break;
+          strokePen(painter, shape);
+          painter->DrawPoly(xy.data(), n);
+          break;
+        case Drawing::Kind::Text: {
+          if (n < 1 || shape.text.empty()) break;
+          vtkTextProperty* text = painter->GetTextProp();
+          text->SetFontFamilyToArial();
+          text->SetFontSize(static_cast<int>(shape.fontSize + 0.5));
+          text->SetColor(shape.fill[0] / 255.0, shape.fill[1] / 255.0, shape.fill[2] / 255.0);
+          text->SetBold(shape.bold);
+          text->SetItalic(false);
+          text->SetShadow(false);
+          text->SetOrientation(shape.angleDegrees);
+          text->SetJustification(shape.hAlign == Drawing::Align::Start    ? VTK_TEXT_LEFT
+                                 : shape.hAlign == Drawing::Align::Centre ? VTK_TEXT_CENTERED
+                                                                          : VTK_TEXT_RIGHT);
+          text->SetVerticalJustification(shape.vAlign == Drawing::Align::Start    ? VTK_TEXT_BOTTOM
+                                         : shape.vAlign == Drawing::Align::Centre ? VTK_TEXT_CENTERED
+                                                                                  : VTK_TEXT_TOP);
+          painter->DrawString(xy[0], xy[1], vtkStdString(shape.text));
+          break;
+        }
+      }
+    }
+    return true;
+  }
+
+ private:
+  static void strokePen(vtkContext2D* painter, const Drawing::Shape& shape) {
+    painter->GetPen()->SetLineType(vtkPen::SOLID_LINE);
+    painter->GetPen()->SetColor(shape.stroke[0], shape.stroke[1], shape.stroke[2], 255);
+    painter->GetPen()->SetWidth(static_cast<float>(shape.strokeWidth));
+  }
+  Drawing drawing_;
+};
+vtkStandardNewMacro(DrawingItem);
+
+}  // namespace
+
+vtkSmartPointer<vtkRenderer> makeDrawingRenderer(const Drawing& drawing) {
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->SetBackground(drawing.background[0] / 255.0, drawing.background[1] / 255.0,
+                          drawing.background[2] / 255.0);
+  auto actor = vtkSmartPointer<vtkContextActor>::New();
+  auto item = vtkSmartPointer<DrawingItem>::New();
+  item->setDrawing(drawing);
+  actor->GetScene()->AddItem(item);
+  renderer->AddActor(actor);
+  return renderer;
+}
+
+void writeDrawing(const Drawing& drawing, const std::string& path) {
+  figureFormatOf(path);
+  auto view = vtkSmartPointer<vtkContextView>::New();
+  view->SetRenderWindow(
+      makeOffscreenWindow(static_cast<int>(drawing.width), static_cast<int>(drawing.height)));
+  view->GetRenderer()->SetBackground(drawing.background[0] / 255.0, drawing.background[1] / 255.0,
+                                     drawing.background[2] / 255.0);
+  auto item = vtkSmartPointer<DrawingItem>::New();
+  item->setDrawing(drawing);
+  view->GetScene()->AddItem(item);
+  writeContextView(view, path);
+}
+
+}  // namespace rt::viz
