@@ -8,6 +8,8 @@ cd "$(dirname "$0")"
 what=${1:-app}
 ./install-deps.sh
 jobs=$(nproc)
+# Paths relative to the checkout in ccache's keys, so that clones in other folders share the cache.
+export CCACHE_BASEDIR="$PWD"
 case "$what" in
   app)
     cmake --preset release >/dev/null
