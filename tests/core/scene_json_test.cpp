@@ -289,6 +289,34 @@ TEST(SceneJson, TheDocumentedExampleLoads) {
   EXPECT_TRUE((s.materials[1].reflectance == Rgb::Constant(0.5)).all());
 }
 
+TEST(SceneJson, EveryTruncationIsAnInputErrorNeverACrash) {
+  for (std::size_t length = 0; length < kTwoSquares.size(); ++length) {
+    try {
+      parseSceneJson(kTwoSquares.substr(0, length), "cut.json");
+      ADD_FAILURE() << "a scene cut after " << length << " characters loaded";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.where().file, "cut.json");
+    }
+  }
+}
+
+TEST(SceneJson, CorruptedBytesGiveInputErrorsOnly) {
+  // Every position overwritten by characters that matter to JSON: the result loads or is an InputError.
+  int loaded = 0;
+  for (std::size_t at = 0; at < kTwoSquares.size(); ++at) {
+    for (const char c : std::string("]}\",-0e9x")) {
+      std::string text = kTwoSquares;
+      text[at] = c;
+      try {
+        parseSceneJson(text, "bad.json");
+        ++loaded;
+      } catch (const InputError&) {
+      }
+    }
+  }
+  EXPECT_GT(loaded, 0);  // e.g. a digit changed inside a coordinate
+}
+
 TEST(SceneJson, LoadsCornellBoxWithSplitLeftWall) {
   const std::string path = test::sourcePath("scenes/cornell-box.json");
   const Scene s = loadScene(path);

@@ -195,6 +195,26 @@ TEST(SceneObj, RejectsMissingFile) {
   }
 }
 
+TEST(SceneObj, TruncatedAndCorruptedFilesGiveInputErrorsOnly) {
+  std::string obj, mtl;
+  int loaded = 0;
+  auto attempt = [&](const std::string& objText, const std::string& mtlText) {
+    try {
+      loadSceneObj(writeScene(objText, mtlText));
+      ++loaded;
+    } catch (const InputError&) {
+    }
+  };
+  for (std::size_t length = 0; length <= kObj.size(); length += 7) attempt(kObj.substr(0, length), kMtl);
+  for (std::size_t length = 0; length <= kMtl.size(); length += 3) attempt(kObj, kMtl.substr(0, length));
+  for (std::size_t at = 0; at < kObj.size(); at += 3) {
+    std::string text = kObj;
+    text[at] = at % 2 ? '-' : '/';
+    attempt(text, kMtl);
+  }
+  EXPECT_GT(loaded, 0);
+}
+
 TEST(SceneObj, RejectsBadCameraComment) {
   expectRejected(replaced(kObj, "fov_y_degrees 30", "fov_y_degrees"), kMtl, "two.obj:3", "camera comment");
 }
