@@ -1,0 +1,102 @@
+// Element-to-element form factors: F_ij = (1/A_i) integral over i of F(dA at x -> visible part of j), by adaptive
+// cubature. Also the lesson-facing views of the same computation: the visible region from a point, the cubature points.
+#include <algorithm>
+#include <cmath>
+
+#include "exact/adaptive_cubature.h"
+#include "exact/exact_kernel.h"
+#include "exact/exact_reference.h"
+#include "exact/point_evaluator.h"
+#include "exact/shaft.h"
+
+namespace rt::exact {
+namespace {
+
+CubatureSettings settingsFor(const ExactOptions& options, bool occluded) {
+  CubatureSettings settings;
+  settings.order = options.ruleOrder;
+  settings.maxEvaluations = options.maxEvaluations;
+  // Occluded integrands have kinks along shadow boundaries: split once before adapting so that a shadow smaller than
+  // the element cannot slip between identical coarse and refined estimates.
+  settings.initialSplits = occluded ? 1 : 0;
+  const double relative = occluded ? options.occludedTolerance : options.tolerance;
+  const double floor = options.absoluteFloor;
+  settings.tolerance = [relative, floor](double estimate) { return relative * std::max(std::abs(estimate), floor); };
+  return settings;
+}
+
+EntryResult integratePair(const Mesh& mesh, const PairGeometry& pair, const ExactOptions& options,
+                          std::vector<CubaturePoint>* points) {
+  EntryResult entry;
+  entry.facing = pair.facing;
+  entry.occluded = !pair.occluders.empty();
+  if (!pair.facing) return entry;
+  const PointEvaluator evaluate(pair, options.booleans);
+  const AdaptiveCubature cubature(settingsFor(options, entry.occluded));
+  std::vector<WeightedPoint> finalPoints;
+  const auto f = [&](const Vec3& x) { return evaluate(x); };
+  const CubatureResult result = cubature.integrate(pair.integrationDomain, f, points ? &finalPoints : nullptr);
+  const double area = mesh.elements[pair.source].area;
+  entry.value = result.value / area;
+  entry.errorEstimate = result.errorEstimate / area;
+  entry.evaluations = result.evaluations;
+  entry.exactEvaluations = evaluate.exactEvaluations();
+  entry.splitEvaluations = evaluate.splitEvaluations();
+  entry.converged = result.converged;
+  if (points)
+    for (const WeightedPoint& p : finalPoints) points->push_back({p.position, p.weight, evaluate(p.position)});
+  return entry;
+}
+
+}  // namespace
+
+ExactOptions exactOptionsFor(double tolerance) {
+  ExactOptions options;
+  if (tolerance > 0 && std::isfinite(tolerance)) {
+    options.tolerance = tolerance;
+    options.occludedTolerance = std::max(tolerance, 1e-7);
+  }
+  options.booleans = Booleans::Split;
+  return options;
+}
+
+EntryResult elementFormFactor(const Mesh& mesh, int source, int receiver, const ExactOptions& options,
+                              std::vector<CubaturePoint>* points) {
+  if (source == receiver) return EntryResult{0, 0, false, false, 0, 0, 0, true};  // planar elements do not see themselves
+  return integratePair(mesh, setUpPair(mesh, source, receiver), options, points);
+}
+
+std::vector<CubaturePoint> cubaturePoints(const Mesh& mesh, int source, int receiver, const ExactOptions& options) {
+  std::vector<CubaturePoint> points;
+  elementFormFactor(mesh, source, receiver, options, &points);
+  return points;
+}
+
+VisibleRegion visibleRegion(const Mesh& mesh, int source, const Vec3& point, int receiver) {
+  VisibleRegion region;
+  region.source = source;
+  region.receiver = receiver;
+  region.point = point;
+  if (source == receiver) return region;
+  const PairGeometry pair = setUpPair(mesh, source, receiver);
+  region.occluders = pair.occluders;
+  const detail::ExactVisibility visibility = detail::exactVisibility(
+      point, pair.sourceNormal, pair.receiverPolygon, pair.receiverNormal, pair.occluderPolygons);
+  region.facing = visibility.projection.receiverFacesPoint;
+  region.clippedReceiver = visibility.projection.clippedReceiver;
+  region.occluderProjections = visibility.projection.projections;
+  for (int owner : visibility.projection.projectionOwners) region.projectionOwners.push_back(pair.occluders[owner]);
+  region.visible = visibility.visible;
+  region.formFactor = pointToRegionFormFactor(point, pair.sourceNormal, region.visible);
+  region.unoccludedFormFactor = pointToPolygonFormFactor(point, pair.sourceNormal, region.clippedReceiver);
+  return region;
+}
+
+Eigen::MatrixXd errorMap(const FormFactorMatrix& method, const FormFactorMatrix& exact) {
+  if (method.rows() != exact.rows() || method.cols() != exact.cols())
+    throw std::invalid_argument("errorMap: matrices of different sizes (" + std::to_string(method.rows()) + " vs " +
+                                std::to_string(exact.rows()) + " rows)");
+  return (method - exact).cwiseAbs();
+}
+
+}  // namespace rt::exact

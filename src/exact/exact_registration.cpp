@@ -1,7 +1,0 @@
-#include "exact/exact_reference.h"
-
-namespace rt::exact {
-
-void registerExactMethod() {}
-
-}  // namespace rt::exact

@@ -1,0 +1,46 @@
+#include "exact/geometry_util.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace rt::exact {
+
+Polygon clipToHalfspace(const Polygon& polygon, const Vec3& point, const Vec3& normal) {
+  const std::size_t n = polygon.size();
+  std::vector<double> side(n);
+  bool allInside = true;
+  for (std::size_t k = 0; k < n; ++k) {
+    side[k] = normal.dot(polygon[k] - point);
+    allInside = allInside && side[k] >= 0;
+  }
+  if (allInside) return polygon;
+  Polygon out;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t l = (k + 1) % n;
+    if (side[k] >= 0) out.push_back(polygon[k]);
+    if ((side[k] > 0 && side[l] < 0) || (side[k] < 0 && side[l] > 0)) {
+      const double t = side[k] / (side[k] - side[l]);
+      out.push_back(polygon[k] + t * (polygon[l] - polygon[k]));
+    }
+  }
+  if (out.size() < 3) out.clear();
+  return out;
+}
+
+Eigen::AlignedBox3d boundsOf(const Polygon& polygon) {
+  Eigen::AlignedBox3d box;
+  for (const Vec3& v : polygon) box.extend(v);
+  return box;
+}
+
+std::pair<double, double> distanceRange(const Polygon& polygon, const Vec3& point, const Vec3& normal) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Vec3& v : polygon) {
+    const double d = normal.dot(v - point);
+    lo = std::min(lo, d);
+    hi = std::max(hi, d);
+  }
+  return {lo, hi};
+}
+
+}  // namespace rt::exact
