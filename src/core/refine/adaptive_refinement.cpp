@@ -4,6 +4,8 @@
 // solve.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <limits>
 
 #include "core/polygon.h"
 #include "core/refine/dense_transfer.h"
@@ -20,8 +22,39 @@ double secondsSince(Clock::time_point t) {
 
 // Elements whose radiosity jumps against a neighbour's by more than the threshold, largest jumps first,
 // limited to what the element budget allows and to elements whose children would not be smaller than minEdge.
+// Variation of the direct illumination over an element: reflected direct radiosity rho E F V evaluated near
+// its corners and at its centroid (closed-form F to each emitting patch, visibility by rays). This sees what
+// neighbour jumps cannot: a gradient or a shadow edge inside an element that has no neighbour on its patch
+// (the top of a Cornell block is one element at the start).
+double directVariation(const Scene& scene, const Mesh& mesh, int e, const VisibilityOracle& visibility,
+                       const std::vector<int>& emitters,
+                       const std::vector<std::vector<SurfaceSample>>& lightSamples) {
+  const Element& element = mesh.elements[e];
+  if (emitters.empty() || (mesh.reflectance.row(e).array() <= 0).all()) return 0.0;
+  std::vector<Vec3> points{element.centroid};
+  for (int v : element.vertices)
+    points.push_back(element.centroid + 0.9 * (mesh.vertices[v] - element.centroid));
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Vec3& x : points) {
+    Eigen::RowVector3d direct = Eigen::RowVector3d::Zero();
+    for (std::size_t l = 0; l < emitters.size(); ++l) {
+      const Patch& light = scene.patches[emitters[l]];
+      if (emitters[l] == element.patch) continue;
+      const double F = pointToPolygonLambert(x, element.normal, light.vertices, light.normal);
+      if (F <= 0) continue;
+      const double V = visibility.visibleFraction(x, lightSamples[l], element.patch, emitters[l]);
+      direct += F * V * scene.materialOf(light).emission.matrix().transpose();
+    }
+    const double y = luminance((mesh.reflectance.row(e).array() * direct.array()).matrix());
+    lo = std::min(lo, y);
+    hi = std::max(hi, y);
+  }
+  return hi - lo;
+}
+
 std::vector<int> elementsToSplit(const Scene& scene, const Mesh& mesh, const RgbField& B,
-                                 const std::vector<TVertex>& tVertices, const RefineOptions& options) {
+                                 const std::vector<TVertex>& tVertices, const RefineOptions& options,
+                                 const VisibilityOracle& visibility) {
   const std::size_t n = mesh.size();
   // The scale of "a large jump": the mean radiosity of the reflecting elements (of all, when every one
   // emits).
@@ -43,11 +76,24 @@ std::vector<int> elementsToSplit(const Scene& scene, const Mesh& mesh, const Rgb
       const double d = std::abs(luminance(B.row(i)) - luminance(B.row(j)));
       jump[i] = std::max(jump[i], d);
     }
+  std::vector<int> emitters;
+  std::vector<std::vector<SurfaceSample>> lightSamples;
+  for (std::size_t p = 0; p < scene.patches.size(); ++p)
+    if (scene.materialOfPatch(static_cast<int>(p)).isEmitter()) {
+      emitters.push_back(static_cast<int>(p));
+      lightSamples.push_back(stratifiedSamples(scene.patches[p].vertices, 3));
+    }
+  for (std::size_t i = 0; i < n; ++i)
+    jump[i] = std::max(jump[i],
+                       directVariation(scene, mesh, static_cast<int>(i), visibility, emitters, lightSamples));
   std::vector<int> marked;
   for (std::size_t i = 0; i < n; ++i)
     if (jump[i] > threshold && maxEdgeLength(mesh.polygon(static_cast<int>(i))) >= 2 * options.minEdge)
       marked.push_back(static_cast<int>(i));
-  std::sort(marked.begin(), marked.end(), [&](int a, int b) { return jump[a] > jump[b]; });
+  // Under a tight budget, split where the error is largest: a jump over a large element costs more than the
+  // same jump over a small one (the L2 error of a constant element grows like jump x sqrt(area)).
+  auto priority = [&](int e) { return jump[e] * std::sqrt(mesh.elements[e].area); };
+  std::sort(marked.begin(), marked.end(), [&](int a, int b) { return priority(a) > priority(b); });
   const std::size_t room = options.maxElements > static_cast<int>(n) ? (options.maxElements - n) / 3 : 0;
   if (marked.size() > room) marked.resize(room);
   std::sort(marked.begin(), marked.end());
@@ -90,7 +136,7 @@ RefinedSolution refineLoop(const Scene& scene, const RefineOptions& options, Pro
     std::vector<TVertex> tVertices = findTVertices(mesh);
 
     std::vector<int> split;
-    if (pass + 1 < passes) split = elementsToSplit(scene, mesh, B, tVertices, options);
+    if (pass + 1 < passes) split = elementsToSplit(scene, mesh, B, tVertices, options, visibility);
     record.split = split.size();
     record.seconds = secondsSince(passStart);
     solution.stats.passes.push_back(record);
