@@ -1,5 +1,6 @@
 // radiosity lesson list | check | render: the lessons in lessons/ without the app.
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -94,6 +95,8 @@ void render(const LessonArguments& a, const std::string& output, bool quick, con
   options.quick = quick;
   std::vector<lesson::RenderedLesson> rendered;
   ProgressLine progress(true);
+  std::filesystem::create_directories(output);
+  std::ofstream skipped(std::filesystem::path(output) / "skipped.txt");  // figures this build could not draw
   for (const auto& file : a.files()) {
     const lesson::Lesson l = lesson::loadLesson(file, folders.scenes);
     options.outputDir = (std::filesystem::path(output) / l.id).string();
@@ -101,7 +104,16 @@ void render(const LessonArguments& a, const std::string& output, bool quick, con
     lesson::RenderedLesson page = renderedHeader(l);
     for (const auto& step : l.steps) {
       progress.report(static_cast<double>(step.index) / static_cast<double>(l.steps.size()), l.id);
-      const lesson::StepResult result = runner.run(l, step, progress);
+      lesson::StepResult result;
+      try {
+        result = runner.run(l, step, progress);
+      } catch (const lesson::MethodUnavailable& e) {
+        // Built without an optional library: say so on the page and in skipped.txt, keep going.
+        std::cerr << "radiosity: " << e.what() << " (step skipped)\n";
+        page.steps.push_back({step.title, "*" + e.message() + ": this step was not computed.*\n", {}});
+        for (const auto& f : step.figureFiles()) skipped << l.id << "/" << f << "\n";
+        continue;
+      }
       lesson::RenderedStep s{step.title, lesson::resolvedText(l, step, result), {}};
       try {
         s.figures = renderStepFigures(l, step, result, options.outputDir, figures);

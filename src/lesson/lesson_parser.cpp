@@ -432,8 +432,8 @@ const std::vector<std::string>& stepKeys() {
 }
 
 const std::vector<std::string>& knownMethods() {
-  static const std::vector<std::string> methods{"analytic",   "hemicube", "raycast",
-                                                "montecarlo", "nusselt",  "exact"};
+  static const std::vector<std::string> methods{
+      "analytic", "analytic-visibility", "hemicube", "raycast", "montecarlo", "nusselt", "exact"};
   return methods;
 }
 

@@ -271,7 +271,7 @@ void computeBenchmark(StageContext& c) {
       try {
         F = c.runner.formFactors(r.mesh, c.meshKey, m, c.optionsFor(m, p.sweep[k]), stats, c.progress);
       } catch (const std::invalid_argument& e) {
-        c.fail("methods", e.what());
+        c.failUnavailable("methods", m, e.what());
       }
       const double measured = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       BenchmarkPoint point{m, p.sweep[k], stats.seconds > 0 ? stats.seconds : measured, 0};

@@ -1,6 +1,9 @@
 #include <chrono>
 
+#include <algorithm>
+
 #include "core/solvers/solver.h"
+#include "lesson/lesson_parser.h"
 #include "lesson/step_stages.h"
 
 namespace rt::lesson::detail {
@@ -12,6 +15,14 @@ SourceLocation StageContext::at(const std::string& key) const {
 
 void StageContext::fail(const std::string& key, const std::string& message) const {
   throw InputError(at(key), "step '" + step.title + "': " + message);
+}
+
+void StageContext::failUnavailable(const std::string& key, const std::string& name, const std::string& what) const {
+  const auto& known = knownMethods();
+  if (std::find(known.begin(), known.end(), name) != known.end())
+    throw MethodUnavailable(at(key), "step '" + step.title + "': form-factor method '" + name +
+                                         "' is not included in this build");
+  fail(key, what);
 }
 
 std::string StageContext::method() const {
@@ -53,7 +64,7 @@ std::shared_ptr<const FormFactorMatrix> StageContext::formFactors(const Mesh& me
   try {
     return runner.formFactors(mesh, key, name, optionsFor(name, 0), stats, progress);
   } catch (const std::invalid_argument& e) {
-    fail(fieldKey, e.what());
+    failUnavailable(fieldKey, name, e.what());
   }
 }
 

@@ -8,11 +8,18 @@
 #include <string>
 #include <tuple>
 
+#include "core/input_error.h"
 #include "core/progress.h"
 #include "lesson/lesson.h"
 #include "lesson/step_result.h"
 
 namespace rt::lesson {
+
+// A step names a method the registries know of but this build does not include (e.g. "exact" without CGAL).
+class MethodUnavailable : public InputError {
+ public:
+  using InputError::InputError;
+};
 
 struct RunOptions {
   // Small parameters for quick renders (the documentation test): subdivision <= 3, hemicube resolution <= 32,

@@ -1,0 +1,130 @@
+// Facts the lessons state in words, checked on the lessons' own steps (same scene, same parameters). When a
+// lesson's text changes its claim, the test here changes with it.
+#include <gtest/gtest.h>
+
+#include "core/input_error.h"
+#include "lesson/step_runner.h"
+#include "lesson_test_support.h"
+
+namespace rt::lesson {
+namespace {
+
+class LessonFacts : public ::testing::Test {
+ protected:
+  void SetUp() override { test::ensureAnalyticMethod(); }
+  // Runs the step that draws `figure`; skips the test when the build lacks a method the step needs.
+  StepResult run(const std::string& lessonId, const std::string& figure) {
+    lesson_ = test::shippedLesson(lessonId);
+    const Step& step = test::stepWithFigure(lesson_, figure);
+    for (const auto& m : {step.parameters.method, step.parameters.reference})
+      if (!m.empty() && step.fields.count(m == step.parameters.method ? "method" : "reference") &&
+          !test::hasMethod(m))
+        skip_ = "form-factor method '" + m + "' is not in this build";
+    for (const auto& m : step.parameters.methods)
+      if (!test::hasMethod(m)) skip_ = "form-factor method '" + m + "' is not in this build";
+    if (!skip_.empty()) return {};
+    StepRunner runner(test::repoFolders().scenes);
+    StepResult r = runner.run(lesson_, step);
+    EXPECT_NO_THROW(resolvedText(lesson_, step, r));
+    return r;
+  }
+  std::string skip_;
+  Lesson lesson_;
+};
+
+#define RUN_OR_SKIP(var, lesson, figure)      \
+  const StepResult var = run(lesson, figure); \
+  if (!skip_.empty()) GTEST_SKIP() << skip_
+
+TEST_F(LessonFacts, FurnaceGivesEOverOneMinusRho) {
+  RUN_OR_SKIP(r, "rendering-equation", "furnace");
+  const double expected = *r.value("E.floor") / (1.0 - *r.value("rho.floor"));
+  for (const char* s : {"B.floor", "B.ceiling", "B.left", "B.right", "B.front", "B.back"})
+    EXPECT_NEAR(*r.value(s), expected, 1e-9) << s;
+}
+
+TEST_F(LessonFacts, AClosedRoomAbsorbsWhatItEmits) {
+  RUN_OR_SKIP(r, "rendering-equation", "balance");
+  EXPECT_NEAR(*r.value("power.absorbed"), *r.value("power.emitted"), 1e-6 * *r.value("power.emitted"));
+  EXPECT_NEAR(*r.value("B.floor"), *r.value("B.left"), 0.01 * *r.value("B.floor")) << "almost the same";
+}
+
+TEST_F(LessonFacts, ParallelAndPerpendicularSquaresExchangeAboutAFifth) {
+  RUN_OR_SKIP(parallel, "form-factor", "parallel");
+  RUN_OR_SKIP(perpendicular, "form-factor", "perpendicular");
+  EXPECT_NEAR(*parallel.value("F.source.receiver"), 0.19982489569838738, 1e-9);
+  EXPECT_NEAR(*perpendicular.value("F.source.receiver"), 0.20004377607540316, 1e-9);
+}
+
+TEST_F(LessonFacts, ReciprocityAndClosureInTheBox) {
+  RUN_OR_SKIP(r, "form-factor", "reciprocity");
+  EXPECT_NEAR(*r.value("area.floor") * *r.value("F.floor.back"),
+              *r.value("area.back") * *r.value("F.back.floor"), 1e-9);
+  EXPECT_LT(*r.value("reciprocity"), 1e-6);
+  RUN_OR_SKIP(c, "form-factor", "closure");
+  EXPECT_NEAR(*c.value("rowsum.min"), 1.0, 1e-6);
+  EXPECT_NEAR(*c.value("rowsum.max"), 1.0, 1e-6);
+}
+
+TEST_F(LessonFacts, TheCeilingGetsNoDirectLightInTheCornellBox) {
+  RUN_OR_SKIP(r, "local-vs-global", "local-global");
+  EXPECT_NEAR(*r.value("Bdirect.ceiling"), 0.0, 1e-12);
+  EXPECT_GT(*r.value("B.ceiling"), 0.0);
+  EXPECT_NEAR(*r.value("Blocal.ceiling"), *r.value("ambient") * *r.value("rho.ceiling"),
+              0.05 * *r.value("Blocal.ceiling"));
+}
+
+TEST_F(LessonFacts, GaussSeidelNeedsAboutHalfTheSweepsOfJacobi) {
+  RUN_OR_SKIP(r, "gathering", "side-by-side");
+  const double ratio = *r.value("iterations.jacobi") / *r.value("iterations.gauss-seidel");
+  EXPECT_GT(ratio, 1.5);
+  EXPECT_LT(ratio, 3.0);
+  EXPECT_LT(*r.value("difference.gauss-seidel"), 1e-4) << "both reach the same solution";
+}
+
+TEST_F(LessonFacts, SpectralRadiusOfTheUniformCubeIsRho) {
+  RUN_OR_SKIP(r, "radiosity-matrix", "spectral");
+  EXPECT_NEAR(*r.value("spectral-radius"), 0.5, 1e-6);
+  EXPECT_NEAR(*r.value("dominance"), 0.5, 1e-9);
+  RUN_OR_SKIP(high, "numerical-stability", "rho-099");
+  EXPECT_NEAR(*high.value("spectral-radius"), 0.99, 1e-5);
+  EXPECT_GT(*high.value("sweeps-per-decade"), 200.0);
+}
+
+TEST_F(LessonFacts, HigherReflectanceNeedsMoreSweeps) {
+  RUN_OR_SKIP(r, "numerical-stability", "rho-095");
+  EXPECT_GT(*r.value("iterations.jacobi"), *r.value("iterations.gauss-seidel"));
+  EXPECT_GT(*r.value("iterations.jacobi"), 200.0);  // (0.95)^k < 1e-8 needs k > 359 sweeps
+  EXPECT_GT(*r.value("B.floor.jacobi"), 10.0 * *r.value("E.ceiling"))
+      << "amplification towards 1/(1-rho) = 20";
+}
+
+TEST_F(LessonFacts, BouncesConvergeToTheSolution) {
+  RUN_OR_SKIP(one, "cornell-box", "bounce-1");
+  EXPECT_NEAR(*one.value("B.ceiling.bounce[1]"), 0.0, 1e-12) << "the ceiling cannot see the light";
+  RUN_OR_SKIP(two, "cornell-box", "bounce-2");
+  EXPECT_GT(*two.value("B.ceiling.bounce[2]"), 0.0);
+  RUN_OR_SKIP(many, "cornell-box", "bounce-12");
+  EXPECT_GT(*many.value("fraction[12]"), 0.95);
+  EXPECT_LT(*many.value("fraction[1]"), *many.value("fraction[12]"));
+}
+
+TEST_F(LessonFacts, TheAmbientTermBringsTheFirstShotsCloserToTheAnswer) {
+  RUN_OR_SKIP(plain, "shooting", "ten-shots");
+  RUN_OR_SKIP(ambient, "shooting", "ten-shots-ambient");
+  RUN_OR_SKIP(converged, "shooting", "shots-against-sweeps");
+  const double target =
+      *converged.value("B.floor.gauss-seidel") + *converged.value("B.back_wall.gauss-seidel");
+  const double withAmbient = *ambient.value("B.floor") + *ambient.value("B.back_wall");
+  const double without = *plain.value("B.floor") + *plain.value("B.back_wall");
+  EXPECT_LT(std::abs(withAmbient - target), std::abs(without - target));
+}
+
+TEST_F(LessonFacts, MonteCarloErrorFallsWithSamples) {
+  RUN_OR_SKIP(r, "ray-casting", "noise");
+  EXPECT_LT(*r.value("error.montecarlo[3]"), *r.value("error.montecarlo[0]"));
+  EXPECT_LT(*r.value("error.raycast[3]"), *r.value("error.raycast[0]"));
+}
+
+}  // namespace
+}  // namespace rt::lesson

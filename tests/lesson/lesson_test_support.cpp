@@ -1,0 +1,58 @@
+#include "lesson_test_support.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "core/formfactor/analytic.h"
+#include "core/formfactor/formfactor_method.h"
+#include "support/test_paths.h"
+
+namespace rt::lesson::test {
+namespace {
+
+class ClosedFormMethod : public FormFactorMethod {
+ public:
+  std::string name() const override { return "analytic"; }
+  std::string description() const override { return "closed form, unoccluded (test stand-in)"; }
+  FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions&, Progress&,
+                           FormFactorStats& stats) const override {
+    const auto n = static_cast<Eigen::Index>(mesh.size());
+    FormFactorMatrix F = FormFactorMatrix::Zero(n, n);
+    for (Eigen::Index i = 0; i < n; ++i)
+      for (Eigen::Index j = 0; j < n; ++j)
+        if (i != j)
+          F(i, j) = polygonToPolygonFormFactor(mesh.polygon(static_cast<int>(i)),
+                                               mesh.polygon(static_cast<int>(j)));
+    stats.elements = mesh.size();
+    return F;
+  }
+};
+
+}  // namespace
+
+LessonFolders repoFolders() {
+  return foldersUnder(rt::test::sourcePath(""));
+}
+
+Lesson shippedLesson(const std::string& id) {
+  const auto folders = repoFolders();
+  return loadLesson(lessonPath(folders, id), folders.scenes);
+}
+
+const Step& stepWithFigure(const Lesson& lesson, const std::string& figure) {
+  for (const auto& step : lesson.steps)
+    if (step.figure == figure) return step;
+  throw std::runtime_error("lesson " + lesson.id + " has no figure " + figure);
+}
+
+bool hasMethod(const std::string& name) {
+  const auto names = formFactorMethodNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+void ensureAnalyticMethod() {
+  if (!hasMethod("analytic"))
+    registerFormFactorMethod("analytic", [] { return std::make_unique<ClosedFormMethod>(); });
+}
+
+}  // namespace rt::lesson::test

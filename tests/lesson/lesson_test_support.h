@@ -1,0 +1,21 @@
+// Helpers for the lesson tests: loading the shipped lessons, finding a step by its figure name, making sure
+// the form-factor methods a test needs are present.
+#pragma once
+
+#include <string>
+
+#include "lesson/lesson.h"
+#include "lesson/lesson_loader.h"
+
+namespace rt::lesson::test {
+
+LessonFolders repoFolders();
+Lesson shippedLesson(const std::string& id);
+const Step& stepWithFigure(const Lesson& lesson, const std::string& figure);
+// True when the registry has the method; false means the test should be skipped (e.g. exact not built).
+bool hasMethod(const std::string& name);
+// Registers "analytic" from the closed-form polygon-to-polygon formula when the registry lacks it (unoccluded
+// scenes only), so that the runner can be tested before or without the core's method.
+void ensureAnalyticMethod();
+
+}  // namespace rt::lesson::test
