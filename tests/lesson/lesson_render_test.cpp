@@ -60,7 +60,8 @@ TEST(LessonRender, EveryLessonRendersWithAllItsFigures) {
         figures.push_back(path);
       }
   }
-  if (!drawsFigures) GTEST_SKIP() << "the CLI was built without the viz library: pages checked, figures not drawn";
+  if (!drawsFigures)
+    GTEST_SKIP() << "the CLI was built without the viz library: pages checked, figures not drawn";
   ASSERT_FALSE(figures.empty());
 
   // Non-blank: more than a handful of colours, and no single colour covering almost everything.

@@ -86,7 +86,7 @@ TEST_F(StepRunnerTest, FurnaceStepsGiveEOverOneMinusRhoAndShareOneF) {
     FAIL() << "unknown placeholder accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(e.where().line, 38);
-    EXPECT_NE(std::string(e.what()).find("spectral-radius"), std::string::npos) << "lists what is available";
+    EXPECT_NE(std::string(e.what()).find("F[i][j]"), std::string::npos) << "lists what is available";
   }
 }
 
