@@ -25,7 +25,8 @@ SolverStatus shoot(const RadiositySystem& system, const FormFactorRowProvider* r
   if (emitted <= 0.0) return SolverStatus::Success;  // nothing to shoot: B = E = 0 is the solution
   double absorbed = 0.0, escaped = 0.0;
   // The exact residual costs O(n^2), a shot O(n): for large n it is refreshed every few shots only.
-  const int residualEvery = static_cast<int>(std::max<Eigen::Index>(1, n / 512));
+  const int residualEvery = options.residualEvery > 0 ? options.residualEvery
+                                                      : static_cast<int>(std::max<Eigen::Index>(1, n / 512));
   double residual = 1.0;
   const double eNorm = system.emission.norm();
   Eigen::VectorXd fraction(n), row;

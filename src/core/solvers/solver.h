@@ -28,6 +28,9 @@ struct SolverOptions {
   // random-walk: score every collision (lower variance) or only where a walk is absorbed.
   enum class WalkEstimator { Collision, Absorption };
   WalkEstimator walkEstimator = WalkEstimator::Collision;
+  // Shooting: the exact residual costs O(n^2) and a shot O(n), so it is recomputed every this many shots and
+  // carried over in between (the first and last records are always exact). 0 = automatic: max(1, n / 512).
+  int residualEvery = 0;
 };
 
 struct IterationRecord {
