@@ -37,6 +37,7 @@ RefinedSolution solveDiscontinuity(const Scene& scene, const RefineOptions& opti
   progress.report(0.0, "critical lines");
   solution.discontinuities = criticalSegments(scene, options.minEdge);
   solution.stats.criticalSegments = solution.discontinuities.size();
+  solution.stats.notes = "receivers meshed by " + constrainedTriangulatorName();
 
   MeshOptions meshOptions;
   meshOptions.mode = MeshOptions::Mode::MaxEdge;

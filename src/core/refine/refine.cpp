@@ -91,6 +91,7 @@ std::string RefineStats::summary() const {
   if (tVertices) s << ", " << tVertices << " T-vertices";
   s << ", " << raysCast << " rays, " << seconds << " s (form factors " << formFactorSeconds << " s, solve "
     << solveSeconds << " s)";
+  if (!notes.empty()) s << ", " << notes;
   return s.str();
 }
 

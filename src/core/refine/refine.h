@@ -100,6 +100,7 @@ struct RefineStats {
   std::size_t raysCast = 0;
   double formFactorSeconds = 0, solveSeconds = 0, seconds = 0;
   std::vector<RefinePass> passes;
+  std::string notes;            // e.g. which constrained triangulator meshed the receivers
   std::string summary() const;  // one line
 };
 
