@@ -4,7 +4,12 @@
 #include <stdexcept>
 
 #ifdef RT_HAVE_VIZ
+#include "core/formfactor/hemicube.h"
 #include "viz/chart.h"
+#include "viz/hemicube_view.h"
+#include "viz/matrix_view.h"
+#include "viz/nusselt_view.h"
+#include "viz/rays_view.h"
 #include "viz/scene_view.h"
 #endif
 
@@ -52,6 +57,17 @@ void formFactorRow(const lesson::Step& step, const StepResult& r, const FigureSe
   viz::writeSceneFigure(r.mesh, r.camera, data, o, path);
 }
 
+// The element a Nusselt or rays view looks at: the first highlighted element other than the source, otherwise
+// the one the source sends most light to.
+int targetElement(const StepResult& r) {
+  for (int h : r.highlighted)
+    if (h != r.sourceElement) return h;
+  if (!r.F) throw std::runtime_error("the step computed no form factors");
+  Eigen::Index best = 0;
+  r.F->row(r.sourceElement).maxCoeff(&best);
+  return static_cast<int>(best);
+}
+
 std::string renderView(View view, const lesson::Step& step, const StepResult& r, const FigureSettings& s,
                        const std::string& path) {
   const std::string from = "element " + std::to_string(r.sourceElement);
@@ -65,7 +81,12 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
         o.caption = "Direct light + ambient term";
       } else if (r.B.rows() > 0) {
         data.B = r.B;
-        o.caption = r.runs.empty() ? "Radiosity" : "Radiosity (" + r.runs.back().label + ")";
+        if (step.stage == lesson::Stage::Bounces)
+          o.caption = "Radiosity after " + std::to_string(r.bounceTerms.size() - 1) + " bounces";
+        else if (step.stage == lesson::Stage::Refine)
+          o.caption = "Radiosity on the " + step.parameters.refine + " mesh";
+        else
+          o.caption = r.runs.empty() ? "Radiosity" : "Radiosity (" + r.runs.back().label + ")";
       } else {
         o.colouring = viz::SceneColouring::Reflectance;
         o.caption = "Reflectance of the surfaces";
@@ -76,28 +97,47 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
     case View::FormFactor:
       formFactorRow(step, r, s, "F from " + from + " (" + r.method + ")", path);
       return "Form factors from " + from + " to every element (" + r.method + ")";
-    case View::Hemicube:
-    case View::Nusselt:
-    case View::Rays:
+    case View::Hemicube: {
+      const int resolution = step.parameters.resolution.value_or(64);
+      const HemicubeFaces faces = renderHemicube(r.mesh, r.sourceElement, resolution);
+      viz::HemicubeViewOptions o;
+      o.size = {s.width, s.height, 96.0};
+      viz::writeHemicubeFacesFigure(faces, r.mesh.size(), o, path);
+      return "The hemicube of " + from + " unfolded (" + std::to_string(resolution) +
+             " pixels across the top face), each pixel coloured by the element it sees";
+    }
+    case View::Nusselt: {
+      const int to = targetElement(r);
+      const Element& e = r.mesh.elements[r.sourceElement];
+      const viz::NusseltConstruction construction =
+          viz::nusseltConstruction(e.centroid, e.normal, r.mesh.polygon(to));
+      viz::NusseltViewOptions o;
+      o.size = {s.width, s.height, 96.0};
+      viz::writeNusseltDiskFigure(construction, o, path);
+      return "Element " + std::to_string(to) + " projected onto the unit disk from the centre of " + from;
+    }
+    case View::Rays: {
+      const int to = targetElement(r);
+      const viz::RaySample sample =
+          viz::sampleRays(r.mesh, r.sourceElement, to, std::min(step.parameters.samples.value_or(32), 256),
+                          step.parameters.seed.value_or(1));
+      viz::RaysViewOptions o;
+      o.size = {s.width, s.height, 96.0};
+      viz::writeRaysFigure(r.mesh, r.camera, sample, o, path);
+      return "Visibility rays from " + from + " to element " + std::to_string(to);
+    }
     case View::Visibility:
       formFactorRow(step, r, s, "F from " + from + " (" + r.method + ")", path);
       return "What " + from + " sees, by the " + r.method + " method";
     case View::Matrix: {
       if (!r.F) throw std::runtime_error(path + ": the step computed no form factors");
-      std::vector<viz::Series> series;
-      const int rows = std::min<int>(static_cast<int>(r.F->rows()), 4);
-      for (int i = 0; i < rows; ++i) {
-        viz::Series row{"row " + std::to_string(i), {}, {}};
-        for (Eigen::Index j = 0; j < r.F->cols(); ++j) {
-          row.x.push_back(static_cast<double>(j));
-          row.y.push_back((*r.F)(i, j));
-        }
-        series.push_back(row);
-      }
-      viz::ChartOptions o{
-          "Rows of the form-factor matrix", "column j", "F_ij", false, false, s.width, s.height};
-      viz::writeLineChart(series, o, path);
-      return "The first rows of F: entry F_ij against column j";
+      viz::MatrixViewOptions o;
+      o.size = {s.width, s.height, 96.0};
+      o.title = "Form factors F_ij (" + r.method + ")";
+      for (const auto& e : r.mesh.elements) o.groups.push_back(e.patch);
+      o.selectedRow = r.sourceElement;
+      viz::writeMatrixFigure(Eigen::MatrixXd(*r.F), o, path);
+      return "The form-factor matrix: row i is what element i sends to each element j";
     }
     case View::Convergence: {
       std::vector<viz::Series> series;

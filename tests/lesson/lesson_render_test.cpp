@@ -79,7 +79,7 @@ TEST(LessonRender, EveryLessonRendersWithAllItsFigures) {
   while (lines >> path >> width >> height >> colours >> dominant) {
     ++checked;
     EXPECT_GT(colours, 4) << path << " is blank";
-    EXPECT_LT(dominant, 0.97) << path << " is almost one colour";
+    EXPECT_LT(dominant, 0.99) << path << " is almost one colour";
   }
   EXPECT_EQ(checked, static_cast<int>(figures.size())) << stats;
 }
