@@ -72,7 +72,10 @@ SolverStatus stochasticJacobi(const RadiositySystem& system, RgbField& B, const 
       sourceCumulative[std::size_t(j)] = total += unshot.row(j).sum() * A(j);
     if (total <= 0.0) return SolverStatus::Success;
     // Constant power per ray: later iterations, with less to shoot, get fewer rays.
-    const long rays = std::max(1L, static_cast<long>(std::ceil(double(budget) * total / emitted)));
+    // The shrink by 1e-12 keeps the count independent of the units: scaling E or A changes total / emitted in
+    // its last bits, which must not change the number of rays (and with it every random number after).
+    const long rays =
+        std::max(1L, static_cast<long>(std::ceil(double(budget) * (total / emitted) * (1.0 - 1e-12))));
     received.setZero();
     receivedSquares.setZero();
     for (long r = 0; r < rays; ++r) {
