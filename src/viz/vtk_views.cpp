@@ -94,8 +94,17 @@ vtkSmartPointer<vtkRenderer> makeSceneRenderer(const Mesh& mesh, const Camera& c
   mapper->ScalarVisibilityOn();
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
-  // The colour is the displayed radiosity itself: no lighting, and one-sided polygons as in the model.
-  actor->GetProperty()->LightingOff();
+  // The colour is the displayed quantity itself: no lighting, and one-sided polygons as in the model.
+  // Material and id views get a mild headlight: without the shading of light, a white block in front of a
+  // white wall vanishes.
+  const bool shapeShading =
+      options.colouring == SceneColouring::Reflectance || options.colouring == SceneColouring::ElementId;
+  actor->GetProperty()->SetLighting(shapeShading);
+  if (shapeShading) {
+    actor->GetProperty()->SetAmbient(0.6);
+    actor->GetProperty()->SetDiffuse(0.4);
+    actor->GetProperty()->SetSpecular(0.0);
+  }
   actor->GetProperty()->BackfaceCullingOn();
   if (!options.image.smooth) actor->GetProperty()->SetInterpolationToFlat();
   if (options.image.showEdges) {
