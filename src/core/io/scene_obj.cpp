@@ -287,9 +287,10 @@ Scene loadSceneObj(const std::string& path) {
     material.name = m.name;
     if (!entry.kd)
       throw InputError(entry.newmtl, "material '" + m.name + "' has no Kd (diffuse reflectance)");
+    // tinyobjloader's Kd/Ke in float precision, replaced by the scan's doubles; the scan also reads "Kd 0.5"
+    // as the MTL format means it (grey), where tinyobjloader gives (0.5, 0, 0).
     material.reflectance = Rgb(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
     material.emission = Rgb(m.emission[0], m.emission[1], m.emission[2]);
-    // tinyobjloader reads "Kd 0.5" as (0.5, 0, 0); the MTL format means grey.
     material.reflectance = *entry.kd;
     if (entry.ke) material.emission = *entry.ke;
     const bool badReflectance = !material.reflectance.allFinite() || (material.reflectance < 0).any() ||
