@@ -16,22 +16,23 @@ IterationPlayer::IterationPlayer(QWidget* parent) : QWidget(parent) {
   firstButton_->setToolTip(tr("First iteration"));
   playButton_ = new QPushButton(tr("Play"), this);
   playButton_->setToolTip(tr("Play / pause the iterations (Space)"));
-  nextButton_ = new QPushButton(tr("Next iteration"), this);
+  nextButton_ = new QPushButton(tr("Next"), this);
+  nextButton_->setToolTip(tr("Next iteration (N)"));
   slider_ = new QSlider(Qt::Horizontal, this);
   slider_->setObjectName("iterationSlider");
+  slider_->setMinimumWidth(80);
   speed_ = new QSpinBox(this);
   speed_->setRange(1, 120);
   speed_->setValue(8);
   speed_->setSuffix(tr(" it/s"));
   speed_->setToolTip(tr("Replay speed"));
   label_ = new QLabel(this);
-  label_->setMinimumWidth(140);
+  label_->setMinimumWidth(90);
   layout->addWidget(firstButton_);
   layout->addWidget(playButton_);
   layout->addWidget(nextButton_);
   layout->addWidget(slider_, 1);
   layout->addWidget(label_);
-  layout->addWidget(new QLabel(tr("Speed"), this));
   layout->addWidget(speed_);
 
   timer_ = new QTimer(this);
@@ -109,7 +110,7 @@ void IterationPlayer::previous() {
 
 void IterationPlayer::updateLabels() {
   playButton_->setText(playing() ? tr("Pause") : tr("Play"));
-  label_->setText(count_ > 0 ? tr("iteration %1 of %2").arg(current_ + 1).arg(count_) : tr("no iterations"));
+  label_->setText(count_ > 0 ? tr("%1 / %2").arg(current_ + 1).arg(count_) : tr("no iterations"));
 }
 
 }  // namespace rt::app

@@ -6,12 +6,12 @@
 #include "core/input_error.h"
 #include "core/solvers/radiosity_system.h"
 #include "lesson/step_result.h"
-#include "lesson/step_runner.h"
 
 namespace rt::app {
 
-LessonLibrary::LessonLibrary(lesson::LessonFolders folders) : folders_(std::move(folders)) {
-  runner_ = std::make_unique<lesson::StepRunner>(folders_.scenes);
+LessonLibrary::LessonLibrary(lesson::LessonFolders folders, lesson::RunOptions runOptions)
+    : folders_(std::move(folders)) {
+  runner_ = std::make_unique<lesson::StepRunner>(folders_.scenes, std::move(runOptions));
   reload();
 }
 

@@ -11,16 +11,14 @@
 #include "app/pipeline.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_loader.h"
-
-namespace rt::lesson {
-class StepRunner;
-}
+#include "lesson/step_runner.h"
 
 namespace rt::app {
 
 class LessonLibrary {
  public:
-  explicit LessonLibrary(lesson::LessonFolders folders);
+  // `runOptions.quick` caps resolutions and subdivisions (tests walking every step).
+  explicit LessonLibrary(lesson::LessonFolders folders, lesson::RunOptions runOptions = {});
   ~LessonLibrary();
 
   // Re-reads every lesson file; files that fail to load are listed in errors().

@@ -16,6 +16,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QShortcut>
 #include <QSplitter>
 #include <QStatusBar>
@@ -29,6 +30,7 @@
 #include "app/lesson_session.h"
 #include "app/matrix_view.h"
 #include "app/parameter_panel.h"
+#include "app/registration.h"
 #include "app/residual_chart.h"
 #include "app/scene_view.h"
 #include "core/formfactor/formfactor_method.h"
@@ -39,6 +41,7 @@ namespace rt::app {
 MainWindow::MainWindow(const AppOptions& options, std::unique_ptr<LessonLibrary> library, QWidget* parent)
     : QMainWindow(parent), options_(options), library_(std::move(library)) {
   setWindowTitle(tr("Radiosity Textbook"));
+  registerOptionalMethods();
   if (!library_) library_ = std::make_unique<LessonLibrary>(lesson::defaultFolders());
   normalLook_ = currentLook();
   runner_ = new ComputationRunner(this);
@@ -93,6 +96,7 @@ void MainWindow::buildUi() {
   nextButton_->setToolTip(tr("Next step (Right, Page Down)"));
   stepLabel_ = new QLabel(textPane);
   stepLabel_->setAlignment(Qt::AlignCenter);
+  stepLabel_->setWordWrap(true);  // a long lesson title must not widen the window
   navigation->addWidget(backButton_);
   navigation->addWidget(stepLabel_, 1);
   navigation->addWidget(nextButton_);
@@ -145,6 +149,7 @@ void MainWindow::buildUi() {
 
   // Left: contents. Right: parameters and compare.
   contents_ = new ContentsTree(this);
+  contents_->setMinimumWidth(180);
   contentsDock_ = new QDockWidget(tr("Contents"), this);
   contentsDock_->setObjectName("contentsDock");
   contentsDock_->setWidget(contents_);
@@ -159,14 +164,18 @@ void MainWindow::buildUi() {
   compareBox_ = new QCheckBox(tr("Compare side by side"), side);
   compareSolver_ = new QComboBox(side);
   compareMethod_ = new QComboBox(side);
+  for (QComboBox* box : {compareSolver_, compareMethod_}) {
+    box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    box->setMinimumContentsLength(8);
+  }
   compareSolver_->addItem(tr("(same solver)"));
   for (const auto& n : solverNames()) compareSolver_->addItem(QString::fromStdString(n));
   compareMethod_->addItem(tr("(same method)"));
   for (const auto& n : formFactorMethodNames()) compareMethod_->addItem(QString::fromStdString(n));
   if (compareSolver_->findText("jacobi") >= 0) compareSolver_->setCurrentText("jacobi");
   compareForm->addRow(compareBox_);
-  compareForm->addRow(tr("Right pane solver"), compareSolver_);
-  compareForm->addRow(tr("Right pane form factors"), compareMethod_);
+  compareForm->addRow(tr("Right: solver"), compareSolver_);
+  compareForm->addRow(tr("Right: F method"), compareMethod_);
   sideLayout->addWidget(panel_);
   sideLayout->addLayout(compareForm);
   sideLayout->addStretch(1);
@@ -176,9 +185,15 @@ void MainWindow::buildUi() {
   };
   connect(compareSolver_, &QComboBox::currentTextChanged, this, recompareIfOn);
   connect(compareMethod_, &QComboBox::currentTextChanged, this, recompareIfOn);
+  // Scrollable, so that the panel never forces the window wider than asked for (--size, small screens).
+  auto* sideScroll = new QScrollArea(this);
+  sideScroll->setWidgetResizable(true);
+  sideScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  sideScroll->setWidget(side);
+  sideScroll->setMinimumWidth(240);
   parametersDock_ = new QDockWidget(tr("Parameters"), this);
   parametersDock_->setObjectName("parametersDock");
-  parametersDock_->setWidget(side);
+  parametersDock_->setWidget(sideScroll);
   addDockWidget(Qt::RightDockWidgetArea, parametersDock_);
 
   statusLabel_ = new QLabel(this);
@@ -328,15 +343,15 @@ void MainWindow::setPresenterMode(bool on) {
   chart_->setLargeFonts(on);
 }
 
-bool MainWindow::exportView(const QString& path) {
+bool MainWindow::exportView(const QString& path, QSize size) {
   if (!result_ || !result_->mesh) {
     showError(tr("There is no view to export yet."));
     return false;
   }
   try {
     viz::SceneViewOptions options = primaryView_->viewOptions();
-    options.image.width = std::max(primaryView_->width(), 640);
-    options.image.height = std::max(primaryView_->height(), 480);
+    options.image.width = size.isEmpty() ? std::max(primaryView_->width(), 640) : size.width();
+    options.image.height = size.isEmpty() ? std::max(primaryView_->height(), 480) : size.height();
     exportSceneFigure(*result_->mesh, primaryView_->currentCamera(), primaryView_->viewData(), options,
                       path.toStdString());
     statusLabel_->setText(tr("View written to %1").arg(path));
@@ -392,6 +407,14 @@ bool MainWindow::exportAllFigures(const QString& folder) {
 
 void MainWindow::showError(const QString& message) {
   lastError_ = message;
+  if (newStepPending_ && mode_ == Mode::Lesson) {
+    // The step's own text stays readable, with what went wrong above it.
+    const lesson::Step& step =
+        library_->lessons()[static_cast<std::size_t>(lesson_)].steps[static_cast<std::size_t>(step_)];
+    text_->setMarkdown(QString("## %1\n\n> **This step could not be computed:** %2\n\n%3")
+                           .arg(QString::fromStdString(step.title), message.toHtmlEscaped(),
+                                QString::fromStdString(step.text)));
+  }
   newStepPending_ = false;
   statusLabel_->setText(tr("Error: %1").arg(message));
   if (options_.screenshot.isEmpty() && isVisible() && !blocking_)

@@ -67,7 +67,8 @@ class MainWindow : public QMainWindow {
   bool presenterMode() const { return presenter_; }
 
   // Exports (errors go to lastError() and a message box when visible; false then).
-  bool exportView(const QString& path);
+  // `size` empty: the view's size on screen.
+  bool exportView(const QString& path, QSize size = QSize());
   bool exportMatrixFile(const QString& which, const QString& path);  // which: F, K or B
   bool exportAllFigures(const QString& folder);
 

@@ -248,6 +248,8 @@ void MainWindow::applyStepDisplay(const lesson::Step* step) {
 void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   const bool newStep = newStepPending_ || !result_;
   newStepPending_ = false;
+  // The views still point at the previous mesh until they get the new one: keep it alive until then.
+  const std::shared_ptr<const PipelineResult> previous = result_;
   result_ = std::move(result);
   const PipelineResult& r = *result_;
   auto stepResult = std::static_pointer_cast<const lesson::StepResult>(r.stepResult);
@@ -255,19 +257,18 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
       mode_ == Mode::Lesson
           ? &library_->lessons()[static_cast<std::size_t>(lesson_)].steps[static_cast<std::size_t>(step_)]
           : nullptr;
-  if (newStep) applyStepDisplay(step);
-
-  primaryView_->setRadiosity(r.B);
-  primaryView_->setMesh(r.mesh.get(), r.camera, newStep);
+  primaryView_->setScene(r.mesh.get(), r.B, r.camera, newStep);
   primaryView_->setCaption(QString::fromStdString(r.solverName.empty() ? r.title : r.solverName));
   if (stepResult && !stepResult->highlighted.empty()) primaryView_->setHighlighted(stepResult->highlighted);
   if (compare_ && r.compared) {
-    secondaryView_->setRadiosity(r.compared->B);
-    secondaryView_->setMesh(r.compared->mesh.get(), r.camera, false);
+    secondaryView_->setScene(r.compared->mesh.get(), r.compared->B, r.camera, false);
     secondaryView_->syncCameraFrom(*primaryView_);
     secondaryView_->setCaption(
         QString::fromStdString(r.compared->solverName.empty() ? r.compared->title : r.compared->solverName));
+  } else {
+    secondaryView_->setScene(nullptr, {}, r.camera, false);  // it must not keep a mesh that is about to go
   }
+  if (newStep) applyStepDisplay(step);
 
   text_->setMarkdown(mode_ == Mode::Lesson ? QString::fromStdString(r.text) : sceneSummary(r));
   std::vector<QString> names{QString::fromStdString(r.solverName)};

@@ -77,6 +77,10 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   form->addRow(reset_);
   form->addRow(hint_);
 
+  for (QComboBox* box : {method_, solver_, surface_}) {
+    box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    box->setMinimumContentsLength(8);
+  }
   debounce_ = new QTimer(this);
   debounce_->setSingleShot(true);
   debounce_->setInterval(350);

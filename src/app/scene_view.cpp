@@ -73,6 +73,11 @@ void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera
   requestRender();
 }
 
+void SceneView::setScene(const Mesh* mesh, const RgbField& B, const Camera& camera, bool resetCamera) {
+  data_.B = B;
+  setMesh(mesh, camera, resetCamera);
+}
+
 void SceneView::applyCamera(const Camera& c) {
   vtkCamera* camera = renderer()->GetActiveCamera();
   camera->SetPosition(c.position.data());

@@ -22,6 +22,8 @@ class SceneView : public VtkWidget {
   explicit SceneView(QWidget* parent = nullptr);
   ~SceneView() override;
 
+  // A new mesh and its radiosity at once (the previous mesh may already be gone).
+  void setScene(const Mesh* mesh, const RgbField& B, const Camera& camera, bool resetCamera);
   // A new mesh: rebuilds the geometry. `resetCamera` places the camera at `camera`.
   void setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera);
   // New colours for the same mesh (an iteration of the replay, a re-solve).

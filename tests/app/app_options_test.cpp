@@ -1,0 +1,46 @@
+// The command line: lesson, step, screenshot and size are read, and wrong values are named in clear errors.
+#include <gtest/gtest.h>
+
+#include "app/app_options.h"
+
+using rt::app::AppOptions;
+using rt::app::parseAppOptions;
+
+TEST(AppOptions, ReadsLessonStepScreenshotAndSize) {
+  QString error;
+  const AppOptions o = parseAppOptions({"radiosity-textbook", "--lesson", "cornell-box", "--step", "3",
+                                        "--screenshot", "out.png", "--size", "800x600"},
+                                       &error);
+  EXPECT_TRUE(error.isEmpty()) << error.toStdString();
+  EXPECT_EQ(o.lesson, "cornell-box");
+  EXPECT_EQ(o.step, 3);
+  EXPECT_EQ(o.screenshot, "out.png");
+  EXPECT_EQ(o.size, QSize(800, 600));
+}
+
+TEST(AppOptions, DefaultsOpenTheRememberedPosition) {
+  QString error;
+  const AppOptions o = parseAppOptions({"radiosity-textbook"}, &error);
+  EXPECT_TRUE(error.isEmpty());
+  EXPECT_TRUE(o.lesson.isEmpty());
+  EXPECT_EQ(o.step, 0);
+  EXPECT_EQ(o.size, QSize(1600, 1000));
+}
+
+TEST(AppOptions, RejectsBadValuesWithTheirName) {
+  QString error;
+  parseAppOptions({"radiosity-textbook", "--step", "zero"}, &error);
+  EXPECT_TRUE(error.contains("--step")) << error.toStdString();
+  error.clear();
+  parseAppOptions({"radiosity-textbook", "--size", "big"}, &error);
+  EXPECT_TRUE(error.contains("--size")) << error.toStdString();
+  error.clear();
+  parseAppOptions({"radiosity-textbook", "--screenshot", "out.jpg"}, &error);
+  EXPECT_TRUE(error.contains("PNG")) << error.toStdString();
+  error.clear();
+  parseAppOptions({"radiosity-textbook", "--scene", "a.json", "--lesson", "x"}, &error);
+  EXPECT_FALSE(error.isEmpty());
+  error.clear();
+  parseAppOptions({"radiosity-textbook", "--no-such-option"}, &error);
+  EXPECT_TRUE(error.contains("no-such-option")) << error.toStdString();
+}

@@ -1,0 +1,63 @@
+// The app tests need a QApplication and an X server (QOpenGLWidget and VTK's GLX window have no headless
+// mode). Without DISPLAY the binary runs itself again under xvfb-run, so that `ctest` works on a machine
+// without a screen.
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+#include <QApplication>
+#include <QStandardPaths>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "app/vtk_widget.h"
+#include "app_test_support.h"
+
+namespace {
+
+bool listingOnly(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--gtest_list_tests") == 0) return true;
+  return false;
+}
+
+void reexecUnderXvfb(const std::vector<std::string>& original) {
+  if (std::getenv("RT_APP_TESTS_UNDER_XVFB")) return;  // already tried: do not loop
+  setenv("RT_APP_TESTS_UNDER_XVFB", "1", 1);
+  std::vector<std::string> args{"xvfb-run", "-a", "-s", "-screen 0 1920x1080x24"};
+  args.insert(args.end(), original.begin(), original.end());
+  std::vector<char*> raw;
+  for (auto& a : args) raw.push_back(a.data());
+  raw.push_back(nullptr);
+  execvp("xvfb-run", raw.data());  // returns only on failure: the tests then skip
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Before InitGoogleTest, which consumes the gtest flags.
+  const bool listing = listingOnly(argc, argv);
+  const std::vector<std::string> original(argv, argv + argc);
+  testing::InitGoogleTest(&argc, argv);
+  if (listing) return RUN_ALL_TESTS();
+  if (!std::getenv("DISPLAY")) reexecUnderXvfb(original);
+  if (!std::getenv("DISPLAY")) {
+    rt::app::test::setDisplayAvailable(false);
+    setenv("QT_QPA_PLATFORM", "offscreen", 1);
+  }
+  if (!std::getenv("XDG_RUNTIME_DIR")) {
+    const std::string dir = "/tmp/rt-app-tests-" + std::to_string(getuid());
+    mkdir(dir.c_str(), 0700);
+    setenv("XDG_RUNTIME_DIR", dir.c_str(), 1);
+  }
+  rt::app::VtkWidget::setDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  // Settings (the remembered position) go to a test location, never the user's.
+  QStandardPaths::setTestModeEnabled(true);
+  QApplication::setOrganizationName("RadiosityTextbookTests");
+  QApplication::setApplicationName("app_tests");
+  rt::app::test::installWarningCollector();
+  return RUN_ALL_TESTS();
+}

@@ -1,0 +1,31 @@
+// Helpers shared by the app tests: whether an X server is there, Qt warnings collected per test, a main
+// window on the repository's lessons (quick parameters), and pixel checks of the 3D views.
+#pragma once
+
+#include <QRect>
+#include <QStringList>
+#include <memory>
+
+#include "app/main_window.h"
+
+namespace rt::app::test {
+
+void setDisplayAvailable(bool available);
+bool displayAvailable();
+// Collects qWarning/qCritical messages (and still prints them).
+void installWarningCollector();
+QStringList takeWarnings();
+
+// A window over <repo>/lessons and <repo>/scenes, computing on the calling thread unless `threaded`.
+std::unique_ptr<MainWindow> makeWindow(bool threaded = false, bool quick = true);
+
+// The rectangle of `widget` inside the window's grab.
+QRect areaOf(QWidget* window, QWidget* widget);
+
+}  // namespace rt::app::test
+
+// In a TEST body: skip when there is no X server.
+#define RT_REQUIRE_DISPLAY()                                                            \
+  do {                                                                                  \
+    if (!rt::app::test::displayAvailable()) GTEST_SKIP() << "needs an X server (Xvfb)"; \
+  } while (0)

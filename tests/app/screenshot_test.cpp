@@ -1,0 +1,91 @@
+// What the reader sees: the 3D view inside the window holds a real image (not the black or empty frame a
+// broken GL hosting gives), for the built-in Cornell box and for key lesson steps; and `--screenshot` writes
+// such an image.
+#include <gtest/gtest.h>
+
+#include <QImage>
+
+#include "app/scene_view.h"
+#include "app/screenshot.h"
+#include "app_test_support.h"
+#include "support/test_paths.h"
+
+using namespace rt::app;
+
+namespace {
+
+void expectRealImage(MainWindow& window, const std::string& what) {
+  const QImage image = grabWindow(window);
+  const QRect area = test::areaOf(&window, window.primaryView());
+  const PixelStatistics stats = pixelStatistics(image, area);
+  EXPECT_GT(stats.meanLuminance, 25) << what;
+  EXPECT_GT(stats.stdDevLuminance, 8) << what;
+  EXPECT_GT(stats.distinctColours, 30) << what;
+  EXPECT_GT(stats.nonBlackFraction, 0.5) << what;
+}
+
+}  // namespace
+
+TEST(Screenshot, PixelStatisticsTellBlackFromAnImage) {
+  QImage black(64, 64, QImage::Format_RGB32);
+  black.fill(Qt::black);
+  const PixelStatistics none = pixelStatistics(black);
+  EXPECT_EQ(none.meanLuminance, 0);
+  EXPECT_EQ(none.distinctColours, 1);
+  EXPECT_EQ(none.nonBlackFraction, 0);
+  QImage ramp(256, 1, QImage::Format_RGB32);
+  for (int x = 0; x < 256; ++x) ramp.setPixel(x, 0, qRgb(x, x, x));
+  const PixelStatistics some = pixelStatistics(ramp);
+  EXPECT_NEAR(some.meanLuminance, 127.5, 0.01);
+  EXPECT_EQ(some.distinctColours, 256);
+}
+
+TEST(Screenshot, BuiltInCornellBoxShowsInTheView) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  ASSERT_TRUE(window->openScene(QString())) << window->lastError().toStdString();
+  expectRealImage(*window, "built-in Cornell box");
+}
+
+TEST(Screenshot, KeyLessonStepsShowInTheView) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  for (const auto& [lesson, step] :
+       std::vector<std::pair<QString, int>>{{"cornell-box", 3}, {"gathering", 0}}) {
+    if (!window->openLesson(lesson, step)) {
+      ADD_FAILURE() << window->lastError().toStdString();
+      continue;
+    }
+    expectRealImage(*window, lesson.toStdString() + " step " + std::to_string(step + 1));
+  }
+}
+
+TEST(Screenshot, CommandLineWritesAWindowImage) {
+  RT_REQUIRE_DISPLAY();
+  const std::string dir = rt::test::scratchDir("app-screenshot");
+  const std::string png = dir + "/cornell.png";
+  const std::string app = rt::test::binaryPath("bin/radiosity-textbook");
+  std::string output;
+  const int code =
+      rt::test::runCommand("cd " + rt::test::sourcePath("") + " && " + app +
+                               " --lesson cornell-box --step 4 --size 1200x800 --screenshot " + png,
+                           &output);
+  ASSERT_EQ(code, 0) << output;
+  QImage image(QString::fromStdString(png));
+  ASSERT_FALSE(image.isNull());
+  EXPECT_EQ(image.size(), QSize(1200, 800));
+  // The centre right of the window is the 3D view.
+  const PixelStatistics stats = pixelStatistics(image, QRect(700, 150, 300, 300));
+  EXPECT_GT(stats.meanLuminance, 25);
+  EXPECT_GT(stats.distinctColours, 30);
+}
+
+TEST(Screenshot, CommandLineNamesAnUnknownLesson) {
+  RT_REQUIRE_DISPLAY();
+  const std::string app = rt::test::binaryPath("bin/radiosity-textbook");
+  std::string output;
+  const int code =
+      rt::test::runCommand(app + " --lesson no-such-lesson --screenshot /tmp/never.png", &output);
+  EXPECT_NE(code, 0);
+  EXPECT_NE(output.find("no-such-lesson"), std::string::npos) << output;
+}
