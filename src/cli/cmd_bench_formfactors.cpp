@@ -1,10 +1,188 @@
+// radiosity bench formfactors [--scene S] [--output DIR] [mesh options]: sweeps each method's knob (hemicube
+// resolution, raycast samples per pair, montecarlo rays per element, nusselt segments per arc) and measures
+// time and error against a reference: "analytic" where nothing can be occluded, otherwise "exact" when that
+// method is built in and the mesh is small, else raycast with 1024 samples per pair. Writes
+// DIR/formfactors.csv (method,parameter,seconds,rms_error,max_error,row_sum_error), prints the fitted log-log
+// slopes, and draws DIR/formfactors.png and .svg when the visualisation library is built in.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "core/formfactor/formfactor_method.h"
+#include "core/formfactor/shaft_culling.h"
+#ifdef RT_HAVE_VIZ
+#include "viz/chart.h"
+#endif
 
 namespace rt::cli {
+namespace {
+
+struct BenchArguments {
+  std::string scene = "scenes/cornell-box.json";
+  std::string output = "bench-formfactors";
+  MeshArguments mesh;
+  std::uint64_t seed = 1;
+};
+
+struct Row {
+  std::string method;
+  int parameter;
+  double seconds, rmsError, maxError, rowSumError;
+};
+
+struct Sweep {
+  std::string method;
+  std::string knob;
+  std::vector<int> values;
+};
+
+FormFactorOptions optionsFor(const std::string& method, int value, std::uint64_t seed) {
+  FormFactorOptions o;
+  o.seed = seed;
+  if (method == "hemicube")
+    o.hemicubeResolution = value;
+  else
+    o.samples = value;
+  return o;
+}
+
+// Least-squares slope of log(y) against log(x) (points with y > 0 only).
+double logLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int n = 0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    if (!(x[k] > 0 && y[k] > 0)) continue;
+    const double lx = std::log(x[k]), ly = std::log(y[k]);
+    sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly, ++n;
+  }
+  const double d = n * sxx - sx * sx;
+  return n >= 2 && d != 0 ? (n * sxy - sx * sy) / d : std::nan("");
+}
+
+void run(const BenchArguments& a) {
+  const Scene scene = loadSceneReportingWarnings(a.scene);
+  MeshOptions meshOptions = a.mesh.options();
+  if (!a.mesh.noSubdivide && a.mesh.subdivide == 0 && a.mesh.maxEdge == 0) {
+    meshOptions.mode =
+        MeshOptions::Mode::Count;  // a few hundred elements for the Cornell box: seconds per run
+    meshOptions.count = 3;
+  }
+  const Mesh mesh = buildMesh(scene, meshOptions);
+  const Eigen::VectorXd areas = mesh.areas();
+  std::filesystem::create_directories(a.output);
+  ProgressLine progress;
+
+  // The reference.
+  const bool occludable = ShaftCulling(mesh).occludablePatchPairs() > 0;
+  const auto names = formFactorMethodNames();
+  const bool haveExact = std::find(names.begin(), names.end(), "exact") != names.end();
+  std::string referenceMethod = "analytic";
+  FormFactorOptions referenceOptions;
+  referenceOptions.seed = a.seed;
+  if (occludable) {
+    if (haveExact && mesh.size() <= 200) {
+      referenceMethod = "exact";
+    } else {
+      referenceMethod = "raycast";
+      referenceOptions.samples = 1024;
+    }
+  }
+  FormFactorStats referenceStats;
+  const FormFactorMatrix reference =
+      makeFormFactorMethod(referenceMethod)->compute(mesh, referenceOptions, progress, referenceStats);
+  progress.finish();
+  const Eigen::VectorXd referenceRows = reference.rowwise().sum();
+  std::cout << "scene " << a.scene << ", " << mesh.size() << " elements; reference: " << referenceMethod
+            << (referenceMethod == "raycast" ? " (1024 samples/pair)" : "") << ", " << referenceStats.seconds
+            << " s\n";
+
+  std::vector<Sweep> sweeps = {{"hemicube", "resolution", {16, 32, 64, 128, 256, 512}},
+                               {"raycast", "samples/pair", {1, 4, 16, 64, 256}},
+                               {"montecarlo", "rays/element", {64, 256, 1024, 4096, 16384, 65536}},
+                               {"nusselt", "segments/arc", {4, 8, 16, 32, 64}}};
+  if (occludable) sweeps.push_back({"analytic-visibility", "rays/pair", {1, 4, 16, 64, 256}});
+
+  std::vector<Row> rows;
+  for (const Sweep& sweep : sweeps) {
+    std::vector<double> parameters, seconds, errors;
+    for (int value : sweep.values) {
+      FormFactorStats stats;
+      const FormFactorMatrix F =
+          makeFormFactorMethod(sweep.method)
+              ->compute(mesh, optionsFor(sweep.method, value, a.seed), progress, stats);
+      progress.finish();
+      const FormFactorMatrix difference = F - reference;
+      Row row{sweep.method,
+              value,
+              stats.seconds,
+              std::sqrt(difference.squaredNorm() / static_cast<double>(difference.size())),
+              difference.cwiseAbs().maxCoeff(),
+              (F.rowwise().sum() - referenceRows).cwiseAbs().maxCoeff()};
+      rows.push_back(row);
+      parameters.push_back(value);
+      seconds.push_back(row.seconds);
+      errors.push_back(row.rmsError);
+      std::printf("%-20s %-14s %6d  %9.3f s  rms %.3e  max %.3e  row sums %.3e\n", sweep.method.c_str(),
+                  sweep.knob.c_str(), value, row.seconds, row.rmsError, row.maxError, row.rowSumError);
+    }
+    std::printf("%-20s slope of log(rms error): %.2f per log(%s), %.2f per log(seconds)\n",
+                sweep.method.c_str(), logLogSlope(parameters, errors), sweep.knob.c_str(),
+                logLogSlope(seconds, errors));
+  }
+
+  const std::string csv = (std::filesystem::path(a.output) / "formfactors.csv").string();
+  std::ofstream out(csv);
+  out << "method,parameter,seconds,rms_error,max_error,row_sum_error\n";
+  char line[256];
+  for (const Row& r : rows) {
+    std::snprintf(line, sizeof line, "%s,%d,%.6g,%.6g,%.6g,%.6g\n", r.method.c_str(), r.parameter, r.seconds,
+                  r.rmsError, r.maxError, r.rowSumError);
+    out << line;
+  }
+  if (!out) throw std::runtime_error("cannot write " + csv);
+  std::cout << "wrote " << csv << "\n";
+#ifdef RT_HAVE_VIZ
+  std::vector<viz::Series> series;
+  for (const Sweep& sweep : sweeps) {
+    viz::Series s;
+    s.name = sweep.method;
+    for (const Row& r : rows)
+      if (r.method == sweep.method && r.rmsError > 0 && r.seconds > 0) {
+        s.x.push_back(r.seconds);
+        s.y.push_back(r.rmsError);
+      }
+    series.push_back(s);
+  }
+  viz::ChartOptions chart;
+  chart.title = "Form factors: RMS error against run time (" + std::to_string(mesh.size()) +
+                " elements, reference " + referenceMethod + ")";
+  chart.xLabel = "seconds";
+  chart.yLabel = "RMS error of F";
+  chart.logX = chart.logY = true;
+  for (const char* extension : {".png", ".svg"}) {
+    const std::string path =
+        (std::filesystem::path(a.output) / (std::string("formfactors") + extension)).string();
+    viz::writeLineChart(series, chart, path);
+    std::cout << "wrote " << path << "\n";
+  }
+#endif
+}
+
+}  // namespace
 
 void addBenchFormFactorsCommand(CLI::App& bench) {
-  auto* command = bench.add_subcommand("formfactors", "(not available yet)");
-  command->callback([] { throw std::runtime_error("'bench formfactors' is not available yet"); });
+  auto arguments = std::make_shared<BenchArguments>();
+  auto* command = bench.add_subcommand("formfactors", "Time against error of every form-factor method");
+  command->add_option("--scene", arguments->scene, "Scene file")->capture_default_str();
+  command->add_option("--output", arguments->output, "Output folder")->capture_default_str();
+  command->add_option("--seed", arguments->seed, "Seed of the stochastic methods")->capture_default_str();
+  arguments->mesh.add(*command);
+  command->callback([arguments] { run(*arguments); });
 }
 
 }  // namespace rt::cli

@@ -84,9 +84,15 @@ const std::vector<double>& deltaFormFactors(int resolution, HemicubeFace face) {
 }
 
 HemicubeFaces renderHemicube(const Mesh& mesh, int element, int resolution) {
+  HemicubeWorkspace workspace;
+  renderHemicube(mesh, element, resolution, workspace);
+  return std::move(workspace.faces);
+}
+
+void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorkspace& workspace) {
   if (resolution < 2) throw std::invalid_argument("hemicube resolution must be at least 2");
   const Element& self = mesh.elements[element];
-  HemicubeFaces result;
+  HemicubeFaces& result = workspace.faces;
   result.resolution = resolution;
   result.element = element;
   result.origin = self.centroid;
@@ -109,10 +115,13 @@ HemicubeFaces renderHemicube(const Mesh& mesh, int element, int resolution) {
     buffer.width = resolution;
     buffer.height = heightOf(resolution, face);
     buffer.element.assign(static_cast<std::size_t>(buffer.width) * buffer.height, -1);
-    buffer.depth.assign(buffer.element.size(), std::numeric_limits<float>::infinity());
+    if (workspace.computeDepth)
+      buffer.depth.assign(buffer.element.size(), std::numeric_limits<float>::infinity());
+    else
+      buffer.depth.clear();
   }
   // Inverse depths of the z-buffer (larger = nearer): affine in screen space, so no division per pixel.
-  std::array<std::vector<double>, 5> inverseDepth;
+  auto& inverseDepth = workspace.inverseDepth;
   for (int f = 0; f < 5; ++f) inverseDepth[f].assign(result.faces[f].element.size(), 0.0);
 
   const double eyeEps = 1e-12 * size;
@@ -141,16 +150,23 @@ HemicubeFaces renderHemicube(const Mesh& mesh, int element, int resolution) {
       HemicubeFaceBuffer& buffer = result.faces[f];
       // Face coordinates (across, up, depth), then clip against the near plane depth >= near.
       std::array<Vec3, 16> in, clipped;
-      bool anyInFront = false;
+      constexpr double margin = 1e-3;
+      // Outcodes against the five frustum planes: reject when all vertices are outside one of them, skip
+      // clipping when all are inside every one (the common cases).
+      unsigned allOutside = 31, anyOutside = 0;
       for (int k = 0; k < count; ++k) {
         in[k] = Vec3(local[k].dot(face.across), local[k].dot(face.up), local[k].dot(face.forward));
-        anyInFront |= in[k].z() > near;
+        const Vec3& p = in[k];
+        const double w = (1 + margin) * p.z();
+        const unsigned code = (p.z() < near ? 1u : 0u) | (p.x() > w ? 2u : 0u) | (p.x() < -w ? 4u : 0u) |
+                              (p.y() > w ? 8u : 0u) | (p.y() < (face.upMin - margin) * p.z() ? 16u : 0u);
+        allOutside &= code;
+        anyOutside |= code;
       }
-      if (!anyInFront) continue;
+      if (allOutside != 0) continue;
       // Clip to the face's frustum (slightly widened: pixel centres lie at least half a pixel inside), so
       // projected coordinates stay bounded; the near plane alone would leave points at depth ~0 projecting to
       // ~1e9 pixels, where edge functions lose all precision.
-      constexpr double margin = 1e-3;
       int n = count;
       auto clipBy = [&](auto distance) {
         int m = 0;
@@ -164,11 +180,15 @@ HemicubeFaces renderHemicube(const Mesh& mesh, int element, int resolution) {
         n = m;
         for (int k = 0; k < n; ++k) in[k] = clipped[k];
       };
-      clipBy([&](const Vec3& p) { return p.z() - near; });
-      if (n >= 3) clipBy([&](const Vec3& p) { return (1 + margin) * p.z() - p.x(); });
-      if (n >= 3) clipBy([&](const Vec3& p) { return (1 + margin) * p.z() + p.x(); });
-      if (n >= 3) clipBy([&](const Vec3& p) { return (1 + margin) * p.z() - p.y(); });
-      if (n >= 3) clipBy([&](const Vec3& p) { return p.y() - (face.upMin - margin) * p.z(); });
+      if (anyOutside == 0)
+        for (int k = 0; k < n; ++k) clipped[k] = in[k];
+      else
+        clipBy([&](const Vec3& p) { return p.z() - near; });
+      if (anyOutside != 0 && n >= 3) clipBy([&](const Vec3& p) { return (1 + margin) * p.z() - p.x(); });
+      if (anyOutside != 0 && n >= 3) clipBy([&](const Vec3& p) { return (1 + margin) * p.z() + p.x(); });
+      if (anyOutside != 0 && n >= 3) clipBy([&](const Vec3& p) { return (1 + margin) * p.z() - p.y(); });
+      if (anyOutside != 0 && n >= 3)
+        clipBy([&](const Vec3& p) { return p.y() - (face.upMin - margin) * p.z(); });
       if (n < 3) continue;
       // Project to pixel units: x in [0, width), y in [0, height).
       ProjectedPolygon projected;
@@ -243,12 +263,12 @@ HemicubeFaces renderHemicube(const Mesh& mesh, int element, int resolution) {
       }
     }
   }
+  if (!workspace.computeDepth) return;
   for (int f = 0; f < 5; ++f) {
     HemicubeFaceBuffer& buffer = result.faces[f];
     for (std::size_t p = 0; p < buffer.element.size(); ++p)
       if (buffer.element[p] >= 0) buffer.depth[p] = static_cast<float>(1.0 / inverseDepth[f][p]);
   }
-  return result;
 }
 
 void accumulateHemicubeRow(const HemicubeFaces& faces, double* row) {

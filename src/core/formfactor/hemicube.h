@@ -41,6 +41,14 @@ const std::vector<double>& deltaFormFactors(int resolution, HemicubeFace face);
 // back faces the eye, and the parts below the element's horizon, are not drawn.
 HemicubeFaces renderHemicube(const Mesh& mesh, int element, int resolution);
 
+// Reusable storage for rendering many hemicubes in a row (one per thread): no allocation after the first.
+struct HemicubeWorkspace {
+  HemicubeFaces faces;
+  std::array<std::vector<double>, 5> inverseDepth;
+  bool computeDepth = true;  // false: leave faces[].depth empty (the matrix builder only needs the ids)
+};
+void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorkspace& workspace);
+
 // Row i of the form-factor matrix from a rendered hemicube: sums the delta form factors per visible element.
 void accumulateHemicubeRow(const HemicubeFaces& faces, double* row);
 
