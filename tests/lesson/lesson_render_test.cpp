@@ -22,13 +22,14 @@ TEST(LessonRender, EveryLessonRendersWithAllItsFigures) {
   if (!haveDisplay && !haveXvfb) GTEST_SKIP() << "no X display and no xvfb-run: figures cannot be drawn";
   std::string command = rt::test::cliPath() + " lesson render --all --quick --root " +
                         rt::test::sourcePath("") + " --output " + out;
-  // -noreset: Xvfb otherwise resets whenever its last client leaves, and the next figure's connection can fail.
+  // -noreset: Xvfb otherwise resets whenever its last client leaves, and the next figure's connection can
+  // fail.
   if (!haveDisplay) command = "xvfb-run -a -s '-screen 0 1280x1024x24 -noreset' " + command;
   std::string log;
   // Several xvfb-run -a started at once can race for a display number: retry when the X connection failed.
   int status = rt::test::runCommand(command, &log);
-  for (int attempt = 0; attempt < 2 && status != 0 && log.find("bad X server connection") != std::string::npos;
-       ++attempt)
+  for (int attempt = 0;
+       attempt < 2 && status != 0 && log.find("bad X server connection") != std::string::npos; ++attempt)
     status = rt::test::runCommand(command, &log);
   ASSERT_EQ(status, 0) << log;
   EXPECT_TRUE(std::filesystem::exists(out + "/index.md"));
