@@ -66,6 +66,13 @@ EntryResult elementFormFactor(const Mesh& mesh, int source, int receiver, const 
   return integratePair(mesh, setUpPair(mesh, source, receiver), options, points);
 }
 
+double pointFormFactor(const Mesh& mesh, int source, const Vec3& x, int receiver, Booleans booleans) {
+  if (source == receiver) return 0;
+  const PairGeometry pair = setUpPair(mesh, source, receiver);
+  if (!pair.facing) return 0;
+  return PointEvaluator(pair, booleans)(x);
+}
+
 std::vector<CubaturePoint> cubaturePoints(const Mesh& mesh, int source, int receiver, const ExactOptions& options) {
   std::vector<CubaturePoint> points;
   elementFormFactor(mesh, source, receiver, options, &points);

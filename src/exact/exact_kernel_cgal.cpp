@@ -200,8 +200,19 @@ class Projector {
       const FT v[3] = {b.c[0] - x_.c[0], b.c[1] - x_.c[1], b.c[2] - x_.c[2]};
       Halfspace h{{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]}, FT(0)};
       h.d = -(h.a[0] * x_.c[0] + h.a[1] * x_.c[1] + h.a[2] * x_.c[2]);
+      // Orient by the receiver vertex farthest from the plane, never by the edge's own end points: with floating
+      // constructions their sides are rounding noise.
       CGAL::Sign orientation = CGAL::ZERO;
-      for (std::size_t m = 0; m < n && orientation == CGAL::ZERO; ++m) orientation = CGAL::sign(h.side(clipped_[m]));
+      FT farthest(0);
+      for (std::size_t m = 0; m < n; ++m) {
+        if (m == k || m == (k + 1) % n) continue;
+        const FT side = h.side(clipped_[m]);
+        const FT magnitude = CGAL::abs(side);
+        if (magnitude > farthest) {
+          farthest = magnitude;
+          orientation = CGAL::sign(side);
+        }
+      }
       if (orientation == CGAL::ZERO) continue;  // repeated vertex: no plane
       if (orientation == CGAL::NEGATIVE)
         h = Halfspace{{-h.a[0], -h.a[1], -h.a[2]}, -h.d};

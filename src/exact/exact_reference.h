@@ -99,6 +99,9 @@ struct EntryResult {
 
 EntryResult elementFormFactor(const Mesh& mesh, int source, int receiver, const ExactOptions& options = {},
                               std::vector<CubaturePoint>* points = nullptr);
+// The integrand of F_ij at one point x of the source: F(dA at x -> visible part of the receiver), with the given way of
+// cutting out the occluders the filter cannot decide (both ways must agree to rounding; the tests check it).
+double pointFormFactor(const Mesh& mesh, int source, const Vec3& x, int receiver, Booleans booleans);
 // The cubature points (final cells' refined rule) used for the entry F_ij.
 std::vector<CubaturePoint> cubaturePoints(const Mesh& mesh, int source, int receiver, const ExactOptions& options = {});
 

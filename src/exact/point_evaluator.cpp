@@ -62,7 +62,7 @@ Relation classify(const Polygon& occluder, const Vec3& x, const Polygon& rc, con
 // subtracting it means splitting each convex piece by the cone's side planes and dropping the part inside all of them.
 // Rounding can only move piece boundaries by ~1e-16 of the scene size; it never drops or duplicates an area.
 void subtractShadow(const Vec3& x, const Polygon& occluder, const Vec3& receiverPoint, const Vec3& receiverNormal,
-                    double eps, std::vector<Polygon>& pieces) {
+                    double eps, double minArea, std::vector<Polygon>& pieces) {
   Polygon o = clipToHalfspace(occluder, receiverPoint, receiverNormal);  // beyond the receiver plane: no shadow
   if (o.size() < 3) return;
   o = clipToHalfspace(o, x, -receiverNormal);  // farther from the receiver plane than x: behind x
@@ -89,7 +89,9 @@ void subtractShadow(const Vec3& x, const Polygon& occluder, const Vec3& receiver
     Polygon inside = piece;
     for (const Vec3& m : sides) {
       Polygon outside = clipToHalfspace(inside, x, -m);
-      if (!outside.empty()) result.push_back(std::move(outside));
+      // Slivers from shadow planes that coincide up to rounding (occluders sharing edges) carry no area: dropping
+      // them keeps the piece count from growing with every coincident plane.
+      if (!outside.empty() && polygonArea(outside) > minArea) result.push_back(std::move(outside));
       inside = clipToHalfspace(inside, x, m);
       if (inside.empty()) break;
     }
@@ -143,8 +145,9 @@ double PointEvaluator::operator()(const Vec3& x) const {
   }
   ++splitEvaluations_;
   std::vector<Polygon> pieces{rc};
+  const double minArea = 1e-15 * polygonArea(rc);
   for (const Polygon* o : uncertain) {
-    subtractShadow(x, *o, r0, pair_.receiverNormal, eps, pieces);
+    subtractShadow(x, *o, r0, pair_.receiverNormal, eps, minArea, pieces);
     if (pieces.empty()) return 0;
   }
   double total = 0;

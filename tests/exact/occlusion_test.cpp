@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 
 #include "exact/adaptive_cubature.h"
 #include "exact/exact_reference.h"
@@ -33,10 +34,18 @@ double referenceIntegral(const std::vector<Polygon>& pieces, const std::function
   return total;
 }
 
+// Entries to 1e-7 with the double-precision convex split (fast); the exact CGAL path is held to the same values point
+// by point in SplitAndExactBooleansAgree.
+ExactOptions splitOptions() {
+  ExactOptions options;
+  options.booleans = Booleans::Split;
+  return options;
+}
+
 TEST(Occlusion, FullOccluderGivesExactlyZero) {
   const Polygon blocker = rectangleAtHeight(-1, 2, -1, 2, 0.5);
   const Mesh mesh = test::meshFromPolygons({kFloor, kCeiling, blocker});
-  const EntryResult entry = elementFormFactor(mesh, 0, 1);
+  const EntryResult entry = elementFormFactor(mesh, 0, 1, splitOptions());
   EXPECT_TRUE(entry.occluded);
   EXPECT_EQ(entry.value, 0.0);
   EXPECT_EQ(entry.errorEstimate, 0.0);
@@ -82,7 +91,7 @@ Polygon wall(double z0, double z1) { return {{0.5, -20, z0}, {0.5, 21, z0}, {0.5
 
 TEST(Occlusion, OccluderTouchingTheSource) {
   const Mesh mesh = test::meshFromPolygons({kFloor, kCeiling, wall(0, 0.5)});
-  const EntryResult entry = elementFormFactor(mesh, 0, 1);
+  const EntryResult entry = elementFormFactor(mesh, 0, 1, splitOptions());
   const double expected = wallReference(0, 0.5);
   EXPECT_NEAR(entry.value, expected, 1e-7 * expected);
   EXPECT_LT(expected, 0.19982489569838738);  // the unoccluded C-11 value
@@ -92,14 +101,14 @@ TEST(Occlusion, OccluderStraddlingTheSourcePlane) {
   // The part below the floor blocks nothing: same as the wall standing on the floor.
   const Mesh mesh = test::meshFromPolygons({kFloor, kCeiling, wall(-0.7, 0.5)});
   const double expected = wallReference(0, 0.5);
-  EXPECT_NEAR(elementFormFactor(mesh, 0, 1).value, expected, 1e-7 * expected);
+  EXPECT_NEAR(elementFormFactor(mesh, 0, 1, splitOptions()).value, expected, 1e-7 * expected);
 }
 
 TEST(Occlusion, OccluderStraddlingTheReceiverPlane) {
   // The part above the ceiling blocks nothing.
   const Mesh mesh = test::meshFromPolygons({kFloor, kCeiling, wall(0.4, 1.6)});
   const double expected = wallReference(0.4, 1.0);
-  EXPECT_NEAR(elementFormFactor(mesh, 0, 1).value, expected, 1e-7 * expected);
+  EXPECT_NEAR(elementFormFactor(mesh, 0, 1, splitOptions()).value, expected, 1e-7 * expected);
 }
 
 // A rectangle parallel to floor and ceiling at height h casts the rectangle scaled by 1/h about x on the ceiling.
@@ -138,7 +147,7 @@ double parallelOccluderReference(double x0, double x1, double y0, double y1, dou
 TEST(Occlusion, ParallelOccluderMatchesClosedFormShadow) {
   const Mesh mesh = test::meshFromPolygons({kFloor, kCeiling, rectangleAtHeight(0.2, 0.8, 0.25, 0.75, 0.5)});
   const double expected = parallelOccluderReference(0.2, 0.8, 0.25, 0.75, 0.5);
-  EXPECT_NEAR(elementFormFactor(mesh, 0, 1).value, expected, 1e-7 * expected);
+  EXPECT_NEAR(elementFormFactor(mesh, 0, 1, splitOptions()).value, expected, 1e-7 * expected);
 }
 
 TEST(Occlusion, SeveralOverlappingOccludersActAsTheirUnion) {
@@ -147,9 +156,9 @@ TEST(Occlusion, SeveralOverlappingOccludersActAsTheirUnion) {
                                             rectangleAtHeight(0.4, 0.8, 0.25, 0.6, 0.5),
                                             rectangleAtHeight(0.5, 0.8, 0.5, 0.75, 0.5)});
   const double expected = parallelOccluderReference(0.2, 0.8, 0.25, 0.75, 0.5);
-  const EntryResult entry = elementFormFactor(mesh, 0, 1);
+  const EntryResult entry = elementFormFactor(mesh, 0, 1, splitOptions());
   EXPECT_NEAR(entry.value, expected, 1e-7 * expected);
-  EXPECT_GT(entry.exactEvaluations, 0);
+  EXPECT_GT(entry.splitEvaluations, 0);
 }
 
 TEST(Occlusion, OccluderMeshedIntoAdjacentElements) {
@@ -160,7 +169,7 @@ TEST(Occlusion, OccluderMeshedIntoAdjacentElements) {
       polygons.push_back(rectangleAtHeight(0.2 + 0.2 * i, 0.4 + 0.2 * i, 0.25 + 0.25 * j, 0.5 + 0.25 * j, 0.5));
   const Mesh mesh = test::meshFromPolygons(polygons);
   const double expected = parallelOccluderReference(0.2, 0.8, 0.25, 0.75, 0.5);
-  EXPECT_NEAR(elementFormFactor(mesh, 0, 1).value, expected, 1e-7 * expected);
+  EXPECT_NEAR(elementFormFactor(mesh, 0, 1, splitOptions()).value, expected, 1e-7 * expected);
 }
 
 TEST(Occlusion, AdjacentOccluderElementsLeaveOneHole) {
@@ -174,6 +183,36 @@ TEST(Occlusion, AdjacentOccluderElementsLeaveOneHole) {
   ASSERT_EQ(region.visible.size(), 1u);  // the ceiling minus one square hole [0.3, 0.7]^2: no cracks between pieces
   ASSERT_EQ(region.visible[0].holes.size(), 1u);
   EXPECT_NEAR(region.visible[0].area(), 1.0 - 0.16, 1e-14);
+}
+
+TEST(Occlusion, SplitAndExactBooleansAgree) {
+  std::vector<Polygon> polygons{kFloor, kCeiling, rectangleAtHeight(0.2, 0.6, 0.25, 0.75, 0.5),
+                                rectangleAtHeight(0.4, 0.8, 0.25, 0.6, 0.5), wall(0.3, 0.8),
+                                {{0.1, 0.2, 0.3}, {0.9, 0.1, 0.45}, {0.7, 0.8, 0.6}, {0.2, 0.7, 0.5}}};
+  const Mesh mesh = test::meshFromPolygons(polygons, 2);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int compared = 0, partial = 0;
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    if (mesh.elements[i].patch != 0) continue;
+    for (std::size_t j = 0; j < mesh.size(); ++j) {
+      if (mesh.elements[j].patch != 1) continue;
+      const Polygon p = mesh.polygon(static_cast<int>(i));
+      for (int k = 0; k < 6; ++k) {
+        const double s = u(rng), t = u(rng);
+        const Vec3 x = (1 - s) * (1 - t) * p[0] + s * (1 - t) * p[1] + s * t * p[2] + (1 - s) * t * p[3];
+        const double exact = pointFormFactor(mesh, static_cast<int>(i), x, static_cast<int>(j), Booleans::Exact);
+        const double split = pointFormFactor(mesh, static_cast<int>(i), x, static_cast<int>(j), Booleans::Split);
+        EXPECT_NEAR(split, exact, 1e-13);
+        const VisibleRegion region = visibleRegion(mesh, static_cast<int>(i), x, static_cast<int>(j));
+        EXPECT_NEAR(region.formFactor, exact, 1e-13);
+        if (exact > 0 && exact < region.unoccludedFormFactor - 1e-9) ++partial;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(compared, 4 * 4 * 6);
+  EXPECT_GT(partial, 20);
 }
 
 TEST(Occlusion, VisibleRegionPiecesAndFormFactorAgree) {
