@@ -61,7 +61,8 @@ Drawing matrixDrawing(const Eigen::MatrixXd& matrix, const MatrixViewOptions& op
   if (std::isfinite(options.min)) lo = options.min;
   if (std::isfinite(options.max)) hi = options.max;
   if (options.logScale) {
-    lo = std::max(lo, hi * 1e-12);
+    // Six decades are what the eye can tell apart on one map; smaller non-zero entries get the lowest colour.
+    if (!std::isfinite(options.min)) lo = std::max(lo, hi * 1e-6);
     if (hi <= lo) hi = lo * 10;
   } else if (hi <= lo) {
     hi = lo + 1;

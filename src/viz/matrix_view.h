@@ -21,7 +21,8 @@ struct MatrixViewOptions {
   std::string rowLabel = "i (emitting element)";
   std::string columnLabel = "j (receiving element)";
   std::string valueLabel = "F_ij";
-  bool logScale = true;  // log10 of |value|; exact zeros get a light grey so that "nothing" stays distinct
+  bool logScale = true;  // log10 of |value| over at most 6 decades below the largest (unless min is given);
+                         // exact zeros get a light grey so that "nothing" stays distinct from "small"
   ColourMap map = ColourMap::Viridis;
   std::vector<int> groups;  // one label per element (e.g. its patch); a separator where the label changes
   int selectedRow = -1, selectedColumn = -1;

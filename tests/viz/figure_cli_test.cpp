@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <ostream>
 
 #include "support/test_paths.h"
 #include "viz/viz_test_support.h"
@@ -30,6 +31,11 @@ struct ViewCase {
   std::string arguments;  // view and options
   bool deterministic = true;
 };
+
+// Test names and failure messages show the view, not the bytes of the struct.
+void PrintTo(const ViewCase& view, std::ostream* os) {
+  *os << view.name << " (" << view.arguments << ")";
+}
 
 class FigureView : public ::testing::TestWithParam<ViewCase> {};
 
