@@ -4,9 +4,10 @@
 #include <stdexcept>
 
 #include "app/lesson_session.h"
+#include "cli/lesson_figures.h"
 #include "core/io/matrix_export.h"
 #include "core/solvers/radiosity_system.h"
-#include "viz/chart.h"
+#include "lesson/step_result.h"
 
 namespace rt::app {
 
@@ -38,46 +39,21 @@ int exportLessonFigures(LessonLibrary& library, int lessonIndex, const std::stri
   namespace fs = std::filesystem;
   fs::create_directories(folder);
   const lesson::Lesson& lesson = library.lessons().at(static_cast<std::size_t>(lessonIndex));
+  cli::FigureSettings settings;
+  settings.width = width;
+  settings.height = height;
   int written = 0;
   const int steps = static_cast<int>(lesson.steps.size());
   for (int s = 0; s < steps; ++s) {
     if (onStep) onStep(s, steps);
     if (progress.cancelled()) throw Cancelled();
     const lesson::Step& step = lesson.steps[static_cast<std::size_t>(s)];
-    if (step.stage == lesson::Stage::Text) continue;
+    if (step.stage == lesson::Stage::Text || step.figureFiles().empty()) continue;
     const PipelineResult result = library.runStep(lessonIndex, s, step.parameters, {}, {}, progress);
-    if (!result.mesh) continue;
-    const std::string base = step.figure.empty() ? lesson.id + "-step" + std::to_string(s + 1) : step.figure;
-    viz::SceneViewOptions options;
-    options.image.width = width;
-    options.image.height = height;
-    options.image.exposure = step.parameters.exposure;
-    options.image.toneMap =
-        step.parameters.toneMap == "reinhard" ? viz::ToneMap::Reinhard : viz::ToneMap::LinearClamp;
-    options.image.srgbGamma = step.parameters.gamma;
-    options.image.smooth = step.parameters.smooth;
-    options.image.showEdges = step.parameters.edges;
-    options.caption = step.title;
-    viz::SceneViewData data;
-    data.B = result.B;
-    exportSceneFigure(*result.mesh, result.camera, data, options,
-                      (fs::path(folder) / (base + ".png")).string());
-    ++written;
-    if (result.history.size() > 1) {
-      viz::Series series;
-      series.name = result.solverName;
-      for (const IterationRecord& r : result.history) {
-        series.x.push_back(r.iteration);
-        series.y.push_back(std::max(r.residual, 1e-300));
-      }
-      viz::ChartOptions chart;
-      chart.title = step.title + ": convergence";
-      chart.xLabel = "iteration";
-      chart.yLabel = "relative residual";
-      chart.logY = true;
-      viz::writeLineChart({series}, chart, (fs::path(folder) / (base + "-convergence.svg")).string());
-      ++written;
-    }
+    auto stepResult = std::static_pointer_cast<const lesson::StepResult>(result.stepResult);
+    if (!stepResult) continue;
+    // The same drawing as `radiosity lesson render`: one file per view, named by the step's figure.
+    written += static_cast<int>(cli::renderStepFigures(lesson, step, *stepResult, folder, settings).size());
   }
   return written;
 }

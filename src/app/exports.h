@@ -20,8 +20,8 @@ void exportSceneFigure(const Mesh& mesh, const Camera& camera, const viz::SceneV
 // The form-factor matrix (n x n), or K = I - diag(rho_channel) F when `which` is "K", or B (n x 3) when "B".
 void exportMatrix(const PipelineResult& result, const std::string& which, const std::string& path);
 
-// Runs every step of the lesson and writes its scene figure (named as the step's figure files) and, for steps
-// that solve, its convergence chart, into `folder`. Returns the number of files written; `onStep` is told of
+// Runs every step of the lesson and writes its figures, as `radiosity lesson render` draws them (one file per
+// view, named by the step's figure) into `folder`. Returns the number of files written; `onStep` is told of
 // each step (it may throw Cancelled to stop).
 int exportLessonFigures(LessonLibrary& library, int lessonIndex, const std::string& folder, int width,
                         int height, Progress& progress,

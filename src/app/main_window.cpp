@@ -26,6 +26,7 @@
 
 #include "app/contents_tree.h"
 #include "app/exports.h"
+#include "app/figures_pane.h"
 #include "app/iteration_player.h"
 #include "app/lesson_session.h"
 #include "app/matrix_view.h"
@@ -121,6 +122,8 @@ void MainWindow::buildUi() {
   matrix_ = new MatrixView(tabs_);
   tabs_->addTab(chart_, tr("Convergence"));
   tabs_->addTab(matrix_, tr("Form factors F"));
+  figures_ = new FiguresPane(tabs_);
+  tabs_->addTab(figures_, tr("Step figures"));
   lowerLayout->addWidget(player_);
   lowerLayout->addWidget(tabs_, 1);
   right->addWidget(viewSplitter_);

@@ -26,6 +26,7 @@ class QTextBrowser;
 namespace rt::app {
 
 class ContentsTree;
+class FiguresPane;
 class IterationPlayer;
 class LessonLibrary;
 class MatrixView;
@@ -87,6 +88,7 @@ class MainWindow : public QMainWindow {
   MatrixView* matrixView() const { return matrix_; }
   ParameterPanel* parameterPanel() const { return panel_; }
   ContentsTree* contents() const { return contents_; }
+  FiguresPane* figuresPane() const { return figures_; }
 
  signals:
   void resultShown();
@@ -137,6 +139,7 @@ class MainWindow : public QMainWindow {
   IterationPlayer* player_ = nullptr;
   ResidualChart* chart_ = nullptr;
   MatrixView* matrix_ = nullptr;
+  FiguresPane* figures_ = nullptr;
   QTabWidget* tabs_ = nullptr;
   ParameterPanel* panel_ = nullptr;
   QCheckBox* compareBox_ = nullptr;

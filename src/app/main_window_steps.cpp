@@ -6,11 +6,13 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
+#include <QTabWidget>
 #include <QTextBrowser>
 #include <QThread>
 
 #include "app/builtin_scene.h"
 #include "app/contents_tree.h"
+#include "app/figures_pane.h"
 #include "app/iteration_player.h"
 #include "app/lesson_session.h"
 #include "app/main_window.h"
@@ -269,6 +271,20 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
     secondaryView_->setScene(nullptr, {}, r.camera, false);  // it must not keep a mesh that is about to go
   }
   if (newStep) applyStepDisplay(step);
+  // Steps about form factors (no solution to show) colour the scene by the row of F of their source element.
+  const bool formFactorStage =
+      step && stepResult && r.F && stepResult->B.rows() == 0 &&
+      (step->stage == lesson::Stage::FormFactors || step->stage == lesson::Stage::Hemicube ||
+       step->stage == lesson::Stage::Nusselt || step->stage == lesson::Stage::Rays ||
+       step->stage == lesson::Stage::Exact);
+  if (formFactorStage && stepResult->sourceElement >= 0 && stepResult->sourceElement < r.F->rows()) {
+    const int source = stepResult->sourceElement;
+    primaryView_->setScalarField(r.F->row(source).transpose(), "F from element " + std::to_string(source));
+    primaryView_->setHighlighted({source});
+    primaryView_->setCaption(tr("Form factors from element %1").arg(source));
+  } else {
+    primaryView_->setScalarField(Eigen::VectorXd(), {});
+  }
 
   text_->setMarkdown(mode_ == Mode::Lesson ? QString::fromStdString(r.text) : sceneSummary(r));
   std::vector<QString> names{QString::fromStdString(r.solverName)};
@@ -292,6 +308,17 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   if (compare_ && r.compared) longest = std::max(longest, static_cast<int>(r.compared->history.size()));
   player_->setIterationCount(longest);
   matrix_->setMatrix(r.F);
+  figures_->clear();
+  if (step && stepResult) {
+    try {
+      const auto& lesson = library_->lessons()[static_cast<std::size_t>(lesson_)];
+      if (figures_->showStep(lesson, *step, *stepResult) > 0 && newStep) tabs_->setCurrentWidget(figures_);
+    } catch (const std::exception& e) {
+      showError(tr("The step's figures could not be drawn: %1").arg(e.what()));
+    }
+  }
+  if (newStep && figures_->figureCount() == 0 && tabs_->currentWidget() == figures_)
+    tabs_->setCurrentIndex(0);
 
   if (newStep) {
     std::vector<std::pair<QString, Rgb>> surfaces;

@@ -103,6 +103,15 @@ void SceneView::setViewOptions(const viz::SceneViewOptions& options) {
   requestRender();
 }
 
+void SceneView::setScalarField(const Eigen::VectorXd& values, const std::string& title) {
+  data_.scalar = values;
+  options_.colouring = values.size() > 0 ? viz::SceneColouring::Scalar : viz::SceneColouring::Radiosity;
+  options_.legend = viz::ScalarLegend{};
+  options_.legend.title = title;
+  if (mesh_) repaint3d();
+  requestRender();
+}
+
 void SceneView::repaint3d() {
   // The viz layer's paint: the same exposure, tone map and gamma as the exported figures.
   try {

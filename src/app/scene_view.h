@@ -30,6 +30,9 @@ class SceneView : public VtkWidget {
   void setRadiosity(const RgbField& B);
   // Colouring, exposure, tone map, gamma, smooth shading: the same options the figure exporters take.
   void setViewOptions(const viz::SceneViewOptions& options);
+  // Colours the elements by one value each (e.g. a row of F) through the viz colour map instead of by
+  // radiosity; an empty field returns to radiosity.
+  void setScalarField(const Eigen::VectorXd& values, const std::string& title);
   const viz::SceneViewOptions& viewOptions() const { return options_; }
   const viz::SceneViewData& viewData() const { return data_; }
   const Mesh* mesh() const { return mesh_; }

@@ -1,0 +1,61 @@
+#include "app/figures_pane.h"
+
+#include <QDir>
+#include <QLabel>
+#include <QPixmap>
+#include <QVBoxLayout>
+
+#include "cli/lesson_figures.h"
+
+namespace rt::app {
+
+FiguresPane::FiguresPane(QWidget* parent) : QScrollArea(parent) {
+  setWidgetResizable(true);
+  content_ = new QWidget(this);
+  layout_ = new QVBoxLayout(content_);
+  layout_->addStretch(1);
+  setWidget(content_);
+}
+
+void FiguresPane::clear() {
+  while (layout_->count() > 1) {
+    QLayoutItem* item = layout_->takeAt(0);
+    delete item->widget();
+    delete item;
+  }
+  count_ = 0;
+}
+
+int FiguresPane::showStep(const lesson::Lesson& lesson, const lesson::Step& step,
+                          const lesson::StepResult& result) {
+  clear();
+  lesson::Step others = step;
+  others.views.clear();
+  for (lesson::View v : step.views)
+    if (v != lesson::View::Scene) others.views.push_back(v);
+  if (others.views.empty() || !folder_.isValid()) return 0;
+  // A fresh folder per call: the files of the previous step may still be on screen while these are written.
+  const QString dir = folder_.filePath(QString::number(++serial_));
+  cli::FigureSettings settings;
+  settings.width = 900;
+  settings.height = 680;
+  const auto figures = cli::renderStepFigures(lesson, others, result, dir.toStdString(), settings);
+  const auto files = others.figureFiles();
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    const QString path = QDir(dir).filePath(QString::fromStdString(files[k]));
+    QPixmap pixmap(path);
+    if (pixmap.isNull()) continue;  // vector-only formats are not shown here
+    auto* caption =
+        new QLabel(k < figures.size() ? QString::fromStdString(figures[k].caption) : QString(), content_);
+    caption->setWordWrap(true);
+    auto* image = new QLabel(content_);
+    image->setPixmap(pixmap.scaledToWidth(std::min(pixmap.width(), 720), Qt::SmoothTransformation));
+    image->setObjectName("figure");
+    layout_->insertWidget(layout_->count() - 1, caption);
+    layout_->insertWidget(layout_->count() - 1, image);
+    ++count_;
+  }
+  return count_;
+}
+
+}  // namespace rt::app

@@ -1,0 +1,35 @@
+// The step's other views (hemicube, Nusselt disk, rays, matrix, charts...) as the viz layer draws them for
+// the book: the same function as `radiosity lesson render`, shown as images under their captions.
+#pragma once
+
+#include <QScrollArea>
+#include <QString>
+#include <QTemporaryDir>
+#include <vector>
+
+#include "lesson/lesson.h"
+#include "lesson/step_result.h"
+
+class QVBoxLayout;
+
+namespace rt::app {
+
+class FiguresPane : public QScrollArea {
+  Q_OBJECT
+ public:
+  explicit FiguresPane(QWidget* parent = nullptr);
+  // Draws every view of the step except the live 3D scene view. Returns how many figures are shown; throws
+  // std::runtime_error when drawing fails.
+  int showStep(const lesson::Lesson& lesson, const lesson::Step& step, const lesson::StepResult& result);
+  void clear();
+  int figureCount() const { return count_; }
+
+ private:
+  QTemporaryDir folder_;
+  QWidget* content_ = nullptr;
+  QVBoxLayout* layout_ = nullptr;
+  int count_ = 0;
+  int serial_ = 0;
+};
+
+}  // namespace rt::app
