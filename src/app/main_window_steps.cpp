@@ -293,7 +293,8 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
     names.push_back(QString::fromStdString(r.compared->solverName) + tr(" (right)"));
     runs.push_back(residualsOf(*r.compared));
   }
-  if (runs.front().empty()) runs.clear(), names.clear();
+  // A single record (a direct solve) has no convergence to show.
+  if (runs.front().size() <= 1) runs.clear(), names.clear();
   // A step that compares several runs itself (solvers, methods) shows all of its curves.
   if (stepResult && stepResult->runs.size() > 1 && !compare_) {
     names.clear();

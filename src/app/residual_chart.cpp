@@ -85,12 +85,16 @@ void ResidualChart::setRuns(const std::vector<QString>& names,
   }
   marker_ = new QScatterSeries();
   marker_->setMarkerSize(10);
-  marker_->setColor(QColor(0, 0, 0));
+  marker_->setColor(large_ ? QColor(255, 255, 255) : QColor(0, 0, 0));
   c->addSeries(marker_);
   marker_->attachAxis(xAxis_);
   marker_->attachAxis(yAxis_);
   c->legend()->markers(marker_).first()->setVisible(false);
   xAxis_->setRange(1, std::max(2, longest));
+  // Whole-number ticks: an interval that gives at most about eight of them.
+  xAxis_->setTickType(QValueAxis::TicksDynamic);
+  xAxis_->setTickAnchor(1);
+  xAxis_->setTickInterval(std::max(1, (longest + 7) / 8));
   yAxis_->setRange(std::pow(10, std::floor(std::log10(floor))), std::pow(10, std::ceil(std::log10(highest))));
   c->legend()->setVisible(residuals_.size() > 1);
   setCurrent(longest - 1);
@@ -118,6 +122,17 @@ int ResidualChart::pointsShown(int run) const {
 }
 
 void ResidualChart::setLargeFonts(bool large) {
+  large_ = large;
+  // Presenter mode: the chart follows the high-contrast palette (white on black).
+  const QColor background = large ? QColor(0, 0, 0) : QColor(255, 255, 255);
+  const QColor foreground = large ? QColor(255, 255, 255) : QColor(0, 0, 0);
+  chart()->setBackgroundBrush(background);
+  for (QAbstractAxis* axis : {static_cast<QAbstractAxis*>(xAxis_), static_cast<QAbstractAxis*>(yAxis_)}) {
+    axis->setLabelsBrush(foreground);
+    axis->setTitleBrush(foreground);
+  }
+  chart()->legend()->setLabelColor(foreground);
+  if (marker_) marker_->setColor(foreground);
   QFont font = this->font();
   font.setPointSizeF(large ? font.pointSizeF() * 1.6 : font.pointSizeF());
   chart()->setTitleFont(font);

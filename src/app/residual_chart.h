@@ -32,6 +32,7 @@ class ResidualChart : public QChartView {
   QScatterSeries* marker_ = nullptr;
   QValueAxis* xAxis_ = nullptr;
   QLogValueAxis* yAxis_ = nullptr;
+  bool large_ = false;
 };
 
 }  // namespace rt::app
