@@ -14,7 +14,7 @@ namespace {
 
 CubatureSettings settingsFor(const ExactOptions& options, bool occluded) {
   CubatureSettings settings;
-  settings.order = options.ruleOrder;
+  settings.order = occluded ? options.occludedRuleOrder : options.ruleOrder;
   settings.maxEvaluations = options.maxEvaluations;
   // Occluded integrands have kinks along shadow boundaries: split once before adapting so that a shadow smaller than
   // the element cannot slip between identical coarse and refined estimates.

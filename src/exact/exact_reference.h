@@ -72,7 +72,8 @@ struct ExactOptions {
   // Entries smaller than this are computed to tolerance * floor absolutely (a relative target on ~0 is meaningless).
   double absoluteFloor = 1e-6;
   long maxEvaluations = 400000;  // per entry; the error estimate tells when it was not enough
-  int ruleOrder = 5;             // Gauss-Legendre points per direction of the cubature rule
+  int ruleOrder = 5;             // Gauss-Legendre points per direction of the cubature rule (unoccluded pairs)
+  int occludedRuleOrder = 3;     // lower order wins where shadow boundaries put kinks into F(x)
   Booleans booleans = Booleans::Exact;
 };
 
