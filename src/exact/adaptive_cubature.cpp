@@ -38,7 +38,8 @@ struct Cell {
   Polygon vertices;
   double coarse = 0;
   double fine = 0;
-  std::vector<double> childCoarse;  // rule on each child: the children's coarse estimates when this cell is split
+  std::vector<double>
+      childCoarse;  // rule on each child: the children's coarse estimates when this cell is split
   double error() const { return std::abs(fine - coarse); }
   bool operator<(const Cell& other) const { return error() < other.error(); }
 };
@@ -52,7 +53,8 @@ std::vector<Polygon> splitCell(const Polygon& c) {
   }
   const Vec3 m01 = 0.5 * (c[0] + c[1]), m12 = 0.5 * (c[1] + c[2]), m23 = 0.5 * (c[2] + c[3]),
              m30 = 0.5 * (c[3] + c[0]), center = 0.25 * (c[0] + c[1] + c[2] + c[3]);
-  return {{c[0], m01, center, m30}, {m01, c[1], m12, center}, {center, m12, c[2], m23}, {m30, center, m23, c[3]}};
+  return {
+      {c[0], m01, center, m30}, {m01, c[1], m12, center}, {center, m12, c[2], m23}, {m30, center, m23, c[3]}};
 }
 
 AdaptiveCubature::AdaptiveCubature(CubatureSettings settings) : settings_(std::move(settings)) {

@@ -1,7 +1,8 @@
-// Globally adaptive cubature over a planar convex polygon: cells are triangles (collapsed Gauss-Legendre product rule)
-// or quadrilaterals (bilinear Gauss-Legendre product rule). Each cell carries a coarse estimate (rule on the cell) and a
-// refined one (rule on its four children); the cell with the largest |refined - coarse| is split until the sum of those
-// differences is below the requested absolute tolerance. Shadow boundaries, where F(x) has kinks, attract the splits.
+// Globally adaptive cubature over a planar convex polygon: cells are triangles (collapsed Gauss-Legendre
+// product rule) or quadrilaterals (bilinear Gauss-Legendre product rule). Each cell carries a coarse estimate
+// (rule on the cell) and a refined one (rule on its four children); the cell with the largest |refined -
+// coarse| is split until the sum of those differences is below the requested absolute tolerance. Shadow
+// boundaries, where F(x) has kinks, attract the splits.
 #pragma once
 
 #include <functional>
@@ -12,9 +13,9 @@
 namespace rt::exact {
 
 struct CubatureSettings {
-  int order = 5;               // Gauss-Legendre points per direction
+  int order = 5;  // Gauss-Legendre points per direction
   long maxEvaluations = 400000;
-  int initialSplits = 0;       // uniform splits before adapting (guards small features both estimates would miss)
+  int initialSplits = 0;  // uniform splits before adapting (guards small features both estimates would miss)
   // Absolute target as a function of the current estimate of the integral (relative targets need it).
   std::function<double(double)> tolerance = [](double) { return 1e-12; };
 };
@@ -34,8 +35,8 @@ struct WeightedPoint {
 class AdaptiveCubature {
  public:
   explicit AdaptiveCubature(CubatureSettings settings);
-  // Integrates f over the polygon (3 or 4 vertices: one cell, more: fan triangles). `finalPoints`, when given,
-  // receives the points and weights of the refined rule of every final cell.
+  // Integrates f over the polygon (3 or 4 vertices: one cell, more: fan triangles). `finalPoints`, when
+  // given, receives the points and weights of the refined rule of every final cell.
   CubatureResult integrate(const Polygon& domain, const std::function<double(const Vec3&)>& f,
                            std::vector<WeightedPoint>* finalPoints = nullptr) const;
   // The rule's points on one cell (3 or 4 vertices).

@@ -1,5 +1,6 @@
-// Element-to-element form factors: F_ij = (1/A_i) integral over i of F(dA at x -> visible part of j), by adaptive
-// cubature. Also the lesson-facing views of the same computation: the visible region from a point, the cubature points.
+// Element-to-element form factors: F_ij = (1/A_i) integral over i of F(dA at x -> visible part of j), by
+// adaptive cubature. Also the lesson-facing views of the same computation: the visible region from a point,
+// the cubature points.
 #include <algorithm>
 #include <cmath>
 
@@ -16,12 +17,14 @@ CubatureSettings settingsFor(const ExactOptions& options, bool occluded) {
   CubatureSettings settings;
   settings.order = occluded ? options.occludedRuleOrder : options.ruleOrder;
   settings.maxEvaluations = options.maxEvaluations;
-  // Occluded integrands have kinks along shadow boundaries: split once before adapting so that a shadow smaller than
-  // the element cannot slip between identical coarse and refined estimates.
+  // Occluded integrands have kinks along shadow boundaries: split once before adapting so that a shadow
+  // smaller than the element cannot slip between identical coarse and refined estimates.
   settings.initialSplits = occluded ? 1 : 0;
   const double relative = occluded ? options.occludedTolerance : options.tolerance;
   const double floor = options.absoluteFloor;
-  settings.tolerance = [relative, floor](double estimate) { return relative * std::max(std::abs(estimate), floor); };
+  settings.tolerance = [relative, floor](double estimate) {
+    return relative * std::max(std::abs(estimate), floor);
+  };
   return settings;
 }
 
@@ -35,7 +38,8 @@ EntryResult integratePair(const Mesh& mesh, const PairGeometry& pair, const Exac
   const AdaptiveCubature cubature(settingsFor(options, entry.occluded));
   std::vector<WeightedPoint> finalPoints;
   const auto f = [&](const Vec3& x) { return evaluate(x); };
-  const CubatureResult result = cubature.integrate(pair.integrationDomain, f, points ? &finalPoints : nullptr);
+  const CubatureResult result =
+      cubature.integrate(pair.integrationDomain, f, points ? &finalPoints : nullptr);
   const double area = mesh.elements[pair.source].area;
   entry.value = result.value / area;
   entry.errorEstimate = result.errorEstimate / area;
@@ -44,7 +48,8 @@ EntryResult integratePair(const Mesh& mesh, const PairGeometry& pair, const Exac
   entry.splitEvaluations = evaluate.splitEvaluations();
   entry.converged = result.converged;
   if (points)
-    for (const WeightedPoint& p : finalPoints) points->push_back({p.position, p.weight, evaluate(p.position)});
+    for (const WeightedPoint& p : finalPoints)
+      points->push_back({p.position, p.weight, evaluate(p.position)});
   return entry;
 }
 
@@ -62,7 +67,8 @@ ExactOptions exactOptionsFor(double tolerance) {
 
 EntryResult elementFormFactor(const Mesh& mesh, int source, int receiver, const ExactOptions& options,
                               std::vector<CubaturePoint>* points) {
-  if (source == receiver) return EntryResult{0, 0, false, false, 0, 0, 0, true};  // planar elements do not see themselves
+  if (source == receiver)
+    return EntryResult{0, 0, false, false, 0, 0, 0, true};  // planar elements do not see themselves
   return integratePair(mesh, setUpPair(mesh, source, receiver), options, points);
 }
 
@@ -73,7 +79,8 @@ double pointFormFactor(const Mesh& mesh, int source, const Vec3& x, int receiver
   return PointEvaluator(pair, booleans)(x);
 }
 
-std::vector<CubaturePoint> cubaturePoints(const Mesh& mesh, int source, int receiver, const ExactOptions& options) {
+std::vector<CubaturePoint> cubaturePoints(const Mesh& mesh, int source, int receiver,
+                                          const ExactOptions& options) {
   std::vector<CubaturePoint> points;
   elementFormFactor(mesh, source, receiver, options, &points);
   return points;
@@ -92,7 +99,8 @@ VisibleRegion visibleRegion(const Mesh& mesh, int source, const Vec3& point, int
   region.facing = visibility.projection.receiverFacesPoint;
   region.clippedReceiver = visibility.projection.clippedReceiver;
   region.occluderProjections = visibility.projection.projections;
-  for (int owner : visibility.projection.projectionOwners) region.projectionOwners.push_back(pair.occluders[owner]);
+  for (int owner : visibility.projection.projectionOwners)
+    region.projectionOwners.push_back(pair.occluders[owner]);
   region.visible = visibility.visible;
   region.formFactor = pointToRegionFormFactor(point, pair.sourceNormal, region.visible);
   region.unoccludedFormFactor = pointToPolygonFormFactor(point, pair.sourceNormal, region.clippedReceiver);
@@ -101,8 +109,8 @@ VisibleRegion visibleRegion(const Mesh& mesh, int source, const Vec3& point, int
 
 Eigen::MatrixXd errorMap(const FormFactorMatrix& method, const FormFactorMatrix& exact) {
   if (method.rows() != exact.rows() || method.cols() != exact.cols())
-    throw std::invalid_argument("errorMap: matrices of different sizes (" + std::to_string(method.rows()) + " vs " +
-                                std::to_string(exact.rows()) + " rows)");
+    throw std::invalid_argument("errorMap: matrices of different sizes (" + std::to_string(method.rows()) +
+                                " vs " + std::to_string(exact.rows()) + " rows)");
   return (method - exact).cwiseAbs();
 }
 

@@ -1,6 +1,7 @@
-// Exact visibility from a point with CGAL: clipping and central projection templated over the kernel (exact or floating
-// constructions, CGAL style), 2D Boolean set operations with the exact constructions kernel. This is one of the two
-// translation units of the library that include CGAL; keep everything that changes often elsewhere.
+// Exact visibility from a point with CGAL: clipping and central projection templated over the kernel (exact
+// or floating constructions, CGAL style), 2D Boolean set operations with the exact constructions kernel. This
+// is one of the two translation units of the library that include CGAL; keep everything that changes often
+// elsewhere.
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
@@ -20,12 +21,14 @@ namespace {
 using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using FloatingKernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-// The receiver's plane is parametrised by dropping the coordinate along which its normal is largest: an affine map with
-// rational coefficients, so exact points stay exact. 2D (u, v) = (coordinate a1, coordinate a2) with a1, a2 cyclic after
-// the dropped axis, so 2D counter-clockwise means counter-clockwise seen from +axis.
+// The receiver's plane is parametrised by dropping the coordinate along which its normal is largest: an
+// affine map with rational coefficients, so exact points stay exact. 2D (u, v) = (coordinate a1, coordinate
+// a2) with a1, a2 cyclic after the dropped axis, so 2D counter-clockwise means counter-clockwise seen from
+// +axis.
 struct PlaneChart {
   int axis = 2, a1 = 0, a2 = 1;
-  bool flipped = false;  // receiver normal points along -axis: 2D CCW is clockwise seen from the receiver's front
+  bool flipped =
+      false;  // receiver normal points along -axis: 2D CCW is clockwise seen from the receiver's front
   Vec3 normal;
   double offset = 0;  // plane normal . p = offset (double, for lifting results back to 3D)
 
@@ -65,7 +68,8 @@ class Projector {
     receiverPlane_ = halfspace(receiverNormal, receiver.front());
     const Halfspace sourceFront = halfspace(sourceNormal, x);
     xDistance_ = receiverPlane_.side(x_);
-    if (CGAL::sign(xDistance_) != CGAL::POSITIVE) return;  // x behind or in the receiver's plane: sees its back
+    if (CGAL::sign(xDistance_) != CGAL::POSITIVE)
+      return;  // x behind or in the receiver's plane: sees its back
     std::vector<P3> r;
     for (const Vec3& v : receiver) r.push_back(toP3(v));
     clipped_ = clip(r, sourceFront);
@@ -81,7 +85,8 @@ class Projector {
   bool faces() const { return faces_; }
   const Polygon2& receiver2d() const { return receiver2d_; }
 
-  // The projection of one occluder, empty when it does not cover any area of the receiver's plane inside the pyramid.
+  // The projection of one occluder, empty when it does not cover any area of the receiver's plane inside the
+  // pyramid.
   Polygon2 project(const Polygon& occluder) const {
     std::vector<P3> o;
     for (const Vec3& v : occluder) o.push_back(toP3(v));
@@ -93,8 +98,8 @@ class Projector {
     if (o.size() < 3) return {};
     std::vector<P3> projected;
     for (const P3& p : o) {
-      // Inside the pyramid only x itself lies at x's distance from the receiver plane; an occluder through x is seen
-      // edge-on and covers nothing.
+      // Inside the pyramid only x itself lies at x's distance from the receiver plane; an occluder through x
+      // is seen edge-on and covers nothing.
       const FT dp = receiverPlane_.side(p);
       if (dp == xDistance_) return {};
       const FT t = xDistance_ / (xDistance_ - dp);
@@ -189,8 +194,9 @@ class Projector {
     return Polygon2(pts.begin(), pts.end());
   }
 
-  // Planes through x and each edge of the clipped receiver, oriented towards it: their intersection is the pyramid of
-  // rays from x to the receiver (one nappe only, because the receiver is convex and x is not in its plane).
+  // Planes through x and each edge of the clipped receiver, oriented towards it: their intersection is the
+  // pyramid of rays from x to the receiver (one nappe only, because the receiver is convex and x is not in
+  // its plane).
   void buildCone() {
     const std::size_t n = clipped_.size();
     for (std::size_t k = 0; k < n; ++k) {
@@ -200,8 +206,8 @@ class Projector {
       const FT v[3] = {b.c[0] - x_.c[0], b.c[1] - x_.c[1], b.c[2] - x_.c[2]};
       Halfspace h{{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]}, FT(0)};
       h.d = -(h.a[0] * x_.c[0] + h.a[1] * x_.c[1] + h.a[2] * x_.c[2]);
-      // Orient by the receiver vertex farthest from the plane, never by the edge's own end points: with floating
-      // constructions their sides are rounding noise.
+      // Orient by the receiver vertex farthest from the plane, never by the edge's own end points: with
+      // floating constructions their sides are rounding noise.
       CGAL::Sign orientation = CGAL::ZERO;
       FT farthest(0);
       for (std::size_t m = 0; m < n; ++m) {
@@ -214,8 +220,7 @@ class Projector {
         }
       }
       if (orientation == CGAL::ZERO) continue;  // repeated vertex: no plane
-      if (orientation == CGAL::NEGATIVE)
-        h = Halfspace{{-h.a[0], -h.a[1], -h.a[2]}, -h.d};
+      if (orientation == CGAL::NEGATIVE) h = Halfspace{{-h.a[0], -h.a[1], -h.a[2]}, -h.d};
       cone_.push_back(h);
     }
   }
@@ -254,9 +259,10 @@ ProjectionResult projectOccluders(const Vec3& x, const Vec3& sourceNormal, const
                                   Arithmetic arithmetic) {
   if (receiver.size() < 3) return {};
   if (arithmetic == Arithmetic::Exact)
-    return projectWith<ExactKernel>(Projector<ExactKernel>(x, sourceNormal, receiver, receiverNormal), occluders, nullptr);
-  return projectWith<FloatingKernel>(Projector<FloatingKernel>(x, sourceNormal, receiver, receiverNormal), occluders,
-                                     nullptr);
+    return projectWith<ExactKernel>(Projector<ExactKernel>(x, sourceNormal, receiver, receiverNormal),
+                                    occluders, nullptr);
+  return projectWith<FloatingKernel>(Projector<FloatingKernel>(x, sourceNormal, receiver, receiverNormal),
+                                     occluders, nullptr);
 }
 
 ExactVisibility exactVisibility(const Vec3& x, const Vec3& sourceNormal, const Polygon& receiver,

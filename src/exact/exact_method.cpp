@@ -1,5 +1,5 @@
-// The "exact" form-factor method: every entry by exact visibility and adaptive cubature. Rows run in parallel (TBB);
-// only i < j is integrated, F_ji follows from reciprocity A_i F_ij = A_j F_ji.
+// The "exact" form-factor method: every entry by exact visibility and adaptive cubature. Rows run in parallel
+// (TBB); only i < j is integrated, F_ji follows from reciprocity A_i F_ij = A_j F_ji.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -75,9 +75,10 @@ ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& options, Prog
 
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, n, 1), [&](const tbb::blocked_range<Eigen::Index>& r) {
-      for (Eigen::Index i = r.begin(); i != r.end(); ++i) row(i);
-    });
+    tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, n, 1),
+                      [&](const tbb::blocked_range<Eigen::Index>& r) {
+                        for (Eigen::Index i = r.begin(); i != r.end(); ++i) row(i);
+                      });
   });
   if (cancelled.load()) throw Cancelled();
 
@@ -91,7 +92,8 @@ ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& options, Prog
     stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     char notes[256];
     std::snprintf(notes, sizeof notes,
-                  "%ld point evaluations, penumbra points by %s: %ld, largest error estimate %.2e%s", evaluations.load(),
+                  "%ld point evaluations, penumbra points by %s: %ld, largest error estimate %.2e%s",
+                  evaluations.load(),
                   options.booleans == Booleans::Exact ? "exact CGAL Booleans" : "convex split",
                   exactEvaluations.load() + splitEvaluations.load(), result.errorEstimate.maxCoeff(),
                   notConverged.load() ? ", some entries hit the evaluation limit" : "");

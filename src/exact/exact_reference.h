@@ -1,13 +1,17 @@
-// The exact reference (CGAL), behind a header that includes no CGAL: exact visibility from a point, exact point-to-area
-// and element-to-element form factors, exact segment visibility. See docs/exact.md.
+// The exact reference (CGAL), behind a header that includes no CGAL: exact visibility from a point, exact
+// point-to-area and element-to-element form factors, exact segment visibility. See docs/exact.md.
 //
 // Pipeline for one entry F_ij:
-//   1. visibility from a point x on element i: receiver j clipped to the half-space in front of i (horizon clipping),
-//      occluders culled by a shaft test, clipped to the pyramid from x over j, projected centrally from x into j's
-//      plane and subtracted from j by exact 2D Boolean set operations -> polygons with holes;
-//   2. F(x -> visible part of j) by Lambert's contour formula (holes contribute with their opposite orientation);
-//   3. F_ij = (1/A_i) integral over i of (2), by adaptive high-order cubature refined where a coarse and a refined
-//      estimate differ (shadow boundaries), to a requested relative tolerance, with an error estimate per entry.
+//   1. visibility from a point x on element i: receiver j clipped to the half-space in front of i (horizon
+//   clipping),
+//      occluders culled by a shaft test, clipped to the pyramid from x over j, projected centrally from x
+//      into j's plane and subtracted from j by exact 2D Boolean set operations -> polygons with holes;
+//   2. F(x -> visible part of j) by Lambert's contour formula (holes contribute with their opposite
+//   orientation);
+//   3. F_ij = (1/A_i) integral over i of (2), by adaptive high-order cubature refined where a coarse and a
+//   refined
+//      estimate differ (shadow boundaries), to a requested relative tolerance, with an error estimate per
+//      entry.
 #pragma once
 
 #include <memory>
@@ -26,7 +30,8 @@ namespace rt::exact {
 // Adds the "exact" form-factor method to the core registry.
 void registerExactMethod();
 
-// ---- Lambert's formula (plain double precision) ----------------------------------------------------------------
+// ---- Lambert's formula (plain double precision)
+// ----------------------------------------------------------------
 
 // Differential area at x with unit normal n to a polygon that is CCW seen from its front side:
 // F = (1/2pi) sum_k beta_k (n . gamma_k). Parts of the polygon behind x's plane must be clipped away first
@@ -37,15 +42,16 @@ double pointToPolygonFormFactorClipped(const Vec3& x, const Vec3& n, const Polyg
 // Sum over the regions, holes included (they subtract).
 double pointToRegionFormFactor(const Vec3& x, const Vec3& n, const std::vector<PolygonWithHoles>& regions);
 
-// ---- Visibility from a point ----------------------------------------------------------------------------------
+// ---- Visibility from a point
+// ----------------------------------------------------------------------------------
 
 // What element `receiver` looks like from `point` on element `source`: the lessons draw these.
 struct VisibleRegion {
   int source = -1, receiver = -1;
   Vec3 point = Vec3::Zero();
-  bool facing = false;                       // point in front of the receiver and receiver partly in front of point
-  Polygon clippedReceiver;                   // receiver after horizon clipping against the source plane at point
-  std::vector<int> occluders;                // candidate occluders that survived the shaft culling
+  bool facing = false;         // point in front of the receiver and receiver partly in front of point
+  Polygon clippedReceiver;     // receiver after horizon clipping against the source plane at point
+  std::vector<int> occluders;  // candidate occluders that survived the shaft culling
   std::vector<Polygon> occluderProjections;  // their central projections into the receiver's plane (clipped)
   std::vector<int> projectionOwners;         // element index of each projection
   std::vector<PolygonWithHoles> visible;     // clipped receiver minus the projections (exact 2D Booleans)
@@ -58,27 +64,31 @@ VisibleRegion visibleRegion(const Mesh& mesh, int source, const Vec3& point, int
 // Elements that may block some ray between the two elements (shaft culling, conservative).
 std::vector<int> shaftCandidates(const Mesh& mesh, int source, int receiver);
 
-// ---- Element-to-element form factors --------------------------------------------------------------------------
+// ---- Element-to-element form factors
+// --------------------------------------------------------------------------
 
 // How the occluders that the double-precision filter cannot decide are cut out of the receiver at one point.
 enum class Booleans {
   Exact,  // CGAL: exact projection and 2D Boolean set operations (Epeck), converted to double at the end
-  Split,  // double: the receiver split into convex pieces by the planes of the shadow volumes; error = rounding
+  Split,  // double: the receiver split into convex pieces by the planes of the shadow volumes; error =
+          // rounding
 };
 
 struct ExactOptions {
   double tolerance = 1e-9;          // relative, pairs with no occluder in the shaft
   double occludedTolerance = 1e-7;  // relative, pairs with occluders (shadow boundaries make F(x) non-smooth)
-  // Entries smaller than this are computed to tolerance * floor absolutely (a relative target on ~0 is meaningless).
+  // Entries smaller than this are computed to tolerance * floor absolutely (a relative target on ~0 is
+  // meaningless).
   double absoluteFloor = 1e-6;
   long maxEvaluations = 400000;  // per entry; the error estimate tells when it was not enough
-  int ruleOrder = 5;             // Gauss-Legendre points per direction of the cubature rule (unoccluded pairs)
-  int occludedRuleOrder = 3;     // lower order wins where shadow boundaries put kinks into F(x)
+  int ruleOrder = 5;          // Gauss-Legendre points per direction of the cubature rule (unoccluded pairs)
+  int occludedRuleOrder = 3;  // lower order wins where shadow boundaries put kinks into F(x)
   Booleans booleans = Booleans::Exact;
 };
 
 // Options for a requested relative tolerance t as the form-factor method reads it: t for unoccluded pairs,
-// max(t, 1e-7) for occluded ones, Booleans::Split (the whole-matrix speed needs it; tests hold it to the exact path).
+// max(t, 1e-7) for occluded ones, Booleans::Split (the whole-matrix speed needs it; tests hold it to the
+// exact path).
 ExactOptions exactOptionsFor(double tolerance);
 
 struct CubaturePoint {
@@ -88,31 +98,33 @@ struct CubaturePoint {
 };
 
 struct EntryResult {
-  double value = 0;          // F_ij
-  double errorEstimate = 0;  // absolute, |fine - coarse| summed over the final cubature cells
-  bool occluded = false;     // the shaft held candidate occluders
-  bool facing = true;        // false: one element entirely behind the other's plane, F = 0 without work
-  long evaluations = 0;      // point-to-area evaluations
-  long exactEvaluations = 0; // of which went through CGAL's exact Booleans
-  long splitEvaluations = 0; // of which went through the double-precision convex split
+  double value = 0;           // F_ij
+  double errorEstimate = 0;   // absolute, |fine - coarse| summed over the final cubature cells
+  bool occluded = false;      // the shaft held candidate occluders
+  bool facing = true;         // false: one element entirely behind the other's plane, F = 0 without work
+  long evaluations = 0;       // point-to-area evaluations
+  long exactEvaluations = 0;  // of which went through CGAL's exact Booleans
+  long splitEvaluations = 0;  // of which went through the double-precision convex split
   bool converged = true;
 };
 
 EntryResult elementFormFactor(const Mesh& mesh, int source, int receiver, const ExactOptions& options = {},
                               std::vector<CubaturePoint>* points = nullptr);
-// The integrand of F_ij at one point x of the source: F(dA at x -> visible part of the receiver), with the given way of
-// cutting out the occluders the filter cannot decide (both ways must agree to rounding; the tests check it).
+// The integrand of F_ij at one point x of the source: F(dA at x -> visible part of the receiver), with the
+// given way of cutting out the occluders the filter cannot decide (both ways must agree to rounding; the
+// tests check it).
 double pointFormFactor(const Mesh& mesh, int source, const Vec3& x, int receiver, Booleans booleans);
 // The cubature points (final cells' refined rule) used for the entry F_ij.
-std::vector<CubaturePoint> cubaturePoints(const Mesh& mesh, int source, int receiver, const ExactOptions& options = {});
+std::vector<CubaturePoint> cubaturePoints(const Mesh& mesh, int source, int receiver,
+                                          const ExactOptions& options = {});
 
 struct ExactMatrix {
   FormFactorMatrix F;
   Eigen::MatrixXd errorEstimate;  // absolute error estimate per entry (derived entries scaled by A_i / A_j)
 };
 
-// Full matrix: rows in parallel (TBB), i < j computed and j > i derived by reciprocity, progress per row; throws
-// Cancelled. stats may be null.
+// Full matrix: rows in parallel (TBB), i < j computed and j > i derived by reciprocity, progress per row;
+// throws Cancelled. stats may be null.
 ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& options, Progress& progress,
                              FormFactorStats* stats = nullptr, int threads = 0);
 

@@ -7,7 +7,8 @@
 
 namespace rt::exact {
 
-// Keeps the part of a convex polygon with normal . (p - point) >= 0 (Sutherland-Hodgman; points on the plane kept).
+// Keeps the part of a convex polygon with normal . (p - point) >= 0 (Sutherland-Hodgman; points on the plane
+// kept).
 Polygon clipToHalfspace(const Polygon& polygon, const Vec3& point, const Vec3& normal);
 
 Eigen::AlignedBox3d boundsOf(const Polygon& polygon);

@@ -1,4 +1,5 @@
-// Lambert's point-to-polygon form factor (1760; Baum, Rushmeier & Winget 1989 for radiosity) and horizon clipping.
+// Lambert's point-to-polygon form factor (1760; Baum, Rushmeier & Winget 1989 for radiosity) and horizon
+// clipping.
 #include <cmath>
 #include <numbers>
 
@@ -9,8 +10,8 @@
 namespace rt::exact {
 namespace {
 
-// -(1/2pi) sum_k beta_k n . gamma_k for a closed contour, without any facing test: positive for a contour that is CCW
-// seen from the side x is on, negative for a clockwise one (so holes subtract).
+// -(1/2pi) sum_k beta_k n . gamma_k for a closed contour, without any facing test: positive for a contour
+// that is CCW seen from the side x is on, negative for a clockwise one (so holes subtract).
 double contourSum(const Vec3& x, const Vec3& n, const Polygon& contour) {
   double sum = 0;
   const std::size_t count = contour.size();

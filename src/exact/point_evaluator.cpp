@@ -17,10 +17,11 @@ struct ConePlane {
 
 enum class Relation { Outside, Covers, Unknown };
 
-// How one occluder relates to the pyramid from x over the clipped receiver `rc`, decided in double precision with a
-// margin `eps`; Unknown whenever the margin does not prove Outside or Covers.
-Relation classify(const Polygon& occluder, const Vec3& x, const Polygon& rc, const std::vector<ConePlane>& cone,
-                  const Vec3& receiverPoint, const Vec3& receiverNormal, double eps) {
+// How one occluder relates to the pyramid from x over the clipped receiver `rc`, decided in double precision
+// with a margin `eps`; Unknown whenever the margin does not prove Outside or Covers.
+Relation classify(const Polygon& occluder, const Vec3& x, const Polygon& rc,
+                  const std::vector<ConePlane>& cone, const Vec3& receiverPoint, const Vec3& receiverNormal,
+                  double eps) {
   for (const ConePlane& plane : cone) {
     double hi = -INFINITY;
     for (const Vec3& v : occluder) hi = std::max(hi, plane.distance(v, x));
@@ -57,13 +58,15 @@ Relation classify(const Polygon& occluder, const Vec3& x, const Polygon& rc, con
   return Relation::Covers;
 }
 
-// Receiver pieces minus the shadow of one occluder from x, in double precision: the shadow is the receiver plane's
-// intersection with the cone from x over the occluder (clipped to lie between x and the receiver plane), so
-// subtracting it means splitting each convex piece by the cone's side planes and dropping the part inside all of them.
-// Rounding can only move piece boundaries by ~1e-16 of the scene size; it never drops or duplicates an area.
-void subtractShadow(const Vec3& x, const Polygon& occluder, const Vec3& receiverPoint, const Vec3& receiverNormal,
-                    double eps, double minArea, std::vector<Polygon>& pieces) {
-  Polygon o = clipToHalfspace(occluder, receiverPoint, receiverNormal);  // beyond the receiver plane: no shadow
+// Receiver pieces minus the shadow of one occluder from x, in double precision: the shadow is the receiver
+// plane's intersection with the cone from x over the occluder (clipped to lie between x and the receiver
+// plane), so subtracting it means splitting each convex piece by the cone's side planes and dropping the part
+// inside all of them. Rounding can only move piece boundaries by ~1e-16 of the scene size; it never drops or
+// duplicates an area.
+void subtractShadow(const Vec3& x, const Polygon& occluder, const Vec3& receiverPoint,
+                    const Vec3& receiverNormal, double eps, double minArea, std::vector<Polygon>& pieces) {
+  Polygon o =
+      clipToHalfspace(occluder, receiverPoint, receiverNormal);  // beyond the receiver plane: no shadow
   if (o.size() < 3) return;
   o = clipToHalfspace(o, x, -receiverNormal);  // farther from the receiver plane than x: behind x
   if (o.size() < 3) return;
@@ -89,8 +92,8 @@ void subtractShadow(const Vec3& x, const Polygon& occluder, const Vec3& receiver
     Polygon inside = piece;
     for (const Vec3& m : sides) {
       Polygon outside = clipToHalfspace(inside, x, -m);
-      // Slivers from shadow planes that coincide up to rounding (occluders sharing edges) carry no area: dropping
-      // them keeps the piece count from growing with every coincident plane.
+      // Slivers from shadow planes that coincide up to rounding (occluders sharing edges) carry no area:
+      // dropping them keeps the piece count from growing with every coincident plane.
       if (!outside.empty() && polygonArea(outside) > minArea) result.push_back(std::move(outside));
       inside = clipToHalfspace(inside, x, m);
       if (inside.empty()) break;

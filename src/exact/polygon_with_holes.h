@@ -7,7 +7,8 @@
 
 namespace rt::exact {
 
-// A planar polygon with holes in 3D: outer boundary CCW seen from the front of the plane it lies in, holes clockwise.
+// A planar polygon with holes in 3D: outer boundary CCW seen from the front of the plane it lies in, holes
+// clockwise.
 struct PolygonWithHoles {
   Polygon outer;
   std::vector<Polygon> holes;

@@ -9,8 +9,9 @@
 namespace rt::exact {
 
 // V(x, y) for points on mesh elements: CGAL AABB tree over the elements' triangles with exact predicates
-// (Exact_predicates_inexact_constructions_kernel). A segment is blocked when it meets a triangle of another element at a
-// point other than its end points; touching only at an end point, or lying in a triangle's plane, does not block.
+// (Exact_predicates_inexact_constructions_kernel). A segment is blocked when it meets a triangle of another
+// element at a point other than its end points; touching only at an end point, or lying in a triangle's
+// plane, does not block.
 class SegmentVisibility {
  public:
   explicit SegmentVisibility(const Mesh& mesh);

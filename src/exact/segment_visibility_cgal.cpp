@@ -1,6 +1,7 @@
-// Exact segment visibility V(x, y): a CGAL AABB tree over the elements' triangles, queried with exact predicates
-// (Exact_predicates_inexact_constructions_kernel: inputs are doubles, do_intersect/has_on/orientation are exact).
-// The second of the two translation units of the library that include CGAL.
+// Exact segment visibility V(x, y): a CGAL AABB tree over the elements' triangles, queried with exact
+// predicates (Exact_predicates_inexact_constructions_kernel: inputs are doubles,
+// do_intersect/has_on/orientation are exact). The second of the two translation units of the library that
+// include CGAL.
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -24,7 +25,9 @@ using Primitive = CGAL::AABB_triangle_primitive<Kernel, TriangleIterator>;
 using Traits = CGAL::AABB_traits<Kernel, Primitive>;
 using Tree = CGAL::AABB_tree<Traits>;
 
-Point toPoint(const Vec3& v) { return Point(v.x(), v.y(), v.z()); }
+Point toPoint(const Vec3& v) {
+  return Point(v.x(), v.y(), v.z());
+}
 
 }  // namespace
 

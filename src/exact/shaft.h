@@ -1,8 +1,9 @@
-// Pair set-up for one entry F_ij: the facing test (one element entirely behind the other's plane -> F = 0) and shaft
-// culling (Haines & Wallace 1991 in spirit): only elements meeting the convex hull of the two elements can block a
-// ray between them. The hull is bounded by the two element planes and by the planes through an edge of one element and
-// a vertex of the other that have both elements on one side. The tests are conservative: an element is dropped only
-// when it lies on the far side of such a plane (touching it blocks no light), with a tiny relative tolerance.
+// Pair set-up for one entry F_ij: the facing test (one element entirely behind the other's plane -> F = 0)
+// and shaft culling (Haines & Wallace 1991 in spirit): only elements meeting the convex hull of the two
+// elements can block a ray between them. The hull is bounded by the two element planes and by the planes
+// through an edge of one element and a vertex of the other that have both elements on one side. The tests are
+// conservative: an element is dropped only when it lies on the far side of such a plane (touching it blocks
+// no light), with a tiny relative tolerance.
 #pragma once
 
 #include <vector>
@@ -19,7 +20,7 @@ struct PairGeometry {
   Polygon integrationDomain;          // source clipped to the receiver's front half-space
   std::vector<int> occluders;         // shaft candidates
   std::vector<Polygon> occluderPolygons;
-  double scale = 1;                   // length scale of the pair (for relative tolerances)
+  double scale = 1;  // length scale of the pair (for relative tolerances)
 };
 
 // Relative tolerance of the double-precision culling and classification tests.

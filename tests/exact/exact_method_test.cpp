@@ -1,5 +1,5 @@
-// The "exact" method as the rest of the program sees it: registry, reciprocity, closure of an enclosure with boxes
-// inside, facing-away pairs, progress and cancellation, cubature points for the lessons.
+// The "exact" method as the rest of the program sees it: registry, reciprocity, closure of an enclosure with
+// boxes inside, facing-away pairs, progress and cancellation, cubature points for the lessons.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,7 +30,8 @@ TEST(ExactMethod, EnclosureWithInnerBoxesHasUnitRowSums) {
   registerExactMethod();
   const Mesh mesh = roomWithClosedBoxes();
   FormFactorOptions options;
-  options.tolerance = 1e-4;  // keeps the test fast; rows then sum to 1 within ~1e-4 (estimates are pessimistic)
+  options.tolerance =
+      1e-4;  // keeps the test fast; rows then sum to 1 within ~1e-4 (estimates are pessimistic)
   FormFactorStats stats;
   std::vector<double> fractions;
   CallbackProgress progress([&](double f, const std::string&) { fractions.push_back(f); });
@@ -60,8 +61,8 @@ TEST(ExactMethod, EnclosureWithInnerBoxesHasUnitRowSums) {
 
 TEST(ExactMethod, FacingAwayPairsAreZeroWithoutWork) {
   // Two squares back to back.
-  const Mesh mesh = test::meshFromPolygons({{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
-                                            {{0, 0, -1}, {0, 1, -1}, {1, 1, -1}, {1, 0, -1}}});
+  const Mesh mesh = test::meshFromPolygons(
+      {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 0, -1}, {0, 1, -1}, {1, 1, -1}, {1, 0, -1}}});
   const EntryResult entry = elementFormFactor(mesh, 0, 1);
   EXPECT_FALSE(entry.facing);
   EXPECT_EQ(entry.value, 0.0);
@@ -80,8 +81,10 @@ TEST(ExactMethod, CubaturePointsReproduceTheEntry) {
   // Floor (patch 0 faces +x ... find the floor: normal +y) to ceiling, occluded by both boxes.
   int floor = -1, ceiling = -1;
   for (std::size_t e = 0; e < mesh.size(); ++e) {
-    if (mesh.elements[e].normal.y() > 0.5 && mesh.elements[e].centroid.y() < 1e-9) floor = static_cast<int>(e);
-    if (mesh.elements[e].normal.y() < -0.5 && mesh.elements[e].centroid.y() > 1 - 1e-9) ceiling = static_cast<int>(e);
+    if (mesh.elements[e].normal.y() > 0.5 && mesh.elements[e].centroid.y() < 1e-9)
+      floor = static_cast<int>(e);
+    if (mesh.elements[e].normal.y() < -0.5 && mesh.elements[e].centroid.y() > 1 - 1e-9)
+      ceiling = static_cast<int>(e);
   }
   ASSERT_GE(floor, 0);
   ASSERT_GE(ceiling, 0);

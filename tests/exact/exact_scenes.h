@@ -12,8 +12,8 @@ namespace rt::exact::test {
 Scene sceneFromPolygons(const std::vector<Polygon>& polygons);
 Mesh meshFromPolygons(const std::vector<Polygon>& polygons, int subdivide = 1);
 
-// Axis-aligned rectangle in the plane coordinate `axis` = `at`, spanning [lo, hi] in the other two coordinates,
-// facing +axis (facePositive) or -axis.
+// Axis-aligned rectangle in the plane coordinate `axis` = `at`, spanning [lo, hi] in the other two
+// coordinates, facing +axis (facePositive) or -axis.
 Polygon axisRectangle(int axis, double at, const Vec3& lo, const Vec3& hi, bool facePositive);
 // The five visible faces of a box [lo, hi] (bottom face omitted when `withBottom` is false), facing outwards.
 std::vector<Polygon> boxFaces(const Vec3& lo, const Vec3& hi, bool withBottom);

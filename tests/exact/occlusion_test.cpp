@@ -1,7 +1,7 @@
-// Occluded configurations with independent references: a full occluder (F exactly 0), an occluder touching the source,
-// occluders straddling the source or receiver plane, several overlapping occluders, occluders split into elements.
-// References use Lambert's formula on rectangles whose visible part is known in closed form, integrated with the same
-// cubature but without any visibility computation.
+// Occluded configurations with independent references: a full occluder (F exactly 0), an occluder touching
+// the source, occluders straddling the source or receiver plane, several overlapping occluders, occluders
+// split into elements. References use Lambert's formula on rectangles whose visible part is known in closed
+// form, integrated with the same cubature but without any visibility computation.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,8 +14,8 @@
 namespace rt::exact {
 namespace {
 
-const Polygon kFloor{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};     // z = 0, facing +z
-const Polygon kCeiling{{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}};   // z = 1, facing -z
+const Polygon kFloor{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};    // z = 0, facing +z
+const Polygon kCeiling{{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}};  // z = 1, facing -z
 const Vec3 kUp(0, 0, 1);
 
 Polygon rectangleAtHeight(double x0, double x1, double y0, double y1, double z) {
@@ -34,8 +34,8 @@ double referenceIntegral(const std::vector<Polygon>& pieces, const std::function
   return total;
 }
 
-// Entries to 1e-7 with the double-precision convex split (fast); the exact CGAL path is held to the same values point
-// by point in SplitAndExactBooleansAgree.
+// Entries to 1e-7 with the double-precision convex split (fast); the exact CGAL path is held to the same
+// values point by point in SplitAndExactBooleansAgree.
 ExactOptions splitOptions() {
   ExactOptions options;
   options.booleans = Booleans::Split;
@@ -57,9 +57,10 @@ TEST(Occlusion, FullOccluderGivesExactlyZero) {
   ASSERT_EQ(region.occluderProjections.size(), 1u);
 }
 
-// A wide vertical wall in the plane x = 0.5 from height z0 to z1 (two-sided), between floor and ceiling. From a floor
-// point at x = p < 0.5 a ceiling point at x = q is hidden when the ray crosses x = 0.5 at a height in [z0, z1]; that
-// height is (0.5 - p) / (q - p). So the visible part of the ceiling is a union of x-ranges, known in closed form.
+// A wide vertical wall in the plane x = 0.5 from height z0 to z1 (two-sided), between floor and ceiling. From
+// a floor point at x = p < 0.5 a ceiling point at x = q is hidden when the ray crosses x = 0.5 at a height in
+// [z0, z1]; that height is (0.5 - p) / (q - p). So the visible part of the ceiling is a union of x-ranges,
+// known in closed form.
 double wallReference(double z0, double z1) {
   auto visibleFrom = [&](const Vec3& x) {
     double p = x.x();
@@ -87,7 +88,9 @@ double wallReference(double z0, double z1) {
   return referenceIntegral({left, right}, visibleFrom);
 }
 
-Polygon wall(double z0, double z1) { return {{0.5, -20, z0}, {0.5, 21, z0}, {0.5, 21, z1}, {0.5, -20, z1}}; }
+Polygon wall(double z0, double z1) {
+  return {{0.5, -20, z0}, {0.5, 21, z0}, {0.5, 21, z1}, {0.5, -20, z1}};
+}
 
 TEST(Occlusion, OccluderTouchingTheSource) {
   const Mesh mesh = test::meshFromPolygons({kFloor, kCeiling, wall(0, 0.5)});
@@ -111,7 +114,8 @@ TEST(Occlusion, OccluderStraddlingTheReceiverPlane) {
   EXPECT_NEAR(elementFormFactor(mesh, 0, 1, splitOptions()).value, expected, 1e-7 * expected);
 }
 
-// A rectangle parallel to floor and ceiling at height h casts the rectangle scaled by 1/h about x on the ceiling.
+// A rectangle parallel to floor and ceiling at height h casts the rectangle scaled by 1/h about x on the
+// ceiling.
 double parallelOccluderReference(double x0, double x1, double y0, double y1, double h) {
   auto visible = [&](const Vec3& x) {
     const double full = pointToPolygonFormFactor(x, kUp, kCeiling);
@@ -121,7 +125,8 @@ double parallelOccluderReference(double x0, double x1, double y0, double y1, dou
     if (sx1 <= sx0 || sy1 <= sy0) return full;
     return full - pointToPolygonFormFactor(x, kUp, rectangleAtHeight(sx0, sx1, sy0, sy1, 1));
   };
-  // Kinks where a shadow edge crosses a ceiling edge: x = (a - h c) / (1 - h) for occluder edge a, ceiling edge c.
+  // Kinks where a shadow edge crosses a ceiling edge: x = (a - h c) / (1 - h) for occluder edge a, ceiling
+  // edge c.
   std::vector<double> xs{0, 1}, ys{0, 1};
   for (double a : {x0, x1})
     for (double c : {0.0, 1.0}) xs.push_back((a - h * c) / (1 - h));
@@ -140,7 +145,8 @@ double parallelOccluderReference(double x0, double x1, double y0, double y1, dou
   std::vector<Polygon> pieces;
   for (std::size_t i = 0; i + 1 < xs.size(); ++i)
     for (std::size_t j = 0; j + 1 < ys.size(); ++j)
-      pieces.push_back({{xs[i], ys[j], 0}, {xs[i + 1], ys[j], 0}, {xs[i + 1], ys[j + 1], 0}, {xs[i], ys[j + 1], 0}});
+      pieces.push_back(
+          {{xs[i], ys[j], 0}, {xs[i + 1], ys[j], 0}, {xs[i + 1], ys[j + 1], 0}, {xs[i], ys[j + 1], 0}});
   return referenceIntegral(pieces, visible);
 }
 
@@ -166,7 +172,8 @@ TEST(Occlusion, OccluderMeshedIntoAdjacentElements) {
   std::vector<Polygon> polygons{kFloor, kCeiling};
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 2; ++j)
-      polygons.push_back(rectangleAtHeight(0.2 + 0.2 * i, 0.4 + 0.2 * i, 0.25 + 0.25 * j, 0.5 + 0.25 * j, 0.5));
+      polygons.push_back(
+          rectangleAtHeight(0.2 + 0.2 * i, 0.4 + 0.2 * i, 0.25 + 0.25 * j, 0.5 + 0.25 * j, 0.5));
   const Mesh mesh = test::meshFromPolygons(polygons);
   const double expected = parallelOccluderReference(0.2, 0.8, 0.25, 0.75, 0.5);
   EXPECT_NEAR(elementFormFactor(mesh, 0, 1, splitOptions()).value, expected, 1e-7 * expected);
@@ -180,14 +187,18 @@ TEST(Occlusion, AdjacentOccluderElementsLeaveOneHole) {
   const Mesh mesh = test::meshFromPolygons(polygons);
   const VisibleRegion region = visibleRegion(mesh, 0, Vec3(0.5, 0.5, 0), 1);
   EXPECT_EQ(region.occluderProjections.size(), 4u);
-  ASSERT_EQ(region.visible.size(), 1u);  // the ceiling minus one square hole [0.3, 0.7]^2: no cracks between pieces
+  ASSERT_EQ(region.visible.size(),
+            1u);  // the ceiling minus one square hole [0.3, 0.7]^2: no cracks between pieces
   ASSERT_EQ(region.visible[0].holes.size(), 1u);
   EXPECT_NEAR(region.visible[0].area(), 1.0 - 0.16, 1e-14);
 }
 
 TEST(Occlusion, SplitAndExactBooleansAgree) {
-  std::vector<Polygon> polygons{kFloor, kCeiling, rectangleAtHeight(0.2, 0.6, 0.25, 0.75, 0.5),
-                                rectangleAtHeight(0.4, 0.8, 0.25, 0.6, 0.5), wall(0.3, 0.8),
+  std::vector<Polygon> polygons{kFloor,
+                                kCeiling,
+                                rectangleAtHeight(0.2, 0.6, 0.25, 0.75, 0.5),
+                                rectangleAtHeight(0.4, 0.8, 0.25, 0.6, 0.5),
+                                wall(0.3, 0.8),
                                 {{0.1, 0.2, 0.3}, {0.9, 0.1, 0.45}, {0.7, 0.8, 0.6}, {0.2, 0.7, 0.5}}};
   const Mesh mesh = test::meshFromPolygons(polygons, 2);
   std::mt19937_64 rng(3);
@@ -201,8 +212,10 @@ TEST(Occlusion, SplitAndExactBooleansAgree) {
       for (int k = 0; k < 6; ++k) {
         const double s = u(rng), t = u(rng);
         const Vec3 x = (1 - s) * (1 - t) * p[0] + s * (1 - t) * p[1] + s * t * p[2] + (1 - s) * t * p[3];
-        const double exact = pointFormFactor(mesh, static_cast<int>(i), x, static_cast<int>(j), Booleans::Exact);
-        const double split = pointFormFactor(mesh, static_cast<int>(i), x, static_cast<int>(j), Booleans::Split);
+        const double exact =
+            pointFormFactor(mesh, static_cast<int>(i), x, static_cast<int>(j), Booleans::Exact);
+        const double split =
+            pointFormFactor(mesh, static_cast<int>(i), x, static_cast<int>(j), Booleans::Split);
         EXPECT_NEAR(split, exact, 1e-13);
         const VisibleRegion region = visibleRegion(mesh, static_cast<int>(i), x, static_cast<int>(j));
         EXPECT_NEAR(region.formFactor, exact, 1e-13);

@@ -1,6 +1,7 @@
-// The geometric core of visibility from a point (horizon clipping, clipping to the pyramid, central projection), run
-// with both kernels: exact constructions and floating constructions (CGAL's Epeck and Epick). Each case has a closed
-// form; the exact kernel must reproduce it to the last bit of the double conversion, the floating one to rounding.
+// The geometric core of visibility from a point (horizon clipping, clipping to the pyramid, central
+// projection), run with both kernels: exact constructions and floating constructions (CGAL's Epeck and
+// Epick). Each case has a closed form; the exact kernel must reproduce it to the last bit of the double
+// conversion, the floating one to rounding.
 #include <gtest/gtest.h>
 
 #include "core/polygon.h"
@@ -28,7 +29,8 @@ TEST_P(ProjectionKernel, ParallelSquareScalesAboutThePoint) {
   const auto r = project(Vec3(0.5, 0.5, 0), {square});
   ASSERT_TRUE(r.receiverFacesPoint);
   ASSERT_EQ(r.projections.size(), 1u);
-  // Height 1/4 of the way: the shadow is the square scaled by 4 about (0.5, 0.5): [0.1, 0.9]^2, in the plane z = 1.
+  // Height 1/4 of the way: the shadow is the square scaled by 4 about (0.5, 0.5): [0.1, 0.9]^2, in the plane
+  // z = 1.
   EXPECT_NEAR(polygonArea(r.projections[0]), 0.64, tolerance());
   for (const Vec3& v : r.projections[0]) {
     EXPECT_NEAR(v.z(), 1.0, tolerance());
@@ -50,7 +52,8 @@ TEST_P(ProjectionKernel, OccluderStraddlingTheReceiverPlaneLosesTheFarPart) {
   const Polygon wall{{0.5, -2, 0.5}, {0.5, 3, 0.5}, {0.5, 3, 1.5}, {0.5, -2, 1.5}};
   const auto r = project(Vec3(0.25, 0.5, 0), {wall});
   ASSERT_EQ(r.projections.size(), 1u);
-  // From x = 0.25: the edge z = 0.5 projects to x = 0.75, the edge z = 1 stays at x = 0.5: shadow [0.5, 0.75] x [0, 1].
+  // From x = 0.25: the edge z = 0.5 projects to x = 0.75, the edge z = 1 stays at x = 0.5: shadow [0.5, 0.75]
+  // x [0, 1].
   EXPECT_NEAR(polygonArea(r.projections[0]), 0.25, tolerance());
 }
 
@@ -78,8 +81,10 @@ TEST_P(ProjectionKernel, PointBehindTheReceiverSeesNothing) {
   EXPECT_FALSE(r.receiverFacesPoint);
 }
 
-INSTANTIATE_TEST_SUITE_P(BothKernels, ProjectionKernel, ::testing::Values(Arithmetic::Exact, Arithmetic::Floating),
-                         [](const auto& info) { return info.param == Arithmetic::Exact ? "Exact" : "Floating"; });
+INSTANTIATE_TEST_SUITE_P(BothKernels, ProjectionKernel,
+                         ::testing::Values(Arithmetic::Exact, Arithmetic::Floating), [](const auto& info) {
+                           return info.param == Arithmetic::Exact ? "Exact" : "Floating";
+                         });
 
 TEST(ProjectionKernelAgreement, ExactAndFloatingAgreeOnAGeneralOccluder) {
   const Polygon tilted{{0.1, 0.2, 0.3}, {0.9, 0.1, 0.45}, {0.7, 0.8, 0.6}, {0.2, 0.7, 0.5}};

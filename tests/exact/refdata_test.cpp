@@ -1,5 +1,6 @@
-// Every polygonal case of ../shared/refdata/formfactors.json against the exact reference: unoccluded pairs to 1e-9
-// relative, occluded ones to 1e-7, differential-area cases through Lambert's formula. Disk cases are analytic-only.
+// Every polygonal case of ../shared/refdata/formfactors.json against the exact reference: unoccluded pairs to
+// 1e-9 relative, occluded ones to 1e-7, differential-area cases through Lambert's formula. Disk cases are
+// analytic-only.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -14,7 +15,9 @@ namespace {
 
 using nlohmann::json;
 
-Vec3 toVec(const json& v) { return Vec3(v[0].get<double>(), v[1].get<double>(), v[2].get<double>()); }
+Vec3 toVec(const json& v) {
+  return Vec3(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+}
 Polygon toPolygon(const json& p) {
   Polygon polygon;
   for (const json& v : p["vertices"]) polygon.push_back(toVec(v));
@@ -72,7 +75,8 @@ TEST_F(RefdataTest, EveryPolygonPairToTolerance) {
 TEST_F(RefdataTest, StraddlingReceiverNeedsHorizonClipping) {
   const json* c = findCase(cases_, "tri_straddle_requires_clipping");
   ASSERT_NE(c, nullptr);
-  const Mesh mesh = test::meshFromPolygons({toPolygon((*c)["geometry"]["source"]), toPolygon((*c)["geometry"]["receiver"])});
+  const Mesh mesh = test::meshFromPolygons(
+      {toPolygon((*c)["geometry"]["source"]), toPolygon((*c)["geometry"]["receiver"])});
   const double value = elementFormFactor(mesh, 0, 1).value;
   EXPECT_NEAR(value, (*c)["value"].get<double>(), 1e-9 * value);
   // The unclipped (signed-kernel) value is a different number: the clipping is what makes the match.
@@ -84,8 +88,8 @@ TEST_F(RefdataTest, DifferentialAreaCasesByLambert) {
   for (const json& c : cases_) {
     if (c["geometry"]["type"] != "differential_to_polygon") continue;
     const json& g = c["geometry"];
-    const double value = pointToPolygonFormFactorClipped(toVec(g["source"]["point"]), toVec(g["source"]["normal"]),
-                                                         toPolygon(g["receiver"]));
+    const double value = pointToPolygonFormFactorClipped(
+        toVec(g["source"]["point"]), toVec(g["source"]["normal"]), toPolygon(g["receiver"]));
     const double expected = c["value"];
     EXPECT_NEAR(value, expected, 1e-13 * expected) << c["id"];
     ++checked;
@@ -97,7 +101,8 @@ TEST_F(RefdataTest, UnitCubeEnclosureMatrix) {
   const json* c = findCase(cases_, "enclosure_unit_cube");
   ASSERT_NE(c, nullptr);
   std::vector<Polygon> faces;
-  for (const json& name : (*c)["face_order"]) faces.push_back(toPolygon((*c)["geometry"]["faces"][name.get<std::string>()]));
+  for (const json& name : (*c)["face_order"])
+    faces.push_back(toPolygon((*c)["geometry"]["faces"][name.get<std::string>()]));
   const Mesh mesh = test::meshFromPolygons(faces);
   const ExactMatrix result = exactFormFactors(mesh, ExactOptions{}, noProgress());
   for (int i = 0; i < 6; ++i) {

@@ -1,6 +1,7 @@
-// Exact segment visibility (CGAL AABB tree, exact predicates) against a plain floating-point ray caster on the same
-// points: they must agree except where a segment passes within a stated distance of a triangle edge (grazing), where
-// rounding decides the floating answer. Also: V(x, y) agrees with the exact visible region from x.
+// Exact segment visibility (CGAL AABB tree, exact predicates) against a plain floating-point ray caster on
+// the same points: they must agree except where a segment passes within a stated distance of a triangle edge
+// (grazing), where rounding decides the floating answer. Also: V(x, y) agrees with the exact visible region
+// from x.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -12,7 +13,8 @@
 namespace rt::exact {
 namespace {
 
-// Moller-Trumbore in double precision, open segment (t in (eps, 1 - eps)): the kind of test a fast ray caster uses.
+// Moller-Trumbore in double precision, open segment (t in (eps, 1 - eps)): the kind of test a fast ray caster
+// uses.
 bool floatingHit(const Vec3& x, const Vec3& y, const Polygon& t) {
   const Vec3 d = y - x;
   const Vec3 e1 = t[1] - t[0], e2 = t[2] - t[0];
@@ -102,22 +104,27 @@ TEST(SegmentVisibility, AgreesWithFloatingRayCasterExceptWhenGrazing) {
 }
 
 TEST(SegmentVisibility, ThroughASharedEdgeIsBlocked) {
-  // Two occluder elements sharing the edge x = 0.5 at height 0.5; a segment crossing exactly that edge is blocked
-  // (the union of closed triangles has no crack), and so is one through the shared corner of four elements.
+  // Two occluder elements sharing the edge x = 0.5 at height 0.5; a segment crossing exactly that edge is
+  // blocked (the union of closed triangles has no crack), and so is one through the shared corner of four
+  // elements.
   std::vector<Polygon> polygons{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}},
                                 {{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}},
                                 {{0.0, 0, 0.5}, {0.0, 1, 0.5}, {1.0, 1, 0.5}, {1.0, 0, 0.5}}};
-  const Mesh mesh = test::meshFromPolygons(polygons, 2);  // occluder split 2 x 2: edges at x = 0.5 and y = 0.5
+  const Mesh mesh =
+      test::meshFromPolygons(polygons, 2);  // occluder split 2 x 2: edges at x = 0.5 and y = 0.5
   const SegmentVisibility exact(mesh);
   int floorElement = -1, ceilingElement = -1;
   for (std::size_t e = 0; e < mesh.size(); ++e) {
     const Element& element = mesh.elements[e];
-    if (element.patch == 0 && element.centroid.x() < 0.5 && element.centroid.y() < 0.5) floorElement = static_cast<int>(e);
-    if (element.patch == 1 && element.centroid.x() > 0.5 && element.centroid.y() > 0.5) ceilingElement = static_cast<int>(e);
+    if (element.patch == 0 && element.centroid.x() < 0.5 && element.centroid.y() < 0.5)
+      floorElement = static_cast<int>(e);
+    if (element.patch == 1 && element.centroid.x() > 0.5 && element.centroid.y() > 0.5)
+      ceilingElement = static_cast<int>(e);
   }
   EXPECT_FALSE(exact.visible(Vec3(0.25, 0.3, 0), Vec3(0.75, 0.7, 1), floorElement, ceilingElement));
   EXPECT_FALSE(exact.visible(Vec3(0.25, 0.25, 0), Vec3(0.75, 0.75, 1), floorElement, ceilingElement));
-  EXPECT_EQ(exact.blockers(Vec3(0.25, 0.25, 0), Vec3(0.75, 0.75, 1), floorElement, ceilingElement).size(), 4u);
+  EXPECT_EQ(exact.blockers(Vec3(0.25, 0.25, 0), Vec3(0.75, 0.75, 1), floorElement, ceilingElement).size(),
+            4u);
   // Touching only at an end point (here the occluder's shared corner) does not block.
   EXPECT_TRUE(exact.visible(Vec3(0.25, 0.25, 0), Vec3(0.5, 0.5, 0.5), floorElement, -1));
 }
@@ -127,8 +134,8 @@ TEST(SegmentVisibility, AgreesWithTheExactVisibleRegion) {
   const SegmentVisibility exact(mesh);
   std::mt19937_64 rng(11);
   int source = -1, receiver = -1;
-  // The floor element under the first box (points in its footprint see nothing) and the ceiling element above the
-  // second box.
+  // The floor element under the first box (points in its footprint see nothing) and the ceiling element above
+  // the second box.
   for (std::size_t e = 0; e < mesh.size(); ++e) {
     const Element& el = mesh.elements[e];
     const bool low = el.centroid.x() < 0.5 && el.centroid.z() < 0.5;
