@@ -18,10 +18,10 @@ case "$what" in
       exec build/release/bin/radiosity-textbook --lesson cornell-box
     fi
     mkdir -p out
-    xvfb-run -a -s "-screen 0 1920x1080x24" build/release/bin/radiosity solve scenes/cornell-box.json \
+    xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/release/bin/radiosity solve scenes/cornell-box.json \
       --image out/cornell-box.png
     if [ -x build/release/bin/radiosity-textbook ] && [ -f lessons/cornell-box.json ]; then
-      xvfb-run -a -s "-screen 0 1920x1080x24" build/release/bin/radiosity lesson render cornell-box --output out/lesson
+      xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/release/bin/radiosity lesson render cornell-box --output out/lesson
     fi
     echo "No display: the Cornell box is in out/cornell-box.png (lesson figures, when built, in out/lesson/)"
     ;;
@@ -29,7 +29,7 @@ case "$what" in
     cmake --preset dev >/dev/null
     cmake --build --preset dev -j "$jobs"
     # Everything that renders needs an X server: run the whole suite under one Xvfb.
-    xvfb-run -a -s "-screen 0 1920x1080x24" ctest --preset dev -j "$jobs"
+    xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" ctest --preset dev -j "$jobs"
     ;;
   *)
     echo "usage: ./setup.sh app|test" >&2

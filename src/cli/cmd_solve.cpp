@@ -7,6 +7,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "core/formfactor/formfactor_method.h"
+#include "core/refine/refine.h"
 #include "core/solvers/solver.h"
 #ifdef RT_HAVE_VIZ
 #include "viz/scene_image.h"
@@ -18,7 +19,7 @@ namespace {
 struct SolveArguments {
   std::string scene;
   std::string solver;  // empty: chosen by size
-  std::string formFactors = "analytic";
+  std::string formFactors = "analytic-visibility";  // exact unoccluded F, ray-cast visibility where a shaft is blocked
   double tolerance = 1e-6;
   int maxIterations = 1000;
   std::uint64_t seed = 1;
@@ -34,6 +35,9 @@ struct SolveArguments {
   bool verbose = false;
   bool ambient = false;
   MeshArguments mesh;
+  // Refining meshers (docs/meshing.md): empty = the uniform mesh of MeshArguments.
+  std::string refineMode;
+  RefineOptions refine;
 };
 
 void writeRadiosityCsv(const Scene& scene, const Mesh& mesh, const RgbField& B, const std::string& path) {
@@ -51,8 +55,41 @@ void writeRadiosityCsv(const Scene& scene, const Mesh& mesh, const RgbField& B, 
   if (!out) throw InputError({path}, "error while writing the radiosity file");
 }
 
+void writeImage(const SolveArguments& a, const Scene& scene, const Mesh& mesh, const RgbField& B) {
+#ifdef RT_HAVE_VIZ
+  viz::ImageOptions image;
+  image.width = a.width;
+  image.height = a.height;
+  image.exposure = a.exposure;
+  image.toneMap = a.toneMap == "reinhard" ? viz::ToneMap::Reinhard : viz::ToneMap::LinearClamp;
+  image.smooth = a.smooth;
+  image.showEdges = a.edges;
+  viz::renderRadiosityImage(mesh, B, scene.cameraOrDefault(), image, a.image);
+  std::cerr << "image written to " << a.image << "\n";
+#else
+  throw std::runtime_error("--image needs the visualisation library (configure with RT_BUILD_VIZ=ON)");
+#endif
+}
+
+// --mesh adaptive|discontinuity|hierarchical: the refining solvers build their own mesh and form factors.
+void runRefined(const SolveArguments& a, const Scene& scene) {
+  RefineOptions options = a.refine;
+  options.mode = refineModeFromString(a.refineMode);
+  options.solverTolerance = a.tolerance;
+  ProgressLine progress(true);
+  const RefinedSolution solution = solveRefined(scene, options, progress);
+  progress.finish();
+  std::cerr << "mesh (" << a.refineMode << "): " << solution.stats.summary() << "\n";
+  if (!a.output.empty()) {
+    writeRadiosityCsv(scene, solution.mesh, solution.B, a.output);
+    std::cerr << "radiosity written to " << a.output << "\n";
+  }
+  if (!a.image.empty()) writeImage(a, scene, solution.mesh, solution.B);
+}
+
 void run(const SolveArguments& a) {
   const Scene scene = loadSceneReportingWarnings(a.scene);
+  if (!a.refineMode.empty()) return runRefined(a, scene);
   const Mesh mesh = buildMesh(scene, a.mesh.options());
   ProgressLine progress(!a.verbose);
 
@@ -96,21 +133,7 @@ void run(const SolveArguments& a) {
     writeRadiosityCsv(scene, mesh, B, a.output);
     std::cerr << "radiosity written to " << a.output << "\n";
   }
-  if (!a.image.empty()) {
-#ifdef RT_HAVE_VIZ
-    viz::ImageOptions image;
-    image.width = a.width;
-    image.height = a.height;
-    image.exposure = a.exposure;
-    image.toneMap = a.toneMap == "reinhard" ? viz::ToneMap::Reinhard : viz::ToneMap::LinearClamp;
-    image.smooth = a.smooth;
-    image.showEdges = a.edges;
-    viz::renderRadiosityImage(mesh, B, scene.cameraOrDefault(), image, a.image);
-    std::cerr << "image written to " << a.image << "\n";
-#else
-    throw std::runtime_error("--image needs the visualisation library (configure with RT_BUILD_VIZ=ON)");
-#endif
-  }
+  if (!a.image.empty()) writeImage(a, scene, mesh, B);
 }
 
 }  // namespace
@@ -143,6 +166,19 @@ void addSolveCommand(CLI::App& app) {
       ->check(CLI::IsMember({"linear", "reinhard"}));
   command->add_flag("--smooth", a->smooth, "Interpolate radiosity at vertices (Gouraud) instead of flat elements");
   command->add_flag("--edges", a->edges, "Draw the mesh edges");
+  command->add_option("--mesh", a->refineMode, "Refining mesher instead of a uniform mesh (docs/meshing.md)")
+      ->check(CLI::IsMember({"uniform", "adaptive", "discontinuity", "hierarchical"}));
+  command->add_option("--initial-edge", a->refine.initialMaxEdge, "--mesh: starting max edge (0 = diagonal / 5)");
+  command->add_option("--min-edge", a->refine.minEdge, "--mesh: smallest edge refinement may make");
+  command->add_option("--gradient-tolerance", a->refine.gradientTolerance, "--mesh adaptive: split threshold")
+      ->capture_default_str();
+  command->add_option("--passes", a->refine.maxPasses, "--mesh adaptive: solves")->capture_default_str();
+  command->add_option("--max-elements", a->refine.maxElements, "--mesh adaptive: element budget")
+      ->capture_default_str();
+  command->add_option("--link-tolerance", a->refine.linkTolerance, "--mesh hierarchical: link threshold")
+      ->capture_default_str();
+  command->add_option("--rays", a->refine.visibilitySamples, "--mesh: visibility rays per pair or link")
+      ->capture_default_str();
   command->add_flag("--verbose", a->verbose, "One line per iteration instead of a progress line");
   command->callback([a] { run(*a); });
 }

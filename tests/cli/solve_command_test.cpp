@@ -1,6 +1,8 @@
 // End-to-end: the radiosity CLI solves the Cornell box and the scenes of the furnace test, from the files in scenes/.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
