@@ -19,11 +19,13 @@ case "$what" in
     fi
     mkdir -p out
     xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/release/bin/radiosity solve scenes/cornell-box.json \
-      --image out/cornell-box.png
-    if [ -x build/release/bin/radiosity-textbook ] && [ -f lessons/cornell-box.json ]; then
-      xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/release/bin/radiosity lesson render cornell-box --output out/lesson
-    fi
-    echo "No display: the Cornell box is in out/cornell-box.png (lesson figures, when built, in out/lesson/)"
+      --max-edge 25 --smooth --image out/cornell-box.png --output out/cornell-box-B.csv
+    xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/release/bin/radiosity lesson render cornell-box \
+      --output out/lesson
+    xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/release/bin/radiosity-textbook --lesson cornell-box \
+      --step 1 --screenshot out/app-cornell-box.png
+    echo "No display: the solved Cornell box is out/cornell-box.png, the lesson's figures and page are in out/lesson/,"
+    echo "and the app's window on the lesson is out/app-cornell-box.png"
     ;;
   test)
     cmake --preset dev >/dev/null
