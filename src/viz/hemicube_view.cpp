@@ -9,29 +9,6 @@
 namespace rt::viz {
 namespace {
 
-// The buffer convention of core/formfactor/hemicube.cpp: columns run along `across`, rows along `up`, from -1
-// on the top face and from the horizon (0) on the sides.
-struct FaceAxes {
-  Vec3 across, up, forward;
-  double upMin;
-};
-
-FaceAxes axesOf(HemicubeFace face) {
-  switch (face) {
-    case HemicubeFace::Top:
-      return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, -1};
-    case HemicubeFace::PlusU:
-      return {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}, 0};
-    case HemicubeFace::PlusV:
-      return {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}, 0};
-    case HemicubeFace::MinusU:
-      return {{0, -1, 0}, {0, 0, 1}, {-1, 0, 0}, 0};
-    case HemicubeFace::MinusV:
-      return {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}, 0};
-  }
-  return {};
-}
-
 constexpr Rgb8 kNothing{235, 235, 235};
 const char* kFaceNames[5] = {"top", "+u", "+v", "-u", "-v"};
 
@@ -44,7 +21,7 @@ HemicubeColouring hemicubeColouringFromName(const std::string& name) {
 }
 
 std::array<Vec3, 4> hemicubePixelCorners(HemicubeFace face, int row, int column, int resolution) {
-  const FaceAxes axes = axesOf(face);
+  const HemicubeFaceAxes axes = hemicubeFaceAxes(face);
   const int height = face == HemicubeFace::Top ? resolution : hemicubeSideRows(resolution);
   const double du = 2.0 / resolution, dv = (1.0 - axes.upMin) / height;
   const double a0 = -1 + column * du, a1 = a0 + du, b0 = axes.upMin + row * dv, b1 = b0 + dv;

@@ -13,35 +13,12 @@
 namespace rt {
 namespace {
 
-// A face as three axes in the element's local frame (x = u, y = v, z = normal): pixels run along `across`
-// (columns) and `up` (rows); `forward` points from the eye through the face.
-struct FaceAxes {
-  Vec3 across, up, forward;
-  double upMin;  // the top face spans up in [-1, 1]; the sides span [0, 1] (horizon to the top edge)
-};
-
-FaceAxes axesOf(HemicubeFace face) {
-  switch (face) {
-    case HemicubeFace::Top:
-      return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, -1};
-    case HemicubeFace::PlusU:
-      return {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}, 0};
-    case HemicubeFace::PlusV:
-      return {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}, 0};
-    case HemicubeFace::MinusU:
-      return {{0, -1, 0}, {0, 0, 1}, {-1, 0, 0}, 0};
-    case HemicubeFace::MinusV:
-      return {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}, 0};
-  }
-  return {};
-}
-
 int heightOf(int resolution, HemicubeFace face) {
   return face == HemicubeFace::Top ? resolution : hemicubeSideRows(resolution);
 }
 
 std::vector<double> computeDeltas(int resolution, HemicubeFace face) {
-  const FaceAxes axes = axesOf(face);
+  const HemicubeFaceAxes axes = hemicubeFaceAxes(face);
   const int width = resolution, height = heightOf(resolution, face);
   const double du = 2.0 / width, dv = (1.0 - axes.upMin) / height;
   std::vector<double> deltas(static_cast<std::size_t>(width) * height);
@@ -67,6 +44,22 @@ struct ProjectedPolygon {
 };
 
 }  // namespace
+
+HemicubeFaceAxes hemicubeFaceAxes(HemicubeFace face) {
+  switch (face) {
+    case HemicubeFace::Top:
+      return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, -1};
+    case HemicubeFace::PlusU:
+      return {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}, 0};
+    case HemicubeFace::PlusV:
+      return {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}, 0};
+    case HemicubeFace::MinusU:
+      return {{0, -1, 0}, {0, 0, 1}, {-1, 0, 0}, 0};
+    case HemicubeFace::MinusV:
+      return {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}, 0};
+  }
+  return {};
+}
 
 int hemicubeSideRows(int resolution) {
   return (resolution + 1) / 2;
@@ -107,10 +100,10 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
   const double size = box.isEmpty() ? 1.0 : box.diagonal().norm();
   const double near = 1e-9 * size;
 
-  std::array<FaceAxes, 5> axes;
+  std::array<HemicubeFaceAxes, 5> axes;
   for (int f = 0; f < 5; ++f) {
     const HemicubeFace face = static_cast<HemicubeFace>(f);
-    axes[f] = axesOf(face);
+    axes[f] = hemicubeFaceAxes(face);
     HemicubeFaceBuffer& buffer = result.faces[f];
     buffer.width = resolution;
     buffer.height = heightOf(resolution, face);
@@ -146,7 +139,7 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
     const double c = m.dot(local[0]);
 
     for (int f = 0; f < 5; ++f) {
-      const FaceAxes& face = axes[f];
+      const HemicubeFaceAxes& face = axes[f];
       HemicubeFaceBuffer& buffer = result.faces[f];
       // Face coordinates (across, up, depth), then clip against the near plane depth >= near.
       std::array<Vec3, 16> in, clipped;

@@ -14,6 +14,15 @@ namespace rt {
 // Face order: top (along the normal), then the four sides +u, +v, -u, -v of the element's tangent frame.
 enum class HemicubeFace { Top = 0, PlusU = 1, PlusV = 2, MinusU = 3, MinusV = 4 };
 
+// A face as three axes in the element's local frame (x = u, y = v, z = normal): pixels run along `across`
+// (columns) and `up` (rows); `forward` points from the eye through the face. Views that draw the buffers use
+// it.
+struct HemicubeFaceAxes {
+  Vec3 across, up, forward;
+  double upMin;  // the top face spans up in [-1, 1]; the sides span [0, 1] (horizon to the top edge)
+};
+HemicubeFaceAxes hemicubeFaceAxes(HemicubeFace face);
+
 struct HemicubeFaceBuffer {
   int width = 0, height = 0;  // top: res x res; sides: res x ceil(res/2) (rows from the horizon upwards)
   std::vector<int> element;   // width * height, row-major; -1 where nothing is seen
