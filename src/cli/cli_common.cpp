@@ -13,8 +13,9 @@ void MeshArguments::add(CLI::App& command) {
   auto* none = command.add_flag("--no-subdivide", noSubdivide, "One element per input face, in file order");
   auto* count = command.add_option("--subdivide", subdivide, "Split every patch N x N (triangles: N^2)")
                     ->check(CLI::PositiveNumber);
-  auto* edge = command.add_option("--max-edge", maxEdge, "Split patches until no edge is longer than L (scene units)")
-                   ->check(CLI::PositiveNumber);
+  auto* edge =
+      command.add_option("--max-edge", maxEdge, "Split patches until no edge is longer than L (scene units)")
+          ->check(CLI::PositiveNumber);
   none->excludes(count)->excludes(edge);
   count->excludes(edge);
 }
@@ -37,9 +38,21 @@ Scene loadSceneReportingWarnings(const std::string& path) {
   return scene;
 }
 
+FormFactorMatrix computeFormFactorsReporting(const Mesh& mesh, const std::string& methodName,
+                                             const FormFactorOptions& options, ProgressLine& progress) {
+  const auto method = makeFormFactorMethod(methodName);
+  FormFactorStats stats;
+  FormFactorMatrix F = method->compute(mesh, options, progress, stats);
+  progress.finish();
+  std::cerr << "form factors (" << method->name() << "): " << stats.summary() << "\n";
+  return F;
+}
+
 ProgressLine::ProgressLine(bool enabled) : enabled_(enabled), terminal_(isatty(STDERR_FILENO) != 0) {}
 
-ProgressLine::~ProgressLine() { finish(); }
+ProgressLine::~ProgressLine() {
+  finish();
+}
 
 void ProgressLine::report(double fraction, const std::string& stage) {
   if (!enabled_) return;

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <string>
 
+#include "core/formfactor/formfactor_method.h"
 #include "core/mesh.h"
 #include "core/progress.h"
 #include "core/scene.h"
@@ -23,8 +24,14 @@ struct MeshArguments {
 // Loads and validates the scene, printing its warnings to stderr.
 Scene loadSceneReportingWarnings(const std::string& path);
 
-// A single progress line on stderr ("form factors  42%"), redrawn in place when stderr is a terminal and printed at
-// most every 10% otherwise, so logs stay short.
+class ProgressLine;
+
+// Computes F with the named method, showing progress, and prints the method's one-line summary to stderr.
+FormFactorMatrix computeFormFactorsReporting(const Mesh& mesh, const std::string& method,
+                                             const FormFactorOptions& options, ProgressLine& progress);
+
+// A single progress line on stderr ("form factors  42%"), redrawn in place when stderr is a terminal and
+// printed at most every 10% otherwise, so logs stay short.
 class ProgressLine : public Progress {
  public:
   explicit ProgressLine(bool enabled = true);

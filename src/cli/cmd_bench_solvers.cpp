@@ -80,11 +80,7 @@ void run(const BenchArguments& a) {
   }
   const Mesh mesh = buildMesh(scene, meshOptions);
   ProgressLine progress;
-  FormFactorStats stats;
-  const auto method = makeFormFactorMethod(a.formFactors);
-  const FormFactorMatrix F = method->compute(mesh, FormFactorOptions{}, progress, stats);
-  progress.finish();
-  std::cerr << "form factors (" << method->name() << "): " << stats.summary() << "\n";
+  const FormFactorMatrix F = computeFormFactorsReporting(mesh, a.formFactors, FormFactorOptions{}, progress);
   const RadiositySystem system = RadiositySystem::fromMesh(mesh, F);
 
   RgbField reference;
@@ -100,7 +96,7 @@ void run(const BenchArguments& a) {
   csv << "solver,iteration,seconds,rays,relative_error,residual\n";
 
   std::printf("scene %s, %zu elements, form factors %s\n", a.scene.c_str(), mesh.size(),
-              method->name().c_str());
+              a.formFactors.c_str());
   std::printf("%-18s %-15s %8s %10s %12s  %-22s %-22s\n", "solver", "status", "its", "seconds", "final error",
               "error <= 1e-2", "error <= 1e-6");
   std::map<std::string, std::vector<Sample>> all;

@@ -32,11 +32,7 @@ void run(const MatrixArguments& a) {
   const Mesh mesh = buildMesh(scene, a.mesh.options());
   const MatrixFormat format = matrixFormatFromPath(a.output);  // fail before the expensive part
   ProgressLine progress;
-  FormFactorStats stats;
-  const auto method = makeFormFactorMethod(a.formFactors);
-  const FormFactorMatrix F = method->compute(mesh, FormFactorOptions{}, progress, stats);
-  progress.finish();
-  std::cerr << "form factors (" << method->name() << "): " << stats.summary() << "\n";
+  const FormFactorMatrix F = computeFormFactorsReporting(mesh, a.formFactors, FormFactorOptions{}, progress);
 
   const RadiositySystem system = RadiositySystem::fromMesh(mesh, F);
   const int c = channelIndex(a.channel);

@@ -19,7 +19,8 @@ namespace {
 struct SolveArguments {
   std::string scene;
   std::string solver;  // empty: chosen by size
-  std::string formFactors = "analytic-visibility";  // exact unoccluded F, ray-cast visibility where a shaft is blocked
+  std::string formFactors =
+      "analytic-visibility";  // exact unoccluded F, ray-cast visibility where a shaft is blocked
   double tolerance = 1e-6;
   int maxIterations = 1000;
   std::uint64_t seed = 1;
@@ -49,7 +50,8 @@ void writeRadiosityCsv(const Scene& scene, const Mesh& mesh, const RgbField& B, 
     const Element& e = mesh.elements[i];
     const auto r = static_cast<Eigen::Index>(i);
     std::snprintf(line, sizeof line, "%zu,%d,%s,%.17g,%.17g,%.17g,%.17g\n", i, e.patch,
-                  scene.surfaces[scene.patches[e.patch].surface].name.c_str(), e.area, B(r, 0), B(r, 1), B(r, 2));
+                  scene.surfaces[scene.patches[e.patch].surface].name.c_str(), e.area, B(r, 0), B(r, 1),
+                  B(r, 2));
     out << line;
   }
   if (!out) throw InputError({path}, "error while writing the radiosity file");
@@ -97,11 +99,7 @@ void run(const SolveArguments& a) {
   ffOptions.hemicubeResolution = a.resolution;
   ffOptions.samples = a.samples;
   ffOptions.seed = a.seed;
-  FormFactorStats stats;
-  const auto method = makeFormFactorMethod(a.formFactors);
-  const FormFactorMatrix F = method->compute(mesh, ffOptions, progress, stats);
-  progress.finish();
-  std::cerr << "form factors (" << method->name() << "): " << stats.summary() << "\n";
+  const FormFactorMatrix F = computeFormFactorsReporting(mesh, a.formFactors, ffOptions, progress);
 
   const std::string solverName = a.solver.empty() ? chooseSolver(mesh.size()) : a.solver;
   auto solver = makeSolver(solverName);
@@ -118,14 +116,16 @@ void run(const SolveArguments& a) {
       std::fprintf(stderr, "iteration %d: residual %.6e, unshot power %.6e%s\n", r.iteration, r.residual,
                    r.unshotPower, r.shooter >= 0 ? (", shooter " + std::to_string(r.shooter)).c_str() : "");
     } else if (a.maxIterations > 0) {
-      progress.report(std::min(1.0, static_cast<double>(r.iteration) / a.maxIterations), "solve (" + solverName + ")");
+      progress.report(std::min(1.0, static_cast<double>(r.iteration) / a.maxIterations),
+                      "solve (" + solverName + ")");
     }
   });
   const RadiositySystem system = RadiositySystem::fromMesh(mesh, F);
   const RgbField B = solver->compute(system).solve();
   progress.finish();
-  std::cerr << "solve (" << solverName << "): " << toString(solver->info()) << " after " << solver->iterations()
-            << " iterations, relative residual " << system.relativeResidual(B) << "\n";
+  std::cerr << "solve (" << solverName << "): " << toString(solver->info()) << " after "
+            << solver->iterations() << " iterations, relative residual " << system.relativeResidual(B)
+            << "\n";
   if (solver->info() != SolverStatus::Success && solver->info() != SolverStatus::NoConvergence)
     throw std::runtime_error("the solver failed: " + toString(solver->info()));
 
@@ -140,12 +140,15 @@ void run(const SolveArguments& a) {
 
 void addSolveCommand(CLI::App& app) {
   auto a = std::make_shared<SolveArguments>();
-  auto* command = app.add_subcommand("solve", "Solve the radiosity system of a scene; write B.csv and/or an image");
+  auto* command =
+      app.add_subcommand("solve", "Solve the radiosity system of a scene; write B.csv and/or an image");
   command->add_option("scene", a->scene, "Scene file (.json or .obj)")->required()->check(CLI::ExistingFile);
-  command->add_option("--method", a->solver,
-                      "Solver: direct, jacobi, gauss-seidel, southwell, progressive, bounces, stochastic-jacobi, "
-                      "random-walk (default: direct for small scenes, gauss-seidel otherwise)");
-  command->add_option("--formfactors", a->formFactors, "Form-factor method (see `radiosity formfactors --help`)")
+  command->add_option(
+      "--method", a->solver,
+      "Solver: direct, jacobi, gauss-seidel, southwell, progressive, bounces, stochastic-jacobi, "
+      "random-walk (default: direct for small scenes, gauss-seidel otherwise)");
+  command
+      ->add_option("--formfactors", a->formFactors, "Form-factor method (see `radiosity formfactors --help`)")
       ->capture_default_str();
   command->add_option("--tolerance", a->tolerance, "Relative residual (or unshot power) to stop at")
       ->capture_default_str()
@@ -153,22 +156,28 @@ void addSolveCommand(CLI::App& app) {
   command->add_option("--max-iterations", a->maxIterations, "Iteration cap")->capture_default_str();
   command->add_option("--seed", a->seed, "Seed of the stochastic methods")->capture_default_str();
   command->add_option("--resolution", a->resolution, "Hemicube resolution")->capture_default_str();
-  command->add_option("--samples", a->samples, "Ray-cast samples per pair / Monte Carlo rays")->capture_default_str();
+  command->add_option("--samples", a->samples, "Ray-cast samples per pair / Monte Carlo rays")
+      ->capture_default_str();
   command->add_flag("--ambient", a->ambient, "progressive: show B plus the ambient term");
   a->mesh.add(*command);
-  command->add_option("--output", a->output, "Write B per element as CSV (element,patch,surface,area,B_r,B_g,B_b)");
-  command->add_option("--image", a->image, "Render the solved scene from its camera to a PNG (needs an X server)");
+  command->add_option("--output", a->output,
+                      "Write B per element as CSV (element,patch,surface,area,B_r,B_g,B_b)");
+  command->add_option("--image", a->image,
+                      "Render the solved scene from its camera to a PNG (needs an X server)");
   command->add_option("--width", a->width, "Image width")->capture_default_str();
   command->add_option("--height", a->height, "Image height")->capture_default_str();
-  command->add_option("--exposure", a->exposure, "Exposure multiplier (0 = automatic)")->capture_default_str();
+  command->add_option("--exposure", a->exposure, "Exposure multiplier (0 = automatic)")
+      ->capture_default_str();
   command->add_option("--tonemap", a->toneMap, "linear or reinhard")
       ->capture_default_str()
       ->check(CLI::IsMember({"linear", "reinhard"}));
-  command->add_flag("--smooth", a->smooth, "Interpolate radiosity at vertices (Gouraud) instead of flat elements");
+  command->add_flag("--smooth", a->smooth,
+                    "Interpolate radiosity at vertices (Gouraud) instead of flat elements");
   command->add_flag("--edges", a->edges, "Draw the mesh edges");
   command->add_option("--mesh", a->refineMode, "Refining mesher instead of a uniform mesh (docs/meshing.md)")
       ->check(CLI::IsMember({"uniform", "adaptive", "discontinuity", "hierarchical"}));
-  command->add_option("--initial-edge", a->refine.initialMaxEdge, "--mesh: starting max edge (0 = diagonal / 5)");
+  command->add_option("--initial-edge", a->refine.initialMaxEdge,
+                      "--mesh: starting max edge (0 = diagonal / 5)");
   command->add_option("--min-edge", a->refine.minEdge, "--mesh: smallest edge refinement may make");
   command->add_option("--gradient-tolerance", a->refine.gradientTolerance, "--mesh adaptive: split threshold")
       ->capture_default_str();

@@ -73,10 +73,7 @@ Drawing hemicubeFacesDrawing(const HemicubeFaces& faces, std::size_t elements,
     return Vec2(centre + unit * unfoldHemicubePoint(face, local));
   };
 
-  double maxDelta = 0;
-  for (int f = 0; f < 5; ++f)
-    for (double v : deltaFormFactors(faces.resolution, static_cast<HemicubeFace>(f)))
-      maxDelta = std::max(maxDelta, v);
+  const double maxDelta = maxDeltaFormFactor(faces.resolution);
 
   for (int f = 0; f < 5; ++f) {
     const auto face = static_cast<HemicubeFace>(f);

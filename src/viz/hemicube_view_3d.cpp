@@ -60,10 +60,7 @@ void writeHemicube3dFigure(const Mesh& mesh, const HemicubeFaces& faces, const H
   auto quads = vtkSmartPointer<vtkCellArray>::New();
   auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
   colours->SetNumberOfComponents(3);
-  double maxDelta = 0;
-  for (int f = 0; f < 5; ++f)
-    for (double v : deltaFormFactors(faces.resolution, static_cast<HemicubeFace>(f)))
-      maxDelta = std::max(maxDelta, v);
+  const double maxDelta = maxDeltaFormFactor(faces.resolution);
   for (int f = 0; f < 5; ++f) {
     const auto face = static_cast<HemicubeFace>(f);
     const auto& buffer = faces.faces[static_cast<std::size_t>(f)];

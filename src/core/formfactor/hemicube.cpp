@@ -61,6 +61,14 @@ HemicubeFaceAxes hemicubeFaceAxes(HemicubeFace face) {
   return {};
 }
 
+double maxDeltaFormFactor(int resolution) {
+  double largest = 0;
+  for (int f = 0; f < 5; ++f)
+    for (double v : deltaFormFactors(resolution, static_cast<HemicubeFace>(f)))
+      largest = std::max(largest, v);
+  return largest;
+}
+
 int hemicubeSideRows(int resolution) {
   return (resolution + 1) / 2;
 }

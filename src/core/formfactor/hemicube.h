@@ -45,6 +45,8 @@ int hemicubeSideRows(int resolution);
 // rounding at every resolution. Cached per resolution; thread-safe. Throws std::invalid_argument for
 // resolution < 2.
 const std::vector<double>& deltaFormFactors(int resolution, HemicubeFace face);
+// The largest delta form factor over the five faces (the scale of a delta-form-factor heat map).
+double maxDeltaFormFactor(int resolution);
 
 // Renders the hemicube of `element`: pixel-centre coverage, near-plane clipping, z-buffer. Elements whose
 // back faces the eye, and the parts below the element's horizon, are not drawn.
