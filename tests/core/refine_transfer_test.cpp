@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/formfactor/analytic.h"
 #include "core/refine/dense_transfer.h"
 #include "refine_test_scenes.h"
 
@@ -22,10 +23,10 @@ double cornerRectangle(double a, double b, double c) {
 TEST(RefineTransfer, PointToParallelSquareMatchesClosedForm) {
   // Square [-1,1]^2 at height 2 facing down, point at the origin facing up: four corner rectangles 1 x 1.
   const Polygon P{{-1, -1, 2}, {-1, 1, 2}, {1, 1, 2}, {1, -1, 2}};
-  const double F = pointToPolygonLambert(Vec3::Zero(), Vec3(0, 0, 1), P, Vec3(0, 0, -1));
+  const double F = pointToPolygonFormFactor(Vec3::Zero(), Vec3(0, 0, 1), P);
   EXPECT_NEAR(F, 4 * cornerRectangle(1, 1, 2), 1e-14);
   // Seen from behind (one-sided) nothing arrives.
-  EXPECT_EQ(pointToPolygonLambert(Vec3(0, 0, 3), Vec3(0, 0, -1), P, Vec3(0, 0, -1)), 0.0);
+  EXPECT_EQ(pointToPolygonFormFactor(Vec3(0, 0, 3), Vec3(0, 0, -1), P), 0.0);
 }
 
 TEST(RefineTransfer, HorizonClippingKeepsOnlyTheVisibleHalf) {
@@ -33,9 +34,8 @@ TEST(RefineTransfer, HorizonClippingKeepsOnlyTheVisibleHalf) {
   // same as the upper half alone.
   const Polygon wall{{-1, 1, -1}, {1, 1, -1}, {1, 1, 1}, {-1, 1, 1}};
   const Polygon upper{{-1, 1, 0}, {1, 1, 0}, {1, 1, 1}, {-1, 1, 1}};
-  const Vec3 nWall(0, -1, 0);
-  const double full = pointToPolygonLambert(Vec3::Zero(), Vec3(0, 0, 1), wall, nWall);
-  const double half = pointToPolygonLambert(Vec3::Zero(), Vec3(0, 0, 1), upper, nWall);
+  const double full = pointToPolygonFormFactor(Vec3::Zero(), Vec3(0, 0, 1), wall);
+  const double half = pointToPolygonFormFactor(Vec3::Zero(), Vec3(0, 0, 1), upper);
   EXPECT_GT(full, 0.0);
   EXPECT_NEAR(full, half, 1e-14);
 }

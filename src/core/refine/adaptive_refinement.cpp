@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/formfactor/analytic.h"
 #include "core/polygon.h"
 #include "core/refine/dense_transfer.h"
 #include "core/refine/piece_mesh.h"
@@ -40,7 +41,7 @@ double directVariation(const Scene& scene, const Mesh& mesh, int e, const Visibi
     for (std::size_t l = 0; l < emitters.size(); ++l) {
       const Patch& light = scene.patches[emitters[l]];
       if (emitters[l] == element.patch) continue;
-      const double F = pointToPolygonLambert(x, element.normal, light.vertices, light.normal);
+      const double F = pointToPolygonFormFactor(x, element.normal, light.vertices);
       if (F <= 0) continue;
       const double V = visibility.visibleFraction(x, lightSamples[l], element.patch, emitters[l]);
       direct += F * V * scene.materialOf(light).emission.matrix().transpose();
@@ -129,7 +130,7 @@ RefinedSolution refineLoop(const Scene& scene, const RefineOptions& options, Pro
                           "form factors, pass " + std::to_string(pass + 1), record.pairsComputed);
     solution.stats.formFactorSeconds += secondsSince(ffStart);
     const auto solveStart = Clock::now();
-    record.sweeps = gatherSolve(F, mesh.reflectance, mesh.emission, B, options.solverTolerance,
+    record.sweeps = gatherSolve(RadiositySystem::fromMesh(mesh, F), B, options.solverTolerance,
                                 options.maxSweeps, progress);
     solution.stats.solveSeconds += secondsSince(solveStart);
     solution.stats.pairsComputed += record.pairsComputed;

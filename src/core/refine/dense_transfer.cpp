@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <stdexcept>
+
+#include "core/solvers/gathering_solvers.h"
 
 namespace rt {
 
@@ -67,23 +70,21 @@ FormFactorMatrix updateFormFactors(const FormFactorMatrix& previous, const std::
   return F;
 }
 
-int gatherSolve(const FormFactorMatrix& F, const RgbField& reflectance, const RgbField& emission, RgbField& B,
-                double tolerance, int maxSweeps, Progress& progress) {
-  const Eigen::Index n = F.rows();
-  if (B.rows() != n) B = emission;
-  for (int sweep = 1; sweep <= maxSweeps; ++sweep) {
+int gatherSolve(const RadiositySystem& system, RgbField& B, double tolerance, int maxSweeps,
+                Progress& progress) {
+  SolverOptions options;
+  options.tolerance = tolerance;
+  options.maxIterations = maxSweeps;
+  options.recordHistory = false;
+  int sweeps = 0;
+  const SolverStatus status = gaussSeidel(system, B, options, [&](const IterationRecord& record) {
+    sweeps = record.iteration;
     if (progress.cancelled()) throw Cancelled();
-    double change = 0;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const Eigen::RowVector3d gathered = F.row(i) * B;
-      const Eigen::RowVector3d next =
-          emission.row(i) + (reflectance.row(i).array() * gathered.array()).matrix();
-      change = std::max(change, (next - B.row(i)).cwiseAbs().maxCoeff());
-      B.row(i) = next;
-    }
-    if (change <= tolerance * std::max(B.cwiseAbs().maxCoeff(), 1e-300)) return sweep;
-  }
-  return maxSweeps;
+  });
+  // The meshes come from validated scenes (rho < 1), so anything but convergence or the sweep cap is a bug.
+  if (status != SolverStatus::Success && status != SolverStatus::NoConvergence)
+    throw std::logic_error("refinement solve failed: " + toString(status));
+  return sweeps;
 }
 
 }  // namespace rt

@@ -1,7 +1,6 @@
 // Dense form factors between mesh elements with the refine transfer kernel (closed-form polygon side,
 // ray-sampled visibility), computed incrementally: after a split only the rows and columns of the new
-// elements are evaluated. And the Gauss-Seidel gathering solve the refining meshers run after every change
-// (warm-started from the last B).
+// elements are evaluated. And the gathering solve the refining meshers run after every change.
 #pragma once
 
 #include <string>
@@ -11,6 +10,7 @@
 #include "core/mesh.h"
 #include "core/progress.h"
 #include "core/refine/transfer.h"
+#include "core/solvers/radiosity_system.h"
 
 namespace rt {
 
@@ -25,9 +25,10 @@ FormFactorMatrix updateFormFactors(const FormFactorMatrix& previous, const std::
                                    const VisibilityOracle& visibility, const TransferOptions& options,
                                    Progress& progress, const std::string& stage, std::size_t& pairsComputed);
 
-// Solves B = E + rho (F B) by Gauss-Seidel sweeps from the given start until the largest change of a sweep is
-// below tolerance x max|B|. Returns the number of sweeps.
-int gatherSolve(const FormFactorMatrix& F, const RgbField& reflectance, const RgbField& emission, RgbField& B,
-                double tolerance, int maxSweeps, Progress& progress);
+// Solves the system with the core's Gauss-Seidel (the same iteration `radiosity solve --method gauss-seidel`
+// runs) until the relative residual ||K B - E|| / ||E|| is below tolerance or maxSweeps is reached, checking
+// for cancellation after every sweep. Returns the number of sweeps.
+int gatherSolve(const RadiositySystem& system, RgbField& B, double tolerance, int maxSweeps,
+                Progress& progress);
 
 }  // namespace rt

@@ -98,7 +98,7 @@ RefinedSolution solveDiscontinuity(const Scene& scene, const RefineOptions& opti
   solution.stats.formFactorSeconds = secondsSince(ffStart);
   const auto solveStart = Clock::now();
   RgbField B = mesh.emission;
-  pass.sweeps = gatherSolve(F, mesh.reflectance, mesh.emission, B, options.solverTolerance, options.maxSweeps,
+  pass.sweeps = gatherSolve(RadiositySystem::fromMesh(mesh, F), B, options.solverTolerance, options.maxSweeps,
                             progress);
   solution.stats.solveSeconds = secondsSince(solveStart);
   pass.seconds = secondsSince(start);

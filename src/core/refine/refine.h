@@ -56,7 +56,7 @@ struct RefineOptions {
   double minArea = 0;
   int refinementRounds = 3;  // BF: solve, re-refine the links with the new radiosities, repeat
 
-  double solverTolerance = 1e-6;  // relative change of B between Gauss-Seidel sweeps
+  double solverTolerance = 1e-6;  // Gauss-Seidel: relative residual; hierarchical: relative change of B
   int maxSweeps = 500;
 };
 

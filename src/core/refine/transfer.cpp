@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
+#include "core/formfactor/analytic.h"
 #include "core/polygon.h"
 
 namespace rt {
@@ -23,38 +23,6 @@ bool reachesInFront(const Polygon& p, const Vec3& origin, const Vec3& normal, do
 }
 
 }  // namespace
-
-Polygon clipToHalfSpace(const Polygon& P, const Vec3& origin, const Vec3& normal) {
-  Polygon out;
-  const std::size_t n = P.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const Vec3& a = P[k];
-    const Vec3& b = P[(k + 1) % n];
-    const double da = (a - origin).dot(normal), db = (b - origin).dot(normal);
-    if (da >= 0) out.push_back(a);
-    if ((da >= 0) != (db >= 0)) out.push_back(a + (b - a) * (da / (da - db)));
-  }
-  return out;
-}
-
-double pointToPolygonLambert(const Vec3& x, const Vec3& n, const Polygon& P, const Vec3& nP) {
-  if (P.size() < 3) return 0.0;
-  const double scale = maxEdgeLength(P);
-  if ((x - P[0]).dot(nP) <= 1e-12 * scale) return 0.0;  // x behind or in the plane of P: P is one-sided
-  const Polygon visible = clipToHalfSpace(P, x, n);
-  if (visible.size() < 3) return 0.0;
-  double sum = 0;
-  for (std::size_t k = 0; k < visible.size(); ++k) {
-    const Vec3 a = visible[k] - x;
-    const Vec3 b = visible[(k + 1) % visible.size()] - x;
-    const Vec3 c = a.cross(b);
-    const double len = c.norm();
-    if (len <= 0) continue;
-    sum += std::atan2(len, a.dot(b)) * n.dot(c) / len;
-  }
-  // A polygon facing x is traversed clockwise as seen from x, which makes the sum negative.
-  return std::max(0.0, -sum) / (2.0 * std::numbers::pi);
-}
 
 std::vector<SurfaceSample> stratifiedSamples(const Polygon& P, int perSide) {
   std::vector<SurfaceSample> samples;
@@ -167,7 +135,7 @@ std::pair<double, double> pieceFormFactors(const SurfacePiece& a, const SurfaceP
   }
   double fSmallLarge = 0;
   for (const SurfaceSample& r : receivers) {
-    const double unoccluded = pointToPolygonLambert(r.point, small.normal, *large.polygon, large.normal);
+    const double unoccluded = pointToPolygonFormFactor(r.point, small.normal, *large.polygon);
     if (unoccluded <= 0) continue;
     fSmallLarge +=
         r.weight * unoccluded * visibility.visibleFraction(r.point, targets, small.patch, large.patch);
@@ -178,8 +146,8 @@ std::pair<double, double> pieceFormFactors(const SurfacePiece& a, const SurfaceP
 
 std::pair<double, double> pieceFormFactorEstimate(const SurfacePiece& a, const SurfacePiece& b) {
   if (a.patch == b.patch) return {0.0, 0.0};
-  return {pointToPolygonLambert(a.centroid, a.normal, *b.polygon, b.normal),
-          pointToPolygonLambert(b.centroid, b.normal, *a.polygon, a.normal)};
+  return {pointToPolygonFormFactor(a.centroid, a.normal, *b.polygon),
+          pointToPolygonFormFactor(b.centroid, b.normal, *a.polygon)};
 }
 
 }  // namespace rt

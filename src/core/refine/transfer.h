@@ -13,15 +13,6 @@
 
 namespace rt {
 
-// Lambert's closed form: F from the differential area at x (unit normal n) to polygon P,
-// F = (1/2pi) sum_k beta_k n . normalize(v_k x v_k+1), v relative to x. P is first clipped to the half-space
-// in front of x (horizon clipping). Zero when x is behind P (polygons are one-sided) or P behind x. P's front
-// normal is nP.
-double pointToPolygonLambert(const Vec3& x, const Vec3& n, const Polygon& P, const Vec3& nP);
-
-// Keeps the part of P on the side (p - origin) . normal >= 0 (Sutherland-Hodgman against one plane).
-Polygon clipToHalfSpace(const Polygon& P, const Vec3& origin, const Vec3& normal);
-
 // Stratified points over a convex polygon with their area weights (summing to 1): the polygon is
 // fan-triangulated and each triangle gets perSide^2 points of an area-uniform square-to-triangle map at cell
 // centres. perSide = 1 on a triangle or quad gives its centroid alone.
