@@ -4,10 +4,10 @@
 #include <stdexcept>
 
 #include "app/lesson_session.h"
-#include "cli/lesson_figures.h"
 #include "core/io/matrix_export.h"
 #include "core/solvers/radiosity_system.h"
 #include "lesson/step_result.h"
+#include "viz/lesson_figures.h"
 
 namespace rt::app {
 
@@ -39,7 +39,7 @@ int exportLessonFigures(LessonLibrary& library, int lessonIndex, const std::stri
   namespace fs = std::filesystem;
   fs::create_directories(folder);
   const lesson::Lesson& lesson = library.lessons().at(static_cast<std::size_t>(lessonIndex));
-  cli::FigureSettings settings;
+  viz::StepFigureSettings settings;
   settings.width = width;
   settings.height = height;
   int written = 0;
@@ -53,7 +53,7 @@ int exportLessonFigures(LessonLibrary& library, int lessonIndex, const std::stri
     auto stepResult = std::static_pointer_cast<const lesson::StepResult>(result.stepResult);
     if (!stepResult) continue;
     // The same drawing as `radiosity lesson render`: one file per view, named by the step's figure.
-    written += static_cast<int>(cli::renderStepFigures(lesson, step, *stepResult, folder, settings).size());
+    written += static_cast<int>(viz::renderStepFigures(lesson, step, *stepResult, folder, settings).size());
   }
   return written;
 }

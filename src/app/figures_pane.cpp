@@ -5,7 +5,7 @@
 #include <QPixmap>
 #include <QVBoxLayout>
 
-#include "cli/lesson_figures.h"
+#include "viz/lesson_figures.h"
 
 namespace rt::app {
 
@@ -36,10 +36,10 @@ int FiguresPane::showStep(const lesson::Lesson& lesson, const lesson::Step& step
   if (others.views.empty() || !folder_.isValid()) return 0;
   // A fresh folder per call: the files of the previous step may still be on screen while these are written.
   const QString dir = folder_.filePath(QString::number(++serial_));
-  cli::FigureSettings settings;
+  viz::StepFigureSettings settings;
   settings.width = 900;
   settings.height = 680;
-  const auto figures = cli::renderStepFigures(lesson, others, result, dir.toStdString(), settings);
+  const auto figures = viz::renderStepFigures(lesson, others, result, dir.toStdString(), settings);
   const auto files = others.figureFiles();
   for (std::size_t k = 0; k < files.size(); ++k) {
     const QString path = QDir(dir).filePath(QString::fromStdString(files[k]));

@@ -6,14 +6,21 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
-#include "cli/lesson_figures.h"
 #include "core/input_error.h"
 #include "lesson/book.h"
 #include "lesson/lesson_loader.h"
 #include "lesson/step_runner.h"
+#ifdef RT_HAVE_VIZ
+#include "viz/lesson_figures.h"
+#endif
 
 namespace rt::cli {
 namespace {
+
+struct FigureSettings {
+  int width = 900;
+  int height = 700;
+};
 
 struct LessonArguments {
   std::vector<std::string> ids;
@@ -95,8 +102,9 @@ void check(const LessonArguments& a, bool run) {
 void render(const LessonArguments& a, const std::string& output, bool quick, const FigureSettings& figures) {
   if (output.empty()) throw std::runtime_error("--output DIR is required");
   const auto folders = a.folders();
-  if (!canRenderFigures())
-    std::cerr << "radiosity: this build has no viz library: writing the text without figures\n";
+#ifndef RT_HAVE_VIZ
+  std::cerr << "radiosity: this build has no viz library: writing the text without figures\n";
+#endif
   lesson::RunOptions options;
   options.quick = quick;
   std::vector<lesson::RenderedLesson> rendered;
@@ -122,7 +130,12 @@ void render(const LessonArguments& a, const std::string& output, bool quick, con
       }
       lesson::RenderedStep s{step.title, lesson::resolvedText(l, step, result), {}};
       try {
-        s.figures = renderStepFigures(l, step, result, options.outputDir, figures);
+#ifdef RT_HAVE_VIZ
+        s.figures =
+            viz::renderStepFigures(l, step, result, options.outputDir, {figures.width, figures.height});
+#else
+        (void)figures;
+#endif
       } catch (const std::exception& e) {
         throw InputError({l.file, step.line}, "step '" + step.title + "': " + e.what());
       }

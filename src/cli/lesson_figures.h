@@ -1,27 +1,12 @@
-// The figures of a lesson step: one file per view, drawn by the viz layer from the step's result.
+// The figures of a lesson step now live in the viz library (viz/lesson_figures.h); these are the names under
+// which the app's code first used them.
 #pragma once
 
-#include <string>
-#include <vector>
-
-#include "lesson/book.h"
-#include "lesson/lesson.h"
-#include "lesson/step_result.h"
+#include "viz/lesson_figures.h"
 
 namespace rt::cli {
 
-struct FigureSettings {
-  int width = 900;
-  int height = 700;
-};
-
-// Whether this build can draw figures (it was built with the viz library).
-bool canRenderFigures();
-
-// Writes the step's figures into `dir` (file names from Step::figureFiles()) and returns them with captions
-// (paths relative to dir's parent, for the book). Throws std::runtime_error when drawing fails.
-std::vector<lesson::RenderedFigure> renderStepFigures(const lesson::Lesson& lesson, const lesson::Step& step,
-                                                      const lesson::StepResult& result,
-                                                      const std::string& dir, const FigureSettings& settings);
+using FigureSettings = viz::StepFigureSettings;
+using viz::renderStepFigures;
 
 }  // namespace rt::cli

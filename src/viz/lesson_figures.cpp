@@ -1,9 +1,8 @@
-#include "cli/lesson_figures.h"
+#include "viz/lesson_figures.h"
 
 #include <filesystem>
 #include <stdexcept>
 
-#ifdef RT_HAVE_VIZ
 #include "core/formfactor/hemicube.h"
 #include "viz/chart.h"
 #include "viz/hemicube_view.h"
@@ -11,31 +10,21 @@
 #include "viz/nusselt_view.h"
 #include "viz/rays_view.h"
 #include "viz/scene_view.h"
-#endif
 
-namespace rt::cli {
+namespace rt::viz {
 
-bool canRenderFigures() {
-#ifdef RT_HAVE_VIZ
-  return true;
-#else
-  return false;
-#endif
-}
-
-#ifdef RT_HAVE_VIZ
 namespace {
 
 using lesson::StepResult;
 using lesson::View;
 
-viz::SceneViewOptions sceneOptions(const lesson::Step& step, const StepResult& r, const FigureSettings& s) {
-  viz::SceneViewOptions o;
+SceneViewOptions sceneOptions(const lesson::Step& step, const StepResult& r, const StepFigureSettings& s) {
+  SceneViewOptions o;
   const auto& p = step.parameters;
   o.image.width = s.width;
   o.image.height = s.height;
   o.image.exposure = p.exposure;
-  o.image.toneMap = p.toneMap == "reinhard" ? viz::ToneMap::Reinhard : viz::ToneMap::LinearClamp;
+  o.image.toneMap = p.toneMap == "reinhard" ? ToneMap::Reinhard : ToneMap::LinearClamp;
   o.image.srgbGamma = p.gamma;
   o.image.smooth = p.smooth;
   o.image.showEdges = p.edges;
@@ -44,17 +33,17 @@ viz::SceneViewOptions sceneOptions(const lesson::Step& step, const StepResult& r
 }
 
 // A form-factor row seen on the scene: how much of element `source`'s power reaches each element.
-void formFactorRow(const lesson::Step& step, const StepResult& r, const FigureSettings& s,
+void formFactorRow(const lesson::Step& step, const StepResult& r, const StepFigureSettings& s,
                    const std::string& title, const std::string& path) {
   if (!r.F) throw std::runtime_error(path + ": the step computed no form factors");
-  viz::SceneViewOptions o = sceneOptions(step, r, s);
-  o.colouring = viz::SceneColouring::Scalar;
+  SceneViewOptions o = sceneOptions(step, r, s);
+  o.colouring = SceneColouring::Scalar;
   o.highlightElement = r.sourceElement;
   o.legend.title = title;
   o.caption = title;
-  viz::SceneViewData data;
+  SceneViewData data;
   data.scalar = r.F->row(r.sourceElement).transpose();
-  viz::writeSceneFigure(r.mesh, r.camera, data, o, path);
+  writeSceneFigure(r.mesh, r.camera, data, o, path);
 }
 
 // The element a Nusselt or rays view looks at: the first highlighted element other than the source, otherwise
@@ -68,14 +57,14 @@ int targetElement(const StepResult& r) {
   return static_cast<int>(best);
 }
 
-std::string renderView(View view, const lesson::Step& step, const StepResult& r, const FigureSettings& s,
+std::string renderView(View view, const lesson::Step& step, const StepResult& r, const StepFigureSettings& s,
                        const std::string& path) {
   const std::string from = "element " + std::to_string(r.sourceElement);
   switch (view) {
     case View::Scene:
     case View::Local: {
-      viz::SceneViewOptions o = sceneOptions(step, r, s);
-      viz::SceneViewData data;
+      SceneViewOptions o = sceneOptions(step, r, s);
+      SceneViewData data;
       if (view == View::Local) {
         data.B = r.local;
         o.caption = "Direct light + ambient term";
@@ -88,10 +77,10 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
         else
           o.caption = r.runs.empty() ? "Radiosity" : "Radiosity (" + r.runs.back().label + ")";
       } else {
-        o.colouring = viz::SceneColouring::Reflectance;
+        o.colouring = SceneColouring::Reflectance;
         o.caption = "Reflectance of the surfaces";
       }
-      viz::writeSceneFigure(r.mesh, r.camera, data, o, path);
+      writeSceneFigure(r.mesh, r.camera, data, o, path);
       return o.caption;
     }
     case View::FormFactor:
@@ -100,30 +89,29 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
     case View::Hemicube: {
       const int resolution = step.parameters.resolution.value_or(64);
       const HemicubeFaces faces = renderHemicube(r.mesh, r.sourceElement, resolution);
-      viz::HemicubeViewOptions o;
+      HemicubeViewOptions o;
       o.size = {s.width, s.height, 96.0};
-      viz::writeHemicubeFacesFigure(faces, r.mesh.size(), o, path);
+      writeHemicubeFacesFigure(faces, r.mesh.size(), o, path);
       return "The hemicube of " + from + " unfolded (" + std::to_string(resolution) +
              " pixels across the top face), each pixel coloured by the element it sees";
     }
     case View::Nusselt: {
       const int to = targetElement(r);
       const Element& e = r.mesh.elements[r.sourceElement];
-      const viz::NusseltConstruction construction =
-          viz::nusseltConstruction(e.centroid, e.normal, r.mesh.polygon(to));
-      viz::NusseltViewOptions o;
+      const NusseltConstruction construction = nusseltConstruction(e.centroid, e.normal, r.mesh.polygon(to));
+      NusseltViewOptions o;
       o.size = {s.width, s.height, 96.0};
-      viz::writeNusseltDiskFigure(construction, o, path);
+      writeNusseltDiskFigure(construction, o, path);
       return "Element " + std::to_string(to) + " projected onto the unit disk from the centre of " + from;
     }
     case View::Rays: {
       const int to = targetElement(r);
-      const viz::RaySample sample =
-          viz::sampleRays(r.mesh, r.sourceElement, to, std::min(step.parameters.samples.value_or(32), 256),
-                          step.parameters.seed.value_or(1));
-      viz::RaysViewOptions o;
+      const RaySample sample =
+          sampleRays(r.mesh, r.sourceElement, to, std::min(step.parameters.samples.value_or(32), 256),
+                     step.parameters.seed.value_or(1));
+      RaysViewOptions o;
       o.size = {s.width, s.height, 96.0};
-      viz::writeRaysFigure(r.mesh, r.camera, sample, o, path);
+      writeRaysFigure(r.mesh, r.camera, sample, o, path);
       return "Visibility rays from " + from + " to element " + std::to_string(to);
     }
     case View::Visibility:
@@ -131,18 +119,18 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
       return "What " + from + " sees, by the " + r.method + " method";
     case View::Matrix: {
       if (!r.F) throw std::runtime_error(path + ": the step computed no form factors");
-      viz::MatrixViewOptions o;
+      MatrixViewOptions o;
       o.size = {s.width, s.height, 96.0};
       o.title = "Form factors F_ij (" + r.method + ")";
       for (const auto& e : r.mesh.elements) o.groups.push_back(e.patch);
       o.selectedRow = r.sourceElement;
-      viz::writeMatrixFigure(Eigen::MatrixXd(*r.F), o, path);
+      writeMatrixFigure(Eigen::MatrixXd(*r.F), o, path);
       return "The form-factor matrix: row i is what element i sends to each element j";
     }
     case View::Convergence: {
-      std::vector<viz::Series> series;
+      std::vector<Series> series;
       for (const auto& run : r.runs) {
-        viz::Series line{run.label, {}, {}};
+        Series line{run.label, {}, {}};
         for (std::size_t k = 0; k < run.residuals.size(); ++k) {
           if (!(run.residuals[k] > 0)) continue;
           line.x.push_back(run.iteration[k]);
@@ -151,25 +139,25 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
         if (!line.x.empty()) series.push_back(line);
       }
       if (series.empty()) throw std::runtime_error(path + ": no convergence history to plot");
-      viz::ChartOptions o{"Convergence", "iteration", "relative residual", false, true, s.width, s.height};
-      viz::writeLineChart(series, o, path);
+      ChartOptions o{"Convergence", "iteration", "relative residual", false, true, s.width, s.height};
+      writeLineChart(series, o, path);
       return "Relative residual ||K B - E|| / ||E|| after each iteration";
     }
     case View::RuntimeError: {
-      std::vector<viz::Series> series;
+      std::vector<Series> series;
       for (const auto& point : r.benchmark) {
         if (series.empty() || series.back().name != point.method) series.push_back({point.method, {}, {}});
         series.back().x.push_back(std::max(point.seconds, 1e-6));
         series.back().y.push_back(std::max(point.error, 1e-16));
       }
-      viz::ChartOptions o{
+      ChartOptions o{
           "Run time against error", "seconds", "relative error of F", true, true, s.width, s.height};
-      viz::writeLineChart(series, o, path);
+      writeLineChart(series, o, path);
       return "Relative error of F against run time, reference: " + r.method;
     }
     case View::Error: {
-      viz::SceneViewOptions o = sceneOptions(step, r, s);
-      viz::SceneViewData data;
+      SceneViewOptions o = sceneOptions(step, r, s);
+      SceneViewData data;
       data.B = r.B;
       data.reference = r.reference;
       if (data.reference.rows() == 0 && r.variants.size() >= 2 &&
@@ -179,9 +167,9 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
       }
       if (data.reference.rows() != data.B.rows())
         throw std::runtime_error(path + ": no reference to compare with");
-      o.colouring = viz::SceneColouring::Error;
+      o.colouring = SceneColouring::Error;
       o.caption = "|B - B_reference|";
-      viz::writeSceneFigure(r.mesh, r.camera, data, o, path);
+      writeSceneFigure(r.mesh, r.camera, data, o, path);
       return "Difference from the reference solution";
     }
   }
@@ -189,25 +177,20 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
 }
 
 }  // namespace
-#endif
 
 std::vector<lesson::RenderedFigure> renderStepFigures(const lesson::Lesson& lesson, const lesson::Step& step,
                                                       const lesson::StepResult& result,
                                                       const std::string& dir,
-                                                      const FigureSettings& settings) {
+                                                      const StepFigureSettings& settings) {
   std::vector<lesson::RenderedFigure> figures;
   const auto files = step.figureFiles();
-#ifdef RT_HAVE_VIZ
   std::filesystem::create_directories(dir);
   for (std::size_t k = 0; k < files.size(); ++k) {
     const std::string path = (std::filesystem::path(dir) / files[k]).string();
     const std::string caption = renderView(step.views[k], step, result, settings, path);
     figures.push_back({lesson.id + "/" + files[k], caption});
   }
-#else
-  (void)lesson, (void)result, (void)dir, (void)settings, (void)files;
-#endif
   return figures;
 }
 
-}  // namespace rt::cli
+}  // namespace rt::viz
