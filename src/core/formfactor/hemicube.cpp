@@ -230,6 +230,9 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
         ea[k] = -(q.y() - p.y()) * orientation;
         eb[k] = (q.x() - p.x()) * orientation;
         ec[k] = -(ea[k] * p.x() + eb[k] * p.y());
+        // Clipping through a frustum corner can leave two vertices a rounding error apart: such an edge has
+        // no direction, and its half-plane (-rest / ea with ea ~ 1e-17) would empty whole rows at random.
+        if ((q - p).squaredNorm() < 1e-18) ea[k] = eb[k] = ec[k] = 0.0;
       }
       std::vector<double>& zbuffer = inverseDepth[f];
       for (int row = r0; row <= r1; ++row) {

@@ -2,7 +2,11 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <vector>
 
@@ -13,6 +17,7 @@ namespace {
 struct IgnoringContext {
   RTCIntersectContext base;
   const std::vector<int>* primitiveElement;
+  const std::vector<int>* elementPlane;
   int ignoreA, ignoreB;
 };
 
@@ -22,7 +27,18 @@ void ignoreOwnElements(const RTCFilterFunctionNArguments* args) {
     if (args->valid[k] == 0) continue;
     const unsigned primitive = RTCHitN_primID(args->hit, args->N, k);
     const int element = (*context->primitiveElement)[primitive];
-    if (element == context->ignoreA || element == context->ignoreB) args->valid[k] = 0;
+    if (element == context->ignoreA || element == context->ignoreB) {
+      args->valid[k] = 0;
+      continue;
+    }
+    // A segment meets the plane of an end point's element only at that end point (a line crosses a plane
+    // once), so a hit on another element of that plane is float rounding at the end: a ray grazing up a wall
+    // would otherwise "hit" the wall's next element, which can happen far from the end at grazing angles.
+    const std::vector<int>& plane = *context->elementPlane;
+    const int p = plane[static_cast<std::size_t>(element)];
+    if (p == plane[static_cast<std::size_t>(context->ignoreA)] ||
+        p == plane[static_cast<std::size_t>(context->ignoreB)])
+      args->valid[k] = 0;
   }
 }
 
@@ -33,6 +49,7 @@ struct RayScene::Impl {
   RTCScene scene = nullptr;
   std::vector<int> primitiveElement;  // triangle -> element
   std::vector<Vec3> normals;          // per element
+  std::vector<int> elementPlane;      // per element: elements in the same plane share the number
   float epsilon = 0;
 };
 
@@ -40,7 +57,12 @@ RayScene::RayScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
   Eigen::AlignedBox3d box;
   for (const Vec3& v : mesh.vertices) box.extend(v);
   size_ = box.isEmpty() ? 1.0 : std::max(box.diagonal().norm(), 1e-300);
-  impl_->epsilon = static_cast<float>(1e-6 * size_);
+  // A few float ulps at the largest coordinate: enough to keep the end points' rounding (Embree works in
+  // float) from hitting their neighbours, and far below the 1e-6-of-the-scene gaps that must stay visible.
+  double largest = 0;
+  for (const Vec3& v : mesh.vertices) largest = std::max(largest, v.cwiseAbs().maxCoeff());
+  impl_->epsilon =
+      static_cast<float>(4.0 * std::numeric_limits<float>::epsilon() * std::max(largest, 1e-3 * size_));
   impl_->device = rtcNewDevice(nullptr);
   if (!impl_->device) throw std::runtime_error("Embree: cannot create a device");
   impl_->scene = rtcNewScene(impl_->device);
@@ -66,6 +88,23 @@ RayScene::RayScene(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
     }
     impl_->normals.push_back(mesh.elements[e].normal);
   }
+  // Planes keyed by the unit normal and the offset relative to the scene size, rounded to 1e-9: coplanar
+  // elements of different patches (a wall cut into strips, the two faces of a thin plate) get one number.
+  std::map<std::array<long long, 4>, int> planes;
+  auto key = [](double x) { return std::llround(x * 1e9); };
+  for (const Element& e : mesh.elements) {
+    Vec3 n = e.normal.normalized();
+    // One sign per plane, so that the two faces of a two-sided wall (coincident, opposite normals) share it.
+    const Eigen::Index largest = [&n] {
+      Eigen::Index k;
+      n.cwiseAbs().maxCoeff(&k);
+      return k;
+    }();
+    if (n(largest) < 0) n = -n;
+    const double offset = n.dot(mesh.vertices[e.vertices[0]]) / size_;
+    const std::array<long long, 4> k{key(n.x()), key(n.y()), key(n.z()), key(offset)};
+    impl_->elementPlane.push_back(planes.emplace(k, static_cast<int>(planes.size())).first->second);
+  }
   rtcSetGeometryIntersectFilterFunction(geometry, ignoreOwnElements);
   rtcSetGeometryOccludedFilterFunction(geometry, ignoreOwnElements);
   rtcCommitGeometry(geometry);
@@ -86,6 +125,7 @@ bool RayScene::visible(const Vec3& from, const Vec3& to, int ignoreA, int ignore
   IgnoringContext context;
   rtcInitIntersectContext(&context.base);
   context.primitiveElement = &impl_->primitiveElement;
+  context.elementPlane = &impl_->elementPlane;
   context.ignoreA = ignoreA;
   context.ignoreB = ignoreB;
   RTCRay ray{};
@@ -110,6 +150,7 @@ RayHit RayScene::firstHit(const Vec3& origin, const Vec3& direction, int ignore)
   IgnoringContext context;
   rtcInitIntersectContext(&context.base);
   context.primitiveElement = &impl_->primitiveElement;
+  context.elementPlane = &impl_->elementPlane;
   context.ignoreA = ignore;
   context.ignoreB = ignore;
   RTCRayHit query{};
