@@ -31,16 +31,24 @@ void run(const MatrixArguments& a) {
   const Scene scene = loadSceneReportingWarnings(a.scene);
   const Mesh mesh = buildMesh(scene, a.mesh.options());
   const MatrixFormat format = matrixFormatFromPath(a.output);  // fail before the expensive part
+  const auto n = static_cast<int>(mesh.size());
+  const bool square = a.what == "F" || a.what == "K";
+  if (format == MatrixFormat::Latex && n > kMaxLatexSize) {  // before F is computed, not after
+    throw InputError({a.output, 0, {}},
+                     "LaTeX output is limited to " + std::to_string(kMaxLatexSize) + " x " +
+                         std::to_string(kMaxLatexSize) + " matrices, this one is " + std::to_string(n) +
+                         " x " + std::to_string(square ? n : 3) +
+                         "; use .csv, .mtx or .npy instead (or a coarser mesh, e.g. --no-subdivide)");
+  }
   ProgressLine progress;
   const FormFactorMatrix F = computeFormFactorsReporting(mesh, a.formFactors, FormFactorOptions{}, progress);
 
   const RadiositySystem system = RadiositySystem::fromMesh(mesh, F);
   const int c = channelIndex(a.channel);
   const Eigen::VectorXd rho = system.reflectance.col(c);
-  const std::size_t n = mesh.size();
 
   const SpectralRadiusEstimate radius = spectralRadius(F, rho);
-  std::printf("elements: %zu\n", n);
+  std::printf("elements: %d\n", n);
   std::printf("channel: %s\n", a.channel.c_str());
   std::printf("fill of F: %.4f (%s storage for K)\n", fillFraction(F),
               fillFraction(F) < kSparseFillThreshold ? "sparse" : "dense");

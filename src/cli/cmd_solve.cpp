@@ -1,13 +1,17 @@
 // radiosity solve: scene -> mesh -> form factors -> solver -> B.csv and/or an image.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <memory>
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/refine/refine.h"
+#include "core/solvers/row_providers.h"
+#include "core/solvers/shooting_solvers.h"
 #include "core/solvers/solver.h"
 #ifdef RT_HAVE_VIZ
 #include "viz/scene_image.h"
@@ -35,6 +39,9 @@ struct SolveArguments {
   bool edges = false;
   bool verbose = false;
   bool ambient = false;
+  // Shooting without the n x n matrix: each shooter's row of F is computed when it shoots.
+  bool noMatrix = false;
+  bool formFactorsGiven = false;
   MeshArguments mesh;
   // Refining meshers (docs/meshing.md): empty = the uniform mesh of MeshArguments.
   std::string refineMode;
@@ -89,19 +96,24 @@ void runRefined(const SolveArguments& a, const Scene& scene) {
   if (!a.image.empty()) writeImage(a, scene, solution.mesh, solution.B);
 }
 
-void run(const SolveArguments& a) {
-  const Scene scene = loadSceneReportingWarnings(a.scene);
-  if (!a.refineMode.empty()) return runRefined(a, scene);
-  const Mesh mesh = buildMesh(scene, a.mesh.options());
-  ProgressLine progress(!a.verbose);
+// Status check and outputs shared by both ways of solving.
+void finish(const SolveArguments& a, const Scene& scene, const Mesh& mesh, const Solver& solver,
+            const RgbField& B) {
+  if (solver.info() == SolverStatus::NoConvergence)
+    std::cerr << "warning: not converged: the iteration cap (--max-iterations " << a.maxIterations
+              << ") was reached with relative residual " << solver.error() << "\n";
+  if (solver.info() != SolverStatus::Success && solver.info() != SolverStatus::NoConvergence)
+    throw std::runtime_error("the solver failed: " + toString(solver.info()));
+  if (!a.output.empty()) {
+    writeRadiosityCsv(scene, mesh, B, a.output);
+    std::cerr << "radiosity written to " << a.output << "\n";
+  }
+  if (!a.image.empty()) writeImage(a, scene, mesh, B);
+}
 
-  FormFactorOptions ffOptions;
-  ffOptions.hemicubeResolution = a.resolution;
-  ffOptions.samples = a.samples;
-  ffOptions.seed = a.seed;
-  const FormFactorMatrix F = computeFormFactorsReporting(mesh, a.formFactors, ffOptions, progress);
-
-  const std::string solverName = a.solver.empty() ? chooseSolver(mesh.size()) : a.solver;
+// The solver the arguments name, with its options and a verbose or progress-line observer.
+std::unique_ptr<Solver> makeConfiguredSolver(const SolveArguments& a, const std::string& solverName,
+                                             ProgressLine& progress) {
   auto solver = makeSolver(solverName);
   SolverOptions options;
   options.tolerance = a.tolerance;
@@ -111,7 +123,7 @@ void run(const SolveArguments& a) {
   options.recordHistory = false;
   solver->setOptions(options);
   solver->setProgress(&progress);
-  solver->setObserver([&](const IterationRecord& r) {
+  solver->setObserver([&a, &progress, solverName](const IterationRecord& r) {
     if (a.verbose) {
       std::fprintf(stderr, "iteration %d: residual %.6e, unshot power %.6e%s\n", r.iteration, r.residual,
                    r.unshotPower, r.shooter >= 0 ? (", shooter " + std::to_string(r.shooter)).c_str() : "");
@@ -120,20 +132,70 @@ void run(const SolveArguments& a) {
                       "solve (" + solverName + ")");
     }
   });
-  const RadiositySystem system = RadiositySystem::fromMesh(mesh, F);
+  return solver;
+}
+
+// --no-matrix: the shooting solvers ask for the shooter's row of F when it shoots; nothing n x n is stored.
+const char* noMatrixProblem(const std::string& solverName, const std::string& formFactors) {
+  if (solverName != "southwell" && solverName != "progressive")
+    return "--no-matrix needs a shooting method: --method southwell or --method progressive";
+  const auto methods = rowProviderMethods();
+  if (std::find(methods.begin(), methods.end(), formFactors) == methods.end())
+    return "--no-matrix computes rows at the shooter: --formfactors hemicube or --formfactors raycast";
+  return nullptr;
+}
+
+void run(const SolveArguments& a) {
+  const Scene scene = loadSceneReportingWarnings(a.scene);
+  if (!a.refineMode.empty()) return runRefined(a, scene);
+  const std::string solverName = !a.solver.empty() ? a.solver
+                                 : a.noMatrix      ? std::string("southwell")
+                                                   : std::string();
+  const std::string formFactors = a.noMatrix && !a.formFactorsGiven ? std::string("hemicube") : a.formFactors;
+  if (!solverName.empty()) makeSolver(solverName);  // an unknown name fails before the expensive part
+  if (a.noMatrix)
+    if (const char* problem = noMatrixProblem(solverName, formFactors)) throw std::runtime_error(problem);
+  const Mesh mesh = buildMesh(scene, a.mesh.options());
+  ProgressLine progress(!a.verbose);
+
+  FormFactorOptions ffOptions;
+  ffOptions.hemicubeResolution = a.resolution;
+  ffOptions.samples = a.samples;
+  ffOptions.seed = a.seed;
+  FormFactorMatrix F;
+  RadiositySystem system;
+  if (a.noMatrix) {
+    system.reflectance = mesh.reflectance;
+    system.emission = mesh.emission;
+    system.areas = mesh.areas();
+    std::cerr << "form factors (" << formFactors << "): one row per shot, no matrix stored\n";
+  } else {
+    F = computeFormFactorsReporting(mesh, formFactors, ffOptions, progress);
+    system = RadiositySystem::fromMesh(mesh, F);
+  }
+
+  const std::string name = solverName.empty() ? chooseSolver(mesh.size()) : solverName;
+  auto solver = makeConfiguredSolver(a, name, progress);
+  if (a.noMatrix) {
+    std::size_t rows = 0;
+    const FormFactorRowProvider provider = makeRowProvider(formFactors, mesh, ffOptions);
+    dynamic_cast<ShootingSolver&>(*solver).setRowProvider([&rows, provider](int i, Eigen::VectorXd& row) {
+      ++rows;
+      provider(i, row);
+    });
+    const RgbField B = solver->compute(system).solve();
+    progress.finish();
+    std::cerr << "solve (" << name << ", rows on demand): " << toString(solver->info()) << " after "
+              << solver->iterations() << " shots, " << rows << " rows computed, unshot residual "
+              << solver->error() << "\n";
+    finish(a, scene, mesh, *solver, B);
+    return;
+  }
   const RgbField B = solver->compute(system).solve();
   progress.finish();
-  std::cerr << "solve (" << solverName << "): " << toString(solver->info()) << " after "
-            << solver->iterations() << " iterations, relative residual " << system.relativeResidual(B)
-            << "\n";
-  if (solver->info() != SolverStatus::Success && solver->info() != SolverStatus::NoConvergence)
-    throw std::runtime_error("the solver failed: " + toString(solver->info()));
-
-  if (!a.output.empty()) {
-    writeRadiosityCsv(scene, mesh, B, a.output);
-    std::cerr << "radiosity written to " << a.output << "\n";
-  }
-  if (!a.image.empty()) writeImage(a, scene, mesh, B);
+  std::cerr << "solve (" << name << "): " << toString(solver->info()) << " after " << solver->iterations()
+            << " iterations, relative residual " << system.relativeResidual(B) << "\n";
+  finish(a, scene, mesh, *solver, B);
 }
 
 }  // namespace
@@ -147,9 +209,10 @@ void addSolveCommand(CLI::App& app) {
       "--method", a->solver,
       "Solver: direct, jacobi, gauss-seidel, southwell, progressive, bounces, stochastic-jacobi, "
       "random-walk (default: direct for small scenes, gauss-seidel otherwise)");
-  command
-      ->add_option("--formfactors", a->formFactors, "Form-factor method (see `radiosity formfactors --help`)")
-      ->capture_default_str();
+  auto* formFactors = command
+                          ->add_option("--formfactors", a->formFactors,
+                                       "Form-factor method (see `radiosity formfactors --help`)")
+                          ->capture_default_str();
   command->add_option("--tolerance", a->tolerance, "Relative residual (or unshot power) to stop at")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
@@ -159,6 +222,9 @@ void addSolveCommand(CLI::App& app) {
   command->add_option("--samples", a->samples, "Ray-cast samples per pair / Monte Carlo rays")
       ->capture_default_str();
   command->add_flag("--ambient", a->ambient, "progressive: show B plus the ambient term");
+  command->add_flag("--no-matrix", a->noMatrix,
+                    "southwell/progressive: compute each shooter's row of F when it shoots (--formfactors "
+                    "hemicube, the default here, or raycast) instead of storing the n x n matrix");
   a->mesh.add(*command);
   command->add_option("--output", a->output,
                       "Write B per element as CSV (element,patch,surface,area,B_r,B_g,B_b)");
@@ -189,7 +255,10 @@ void addSolveCommand(CLI::App& app) {
   command->add_option("--rays", a->refine.visibilitySamples, "--mesh: visibility rays per pair or link")
       ->capture_default_str();
   command->add_flag("--verbose", a->verbose, "One line per iteration instead of a progress line");
-  command->callback([a] { run(*a); });
+  command->callback([a, formFactors] {
+    a->formFactorsGiven = formFactors->count() > 0;
+    run(*a);
+  });
 }
 
 }  // namespace rt::cli

@@ -14,9 +14,8 @@ double fillFraction(const FormFactorMatrix& F) {
 }
 
 Eigen::MatrixXd assembleDense(const FormFactorMatrix& F, const Eigen::VectorXd& rho) {
-  Eigen::MatrixXd K = -(rho.asDiagonal() * F);
-  K.diagonal().array() += 1.0;
-  return K;
+  // I - rho F rather than -(rho F) + I: zeros stay +0 (no "-0" in exported matrices).
+  return Eigen::MatrixXd::Identity(F.rows(), F.cols()) - rho.asDiagonal() * F;
 }
 
 SparseRowMatrix assembleSparse(const FormFactorMatrix& F, const Eigen::VectorXd& rho) {
@@ -61,6 +60,18 @@ SpectralRadiusEstimate spectralRadius(const FormFactorMatrix& F, const Eigen::Ve
   }
   // A positive start vector has a component along the (non-negative) Perron vector.
   Eigen::VectorXd x = Eigen::VectorXd::Ones(n) / std::sqrt(static_cast<double>(n));
+  // Nilpotent M (light that dies out after a few bounces: an open scene whose emitters reflect nothing) has
+  // radius 0, which power iteration on M + I only approaches like 1/k. For M >= 0 and x > 0, M^k x = 0 exactly
+  // when M^k = 0, so a few plain products detect it (chains of up to 64 bounces).
+  Eigen::VectorXd z = x;
+  for (Eigen::Index k = 0; k < std::min<Eigen::Index>(n, 64); ++k) {
+    z = rho.cwiseProduct(F * z);
+    if (z.isZero(0.0)) {
+      e.converged = true;
+      e.iterations = static_cast<int>(k + 1);
+      return e;
+    }
+  }
   double previous = std::numeric_limits<double>::infinity();
   for (int k = 1; k <= maxIterations; ++k) {
     const Eigen::VectorXd y = rho.cwiseProduct(F * x) + x;  // (M + I) x

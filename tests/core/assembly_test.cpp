@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <Eigen/Eigenvalues>
 
 #include "support/test_systems.h"
@@ -80,6 +82,20 @@ TEST(Assembly, ConditionNumberLimits) {
       conditionNumber(Eigen::MatrixXd::Identity(kMaxConditionSize + 1, kMaxConditionSize + 1)).has_value());
   EXPECT_TRUE(std::isinf(*conditionNumber(Eigen::MatrixXd::Zero(3, 3))));
   EXPECT_DOUBLE_EQ(*conditionNumber(Eigen::MatrixXd::Identity(4, 4)), 1.0);
+}
+
+TEST(Assembly, NilpotentRhoFHasSpectralRadiusZeroAndKHasNoNegativeZeros) {
+  // A black emitter lighting a grey receiver: rho F = [0 0; a 0], (rho F)^2 = 0.
+  FormFactorMatrix F(2, 2);
+  F << 0, 0.2, 0.2, 0;
+  const Eigen::Vector2d rho(0.0, 0.5);
+  const SpectralRadiusEstimate radius = spectralRadius(F, rho);
+  EXPECT_TRUE(radius.converged);
+  EXPECT_EQ(radius.value, 0.0);
+  EXPECT_EQ(radius.iterations, 2);
+  const Eigen::MatrixXd K = assembleDense(F, rho);
+  EXPECT_FALSE(std::signbit(K(0, 1)));  // 1 - 0 * 0.2 is +0, printed "0", not "-0"
+  EXPECT_DOUBLE_EQ(K(1, 0), -0.1);
 }
 
 }  // namespace
