@@ -11,14 +11,17 @@
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/formfactor/hemicube.h"
+#include "core/refine/refine.h"
 #include "core/solvers/solver.h"
 #ifdef RT_HAVE_VIZ
 #include "viz/chart.h"
 #include "viz/hemicube_view.h"
 #include "viz/matrix_view.h"
+#include "viz/meshing_view.h"
 #include "viz/nusselt_view.h"
 #include "viz/rays_view.h"
 #include "viz/scene_view.h"
+#include "viz/timing_table.h"
 #include "viz/visibility_view.h"
 #endif
 #if defined(RT_HAVE_VIZ) && defined(RT_HAVE_EXACT)
@@ -36,13 +39,17 @@ struct FigureArguments {
   std::string formFactors = "analytic", referenceFormFactors, solver;
   int resolution = 128, samples = 16, maxIterations = 0;
   // scene view
-  std::string colour = "radiosity", toneMap = "linear", colourMap = "viridis";
+  std::string colour = "radiosity", toneMap = "linear", colourMap = "viridis", errorMeasure = "relative";
   double exposure = 0;
   bool smooth = false, edges = false, noGamma = false, logScale = false, noColourBar = false;
   // element choice and the other views
   int element = -1, target = -1, row = -1, column = -1, channel = 1;
   std::string matrix = "F", part = "auto", xAxis = "iteration";
   std::vector<std::string> solvers;
+  std::string input;  // runtime-error: a timing table measured earlier
+  // Meshes that follow the light: scene (--mesh), links (hierarchical), discontinuity.
+  std::string refineMode, linkColour = "level";
+  RefineOptions refine;
 };
 
 #ifdef RT_HAVE_VIZ
@@ -122,10 +129,31 @@ viz::SceneViewOptions sceneOptions(const FigureArguments& a) {
   return o;
 }
 
+RefinedSolution refined(const Computed& c, const FigureArguments& a, RefineMode mode) {
+  RefineOptions options = a.refine;
+  options.mode = mode;
+  ProgressLine progress;
+  RefinedSolution solution = solveRefined(c.scene, options, progress);
+  progress.finish();
+  std::cerr << "mesh: " << solution.stats.summary() << "\n";
+  return solution;
+}
+
 void sceneFigure(const Computed& c, const FigureArguments& a, CLI::App& command) {
   viz::SceneViewOptions o = sceneOptions(a);
   o.colouring = viz::sceneColouringFromName(a.colour);
+  o.errorMeasure = viz::errorMeasureFromName(a.errorMeasure);
   viz::SceneViewData data;
+  if (!a.refineMode.empty()) {
+    // The mesh a refining solver made, with its own radiosity (form factors and solver are its own).
+    if (o.colouring == viz::SceneColouring::Error || o.colouring == viz::SceneColouring::UnshotPower)
+      throw std::invalid_argument("--mesh shows radiosity, reflectance, emission or element colours");
+    const RefinedSolution s = refined(c, a, refineModeFromString(a.refineMode));
+    data.B = s.B;
+    if (o.caption.empty()) o.caption = a.refineMode + " mesh: " + std::to_string(s.mesh.size()) + " elements";
+    viz::writeSceneFigure(s.mesh, c.scene.cameraOrDefault(), data, o, a.output);
+    return;
+  }
   const bool needsB = o.colouring == viz::SceneColouring::Radiosity ||
                       o.colouring == viz::SceneColouring::Error ||
                       o.colouring == viz::SceneColouring::UnshotPower;
@@ -151,7 +179,8 @@ void sceneFigure(const Computed& c, const FigureArguments& a, CLI::App& command)
       const FormFactorMatrix Fref = refName == a.formFactors ? F : formFactors(c.mesh, refName, a);
       const RadiositySystem refSystem = RadiositySystem::fromMesh(c.mesh, Fref);
       runSolver("direct", refSystem, 0, 1e-12, data.reference);
-      o.caption = "error: " + solver +
+      o.caption = std::string(o.errorMeasure == viz::ErrorMeasure::Relative ? "relative " : "") +
+                  "error: " + solver +
                   (iterations > 0 ? ", " + std::to_string(iterations) + " iterations" : "") +
                   (refName == a.formFactors ? "" : ", " + a.formFactors + " F") + " vs direct" +
                   (refName == a.formFactors ? "" : ", " + refName + " F");
@@ -330,6 +359,44 @@ void visibilityFigure(const Computed& c, const FigureArguments& a) {
 #endif
 }
 
+void linksFigure(const Computed& c, const FigureArguments& a) {
+  const RefinedSolution s = refined(c, a, RefineMode::Hierarchical);
+  viz::LinksViewOptions o;
+  o.size = {a.width, a.height, a.dpi};
+  o.colouring = viz::linkColouringFromName(a.linkColour);
+  o.map = viz::colourMapFromName(a.colourMap);
+  if (a.element >= static_cast<int>(s.mesh.size()))
+    throw std::invalid_argument("--element " + std::to_string(a.element) + " is outside the " +
+                                std::to_string(s.mesh.size()) + " leaves of the hierarchy");
+  o.element = a.element;
+  viz::writeLinksFigure(s, c.scene.cameraOrDefault(), o, a.output);
+}
+
+void discontinuityFigure(const Computed& c, const FigureArguments& a) {
+  const RefinedSolution s = refined(c, a, RefineMode::Discontinuity);
+  viz::DiscontinuityViewOptions o;
+  o.size = {a.width, a.height, a.dpi};
+  o.image = sceneOptions(a).image;
+  const viz::CriticalLineCounts counts = viz::countCriticalLines(s);
+  std::cerr << "discontinuity: " << counts.extremal << " umbra/penumbra boundaries, " << counts.interior
+            << " lines inside penumbrae\n";
+  viz::writeDiscontinuityFigure(s, c.scene.cameraOrDefault(), o, a.output);
+}
+
+// Run time against error from a table measured earlier (bench formfactors or bench solvers CSV).
+void timingTableFigure(const FigureArguments& a) {
+  const viz::TimingTable table = viz::readTimingTable(a.input);
+  viz::ChartOptions o;
+  o.width = a.width;
+  o.height = a.height;
+  o.dpi = a.dpi;
+  o.logX = o.logY = true;
+  o.title = "Run time against error";
+  o.xLabel = "time (s)";
+  o.yLabel = table.errorColumn == "rms_error" ? "RMS error of F" : table.errorColumn;
+  viz::writeLineChart(table.series, o, a.output);
+}
+
 void chartFigure(const Computed& c, const FigureArguments& a) {
   const FormFactorMatrix F = formFactors(c.mesh, a.formFactors, a);
   const RadiositySystem system = RadiositySystem::fromMesh(c.mesh, F);
@@ -381,11 +448,20 @@ void chartFigure(const Computed& c, const FigureArguments& a) {
 
 void run(const FigureArguments& a, CLI::App& command) {
   viz::figureFormatOf(a.output);  // reject an unknown extension before any computation
+  if (!a.input.empty()) {
+    if (a.view != "runtime-error") throw std::invalid_argument("--input belongs to the runtime-error view");
+    timingTableFigure(a);
+    std::cerr << "figure written to " << a.output << "\n";
+    return;
+  }
   Computed c;
   c.scene = loadSceneReportingWarnings(a.scene);
   c.mesh = buildMesh(c.scene, a.mesh.options());
-  for (auto [value, name] :
-       {std::pair{a.element, "--element"}, {a.target, "--target"}, {a.row, "--row"}, {a.column, "--column"}})
+  const bool refinedView = a.view == "links" || a.view == "discontinuity";
+  for (auto [value, name] : {std::pair{refinedView ? -1 : a.element, "--element"},
+                             {a.target, "--target"},
+                             {a.row, "--row"},
+                             {a.column, "--column"}})
     checkElement(value, c.mesh, name);
   if (a.view == "scene")
     sceneFigure(c, a, command);
@@ -401,6 +477,10 @@ void run(const FigureArguments& a, CLI::App& command) {
     raysFigure(c, a, command);
   else if (a.view == "visibility")
     visibilityFigure(c, a);
+  else if (a.view == "links")
+    linksFigure(c, a);
+  else if (a.view == "discontinuity")
+    discontinuityFigure(c, a);
   else if (a.view == "convergence" || a.view == "runtime-error" || a.view == "energy")
     chartFigure(c, a);
   else
@@ -419,10 +499,10 @@ void addFigureCommand(CLI::App& app) {
   command
       ->add_option("--view", a->view,
                    "scene, formfactor, hemicube, nusselt, rays, matrix, convergence, runtime-error, energy, "
-                   "visibility")
+                   "visibility, links, discontinuity")
       ->capture_default_str()
       ->check(CLI::IsMember({"scene", "formfactor", "hemicube", "nusselt", "rays", "matrix", "convergence",
-                             "runtime-error", "energy", "visibility"}));
+                             "runtime-error", "energy", "visibility", "links", "discontinuity"}));
   command->add_option("--output", a->output, "Figure file: .png, .svg or .pdf")->required();
   command->add_option("--width", a->width, "Width in pixels")
       ->capture_default_str()
@@ -451,6 +531,11 @@ void addFigureCommand(CLI::App& app) {
       ->add_option("--colour", a->colour,
                    "scene: radiosity, reflectance, emission, element, unshot, error; hemicube: items, delta")
       ->capture_default_str();
+  command
+      ->add_option("--error", a->errorMeasure,
+                   "scene --colour error: relative (|B - B_ref| / B_ref) or absolute (W/m^2)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"relative", "absolute"}));
   command->add_option("--tone-map", a->toneMap, "linear or reinhard")
       ->capture_default_str()
       ->check(CLI::IsMember({"linear", "reinhard"}));
@@ -475,6 +560,24 @@ void addFigureCommand(CLI::App& app) {
           "--part", a->part,
           "nusselt: disk or hemisphere (auto: hemisphere for PNG); hemicube: faces or 3d (auto: faces)")
       ->capture_default_str();
+  command->add_option(
+      "--input", a->input,
+      "runtime-error: draw this CSV of `bench formfactors` or `bench solvers` instead of timing "
+      "the solvers now");
+  command
+      ->add_option("--mesh", a->refineMode,
+                   "scene: the mesh of a refining solver (uniform, adaptive, discontinuity, hierarchical)")
+      ->check(CLI::IsMember({"uniform", "adaptive", "discontinuity", "hierarchical"}));
+  command->add_option("--link-colour", a->linkColour, "links: level or formfactor")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"level", "formfactor"}));
+  command
+      ->add_option("--link-tolerance", a->refine.linkTolerance, "links, --mesh hierarchical: link threshold")
+      ->capture_default_str();
+  command->add_option("--max-elements", a->refine.maxElements, "--mesh adaptive: element budget")
+      ->capture_default_str();
+  command->add_option("--initial-edge", a->refine.initialMaxEdge,
+                      "links, discontinuity, --mesh: starting max edge (0 = diagonal / 5)");
   command->add_option("--x", a->xAxis, "convergence: iteration or time")
       ->capture_default_str()
       ->check(CLI::IsMember({"iteration", "time"}));

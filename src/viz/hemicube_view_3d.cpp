@@ -54,6 +54,7 @@ void writeHemicube3dFigure(const Mesh& mesh, const HemicubeFaces& faces, const H
   actors->InitTraversal();
   while (vtkActor* actor = actors->GetNextActor()) actor->GetProperty()->SetOpacity(0.25);
   window->AddRenderer(renderer);
+  enableDepthPeeling(window, renderer);  // the faint room and the cube overlap
   renderer->AddActor(polygonActor(mesh.polygon(faces.element), {0.337, 0.706, 0.914}, 1.0));
 
   auto points = vtkSmartPointer<vtkPoints>::New();

@@ -168,9 +168,9 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
       if (data.reference.rows() != data.B.rows())
         throw std::runtime_error(path + ": no reference to compare with");
       o.colouring = SceneColouring::Error;
-      o.caption = "|B - B_reference|";
+      o.caption = "|B - B_reference| / B_reference";
       writeSceneFigure(r.mesh, r.camera, data, o, path);
-      return "Difference from the reference solution";
+      return "Difference from the reference solution, relative to it";
     }
   }
   return "";

@@ -23,6 +23,7 @@ void writeNusseltHemisphereFigure(const NusseltConstruction& c, const NusseltVie
   renderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
   renderer->UseFXAAOn();
   window->AddRenderer(renderer);
+  enableDepthPeeling(window, renderer);  // the glass hemisphere in front of the disk and the projections
 
   // The unit hemisphere is drawn at a radius that suits the scene: half the distance to the receiver.
   Vec3 receiverCentre = Vec3::Zero();

@@ -74,6 +74,7 @@ void writeRaysFigure(const Mesh& mesh, const Camera& camera, const RaySample& sa
   actors->InitTraversal();
   while (vtkActor* actor = actors->GetNextActor()) actor->GetProperty()->SetOpacity(0.3);
   window->AddRenderer(renderer);
+  enableDepthPeeling(window, renderer);  // the faint room around the rays
 
   const Colour sky{0.337, 0.706, 0.914}, orange{0.902, 0.624, 0.0}, green{0.0, 0.62, 0.451},
       vermillion{0.835, 0.369, 0.0};

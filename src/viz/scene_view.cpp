@@ -48,12 +48,12 @@ double normalised(double v, const ScalarLegend& legend) {
   return (v - legend.min) / (legend.max - legend.min);
 }
 
-std::string defaultTitle(SceneColouring colouring) {
+std::string defaultTitle(SceneColouring colouring, ErrorMeasure measure) {
   switch (colouring) {
     case SceneColouring::UnshotPower:
       return "unshot\npower (W)";
     case SceneColouring::Error:
-      return "|B - B_ref|\n(W/m^2)";
+      return measure == ErrorMeasure::Relative ? "|B - B_ref|\n/ B_ref" : "|B - B_ref|\n(W/m^2)";
     default:
       return "value";
   }
@@ -105,6 +105,19 @@ Eigen::VectorXd absoluteError(const RgbField& B, const RgbField& reference) {
   return (B - reference).cwiseAbs().rowwise().mean();
 }
 
+Eigen::VectorXd relativeError(const RgbField& B, const RgbField& reference) {
+  const Eigen::VectorXd difference = absoluteError(B, reference);
+  const Eigen::VectorXd scale = reference.cwiseAbs().rowwise().mean();
+  const double floor = std::max(1e-3 * (scale.size() > 0 ? scale.mean() : 0.0), 1e-300);
+  return difference.array() / scale.array().max(floor);
+}
+
+ErrorMeasure errorMeasureFromName(const std::string& name) {
+  if (name == "relative") return ErrorMeasure::Relative;
+  if (name == "absolute") return ErrorMeasure::Absolute;
+  throw std::invalid_argument("unknown error measure '" + name + "' (relative, absolute)");
+}
+
 ScenePaint paintScene(const Mesh& mesh, const SceneViewData& data, const SceneViewOptions& options) {
   ScenePaint paint;
   paint.highlightElement = options.highlightElement;
@@ -147,7 +160,8 @@ ScenePaint paintScene(const Mesh& mesh, const SceneViewData& data, const SceneVi
     case SceneColouring::Error:
       requireRows(data.B, mesh, "the radiosity");
       requireRows(data.reference, mesh, "the reference radiosity");
-      scalar = absoluteError(data.B, data.reference);
+      scalar = options.errorMeasure == ErrorMeasure::Relative ? relativeError(data.B, data.reference)
+                                                              : absoluteError(data.B, data.reference);
       break;
     case SceneColouring::Scalar:
       if (static_cast<std::size_t>(data.scalar.size()) != mesh.size())
@@ -157,7 +171,7 @@ ScenePaint paintScene(const Mesh& mesh, const SceneViewData& data, const SceneVi
       break;
   }
   ScalarLegend legend = options.legend;
-  if (legend.title.empty()) legend.title = defaultTitle(options.colouring);
+  if (legend.title.empty()) legend.title = defaultTitle(options.colouring, options.errorMeasure);
   paint.legend = resolveLegend(legend, scalar);
   paint.colourBar = options.colourBar;
   RgbField broadcast = scalar.replicate(1, 3);

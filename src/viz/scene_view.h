@@ -22,6 +22,12 @@ enum class SceneColouring { Radiosity, Reflectance, Emission, ElementId, UnshotP
 SceneColouring sceneColouringFromName(const std::string& name);
 std::string toString(SceneColouring colouring);
 
+// How the Error colouring measures the difference to the reference. Relative is the default: an absolute
+// error of 1 W/m^2 is large in a shadow and invisible next to the light, and the eye judges ratios.
+enum class ErrorMeasure { Relative, Absolute };
+// "relative", "absolute"; throws std::invalid_argument.
+ErrorMeasure errorMeasureFromName(const std::string& name);
+
 // How a scalar field is mapped to colour and labelled on its colour bar. Non-finite limits: from the data.
 struct ScalarLegend {
   std::string title;
@@ -41,6 +47,7 @@ struct SceneViewData {
 
 struct SceneViewOptions {
   SceneColouring colouring = SceneColouring::Radiosity;
+  ErrorMeasure errorMeasure = ErrorMeasure::Relative;  // Error colouring
   ImageOptions image;   // size, exposure, tone map, gamma, smooth (per-vertex) shading, mesh edges
   ScalarLegend legend;  // scalar colourings (a title is chosen when empty)
   bool colourBar = true;
@@ -66,6 +73,10 @@ Eigen::VectorXd unshotPower(const Mesh& mesh,
                             const RgbField& unshot);  // mean over channels of unshot_i A_i (W)
 Eigen::VectorXd absoluteError(const RgbField& B,
                               const RgbField& reference);  // mean over channels of |B - B_ref|
+// Mean over channels of |B - B_ref| divided by the mean over channels of B_ref. References at or near zero
+// (an unlit element) would divide by zero: the denominator is at least 1e-3 x the area-free mean of the
+// reference over all elements, so such elements show a large but finite error.
+Eigen::VectorXd relativeError(const RgbField& B, const RgbField& reference);
 
 // Renders the view and writes PNG, or PDF/SVG embedding the rendered image. Throws std::runtime_error on
 // failure and std::invalid_argument when the data does not fit the mesh.

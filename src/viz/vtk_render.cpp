@@ -93,6 +93,14 @@ vtkSmartPointer<vtkRenderWindow> makeOffscreenWindow(int width, int height) {
   return window;
 }
 
+void enableDepthPeeling(vtkRenderWindow* window, vtkRenderer* renderer) {
+  window->SetAlphaBitPlanes(1);
+  window->SetMultiSamples(0);
+  renderer->SetUseDepthPeeling(1);
+  renderer->SetMaximumNumberOfPeels(12);
+  renderer->SetOcclusionRatio(0.0);  // exact: peel until no fragment is left (bounded by the peel count)
+}
+
 std::vector<unsigned char> captureRgb(vtkRenderWindow* window, int& width, int& height) {
   vtkSmartPointer<vtkImageData> image = grab(window);
   int dims[3];

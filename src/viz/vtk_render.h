@@ -27,6 +27,11 @@ inline constexpr double kBackground[3] = {0.32, 0.32, 0.34};
 // An offscreen window of the given pixel size (needs an X server: Xvfb in tests and scripts).
 vtkSmartPointer<vtkRenderWindow> makeOffscreenWindow(int width, int height);
 
+// Translucent surfaces drawn in the order of their actors look wrong where they overlap (a far face painted
+// over a near one). Depth peeling sorts the fragments per pixel; it needs alpha bit planes and no
+// multisampling. Call after the renderer is added to the window.
+void enableDepthPeeling(vtkRenderWindow* window, vtkRenderer* renderer);
+
 // Renders the window and reads its RGB pixels (bottom row first).
 std::vector<unsigned char> captureRgb(vtkRenderWindow* window, int& width, int& height);
 
