@@ -6,6 +6,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include <QApplication>
+#include <QFile>
+#include <QSettings>
 #include <QStandardPaths>
 #include <cstdlib>
 #include <cstring>
@@ -54,10 +56,13 @@ int main(int argc, char** argv) {
   }
   rt::app::VtkWidget::setDefaultSurfaceFormat();
   QApplication app(argc, argv);
-  // Settings (the remembered position) go to a test location, never the user's.
+  // Settings (the remembered position) go to a test location, never the user's, and one file per process:
+  // ctest runs the tests of this binary as concurrent processes, which must not see each other's position.
   QStandardPaths::setTestModeEnabled(true);
   QApplication::setOrganizationName("RadiosityTextbookTests");
-  QApplication::setApplicationName("app_tests");
+  QApplication::setApplicationName(QString("app_tests-%1").arg(QApplication::applicationPid()));
   rt::app::test::installWarningCollector();
-  return RUN_ALL_TESTS();
+  const int status = RUN_ALL_TESTS();
+  QFile::remove(QSettings().fileName());
+  return status;
 }

@@ -1,21 +1,36 @@
 #include "support/test_paths.h"
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 namespace rt::test {
 
-std::string sourcePath(const std::string& relative) { return std::string(RT_SOURCE_DIR) + "/" + relative; }
-std::string sharedPath(const std::string& relative) { return std::string(RT_SHARED_DIR) + "/" + relative; }
-std::string binaryPath(const std::string& relative) { return std::string(RT_BINARY_DIR) + "/" + relative; }
-std::string cliPath() { return RT_CLI_PATH; }
-bool sharedAvailable() { return std::filesystem::exists(sharedPath("refdata/formfactors.json")); }
+std::string sourcePath(const std::string& relative) {
+  return std::string(RT_SOURCE_DIR) + "/" + relative;
+}
+std::string sharedPath(const std::string& relative) {
+  return std::string(RT_SHARED_DIR) + "/" + relative;
+}
+std::string binaryPath(const std::string& relative) {
+  return std::string(RT_BINARY_DIR) + "/" + relative;
+}
+std::string cliPath() {
+  return RT_CLI_PATH;
+}
+bool sharedAvailable() {
+  return std::filesystem::exists(sharedPath("refdata/formfactors.json"));
+}
 
 std::string scratchDir(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(RT_BINARY_DIR) / "test-output" / name;
+  // The process id keeps concurrent test processes (ctest -j runs each test of a binary as its own process)
+  // from emptying each other's folders.
+  const std::filesystem::path dir =
+      std::filesystem::path(RT_BINARY_DIR) / "test-output" / (name + "-" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
