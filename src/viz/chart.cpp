@@ -94,7 +94,10 @@ void writeLineChart(const std::vector<Series>& series, const ChartOptions& optio
   chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
   chart->GetLegend()->SetLabelSize(static_cast<int>(fontSize * 0.85));
   chart->GetLegend()->GetLabelProperties()->SetColor(0.05, 0.05, 0.05);
-  writeContextView(view, path);
+  std::string description = "x: " + options.xLabel + "; y: " + options.yLabel + "; series:";
+  for (const Series& s : series) description += " " + s.name + ",";
+  description.pop_back();
+  writeContextView(view, path, options.title, description);
 }
 
 }  // namespace rt::viz

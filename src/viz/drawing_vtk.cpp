@@ -127,7 +127,14 @@ void writeDrawing(const Drawing& drawing, const std::string& path) {
   auto item = vtkSmartPointer<DrawingItem>::New();
   item->setDrawing(drawing);
   view->GetScene()->AddItem(item);
-  writeContextView(view, path);
+  // The figure's words, in drawing order (the first is its title where it has one).
+  std::string title, words;
+  for (const Drawing::Shape& shape : drawing.shapes) {
+    if (shape.kind != Drawing::Kind::Text || shape.text.empty()) continue;
+    if (title.empty()) title = shape.text;
+    words += (words.empty() ? "" : " | ") + shape.text;
+  }
+  writeContextView(view, path, title, words);
 }
 
 }  // namespace rt::viz

@@ -104,7 +104,8 @@ void writeHemicube3dFigure(const Mesh& mesh, const HemicubeFaces& faces, const H
   if (caption.empty())
     caption =
         "hemicube over element " + std::to_string(faces.element) + ": each pixel shows the element it sees";
-  renderer->AddViewProp(makeCaption(caption, readableFontSize(options.size.height, scale, 0.028)));
+  renderer->AddViewProp(
+      makeCaption(caption, readableFontSize(options.size.height, scale, 0.028), options.size.width));
   writeRenderWindow(window, path, options.size.dpi);
 }
 

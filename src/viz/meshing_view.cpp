@@ -212,7 +212,8 @@ void writeLinksFigure(const RefinedSolution& solution, const Camera& camera, con
                     ends.size() / 2);
     caption = text;
   }
-  renderer->AddViewProp(makeCaption(caption, readableFontSize(options.size.height, scale, 0.028)));
+  renderer->AddViewProp(
+      makeCaption(caption, readableFontSize(options.size.height, scale, 0.028), options.size.width));
   if (options.colouring == LinkColouring::Level)
     addColourBar(window, options.map, 0, maxLevel, false, "level\n(leaves,\nlinks)", maxLevel + 1, "%.0f",
                  options.size.height, scale);
@@ -276,7 +277,7 @@ void writeDiscontinuityFigure(const RefinedSolution& solution, const Camera& cam
                   solution.mesh.size(), solution.discontinuities.size());
     caption = text;
   }
-  renderer->AddViewProp(makeCaption(caption, font));
+  renderer->AddViewProp(makeCaption(caption, font, options.size.width));
   // The key at the bottom, in the lines' own colours.
   const CriticalLineCounts counts = countCriticalLines(solution);
   char line[160];

@@ -83,7 +83,8 @@ void writeNusseltHemisphereFigure(const NusseltConstruction& c, const NusseltVie
   char text[200];
   std::snprintf(text, sizeof text, "%s\nprojected area / pi = %.5f    exact F = %.5f", options.title.c_str(),
                 c.diskAreaFraction, c.exact);
-  renderer->AddViewProp(makeCaption(text, readableFontSize(options.size.height, scale, 0.03)));
+  renderer->AddViewProp(
+      makeCaption(text, readableFontSize(options.size.height, scale, 0.03), options.size.width));
   writeRenderWindow(window, path, options.size.dpi);
 }
 

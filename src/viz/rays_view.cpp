@@ -116,7 +116,8 @@ void writeRaysFigure(const Mesh& mesh, const Camera& camera, const RaySample& sa
                   sample.rays.size(), 100.0 * sample.visibleFraction());
     caption = text;
   }
-  renderer->AddViewProp(makeCaption(caption, readableFontSize(options.size.height, scale, 0.028)));
+  renderer->AddViewProp(
+      makeCaption(caption, readableFontSize(options.size.height, scale, 0.028), options.size.width));
   writeRenderWindow(window, path, options.size.dpi);
 }
 

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 namespace rt::viz {
@@ -128,7 +129,58 @@ void writeRenderWindow(vtkRenderWindow* window, const std::string& path, double 
     writeRasterSvg(image, path);
 }
 
-void writeContextView(vtkContextView* view, const std::string& path) {
+namespace {
+
+std::string xmlEscaped(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+// vtkSVGExporter writes "VTK Exported Scene" as both the <title> and the <desc>: put the figure's own there.
+void nameSvg(const std::string& path, const std::string& title, const std::string& description) {
+  if (title.empty() && description.empty()) return;
+  std::string svg;
+  {
+    std::ifstream in(path, std::ios::binary);
+    svg.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::string placeholder = "VTK Exported Scene";
+  const std::string replacements[2] = {xmlEscaped(title.empty() ? description : title),
+                                       xmlEscaped(description.empty() ? title : description)};
+  std::size_t at = 0;
+  for (const std::string& replacement : replacements) {
+    at = svg.find(placeholder, at);
+    if (at == std::string::npos) break;
+    svg.replace(at, placeholder.size(), replacement);
+    at += replacement.size();
+  }
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << svg;
+  if (!out) throw std::runtime_error(path + ": cannot write the file");
+}
+
+}  // namespace
+
+void writeContextView(vtkContextView* view, const std::string& path, const std::string& title,
+                      const std::string& description) {
   const FigureFormat format = figureFormatOf(path);
   vtkRenderWindow* window = view->GetRenderWindow();
   window->Render();
@@ -145,6 +197,7 @@ void writeContextView(vtkContextView* view, const std::string& path) {
     exporter->SetFileName(path.c_str());
     exporter->SetDrawBackground(true);
     exporter->Write();
+    nameSvg(path, title, description);
   } else {
     auto exporter = vtkSmartPointer<vtkPDFExporter>::New();
     exporter->SetRenderWindow(window);
@@ -168,9 +221,42 @@ void styleText(vtkTextProperty* text, int fontSize, bool bold) {
   text->SetColor(0.96, 0.96, 0.96);
 }
 
-vtkSmartPointer<vtkTextActor> makeCaption(const std::string& text, int fontSize) {
+namespace {
+
+// Greedy word wrap by an estimated width: bold sans-serif glyphs with spaces average under 0.7 em.
+std::string wrapToWidth(const std::string& text, int fontSize, int width) {
+  if (width <= 0) return text;
+  const auto maxChars = static_cast<std::size_t>(std::max(12.0, 0.92 * width / (0.7 * fontSize)));
+  std::string out, line, word;
+  auto flushWord = [&] {
+    if (word.empty()) return;
+    if (!line.empty() && line.size() + 1 + word.size() > maxChars) {
+      out += line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+    word.clear();
+  };
+  for (const char c : text) {
+    if (c == ' ') {
+      flushWord();
+    } else if (c == '\n') {
+      flushWord();
+      out += line + "\n";
+      line.clear();
+    } else {
+      word += c;
+    }
+  }
+  flushWord();
+  return out + line;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkTextActor> makeCaption(const std::string& text, int fontSize, int figureWidth) {
   auto caption = vtkSmartPointer<vtkTextActor>::New();
-  caption->SetInput(text.c_str());
+  caption->SetInput(wrapToWidth(text, fontSize, figureWidth).c_str());
   styleText(caption->GetTextProperty(), fontSize, true);
   caption->GetTextProperty()->SetJustificationToCentered();
   caption->GetTextProperty()->SetVerticalJustificationToTop();

@@ -39,16 +39,20 @@ std::vector<unsigned char> captureRgb(vtkRenderWindow* window, int& width, int& 
 void writeRenderWindow(vtkRenderWindow* window, const std::string& path, double dpi);
 
 // 2D views built from context items (charts, matrix, hemicube faces, Nusselt disk): PNG, or true vectors in
-// SVG/PDF.
-void writeContextView(vtkContextView* view, const std::string& path);
+// SVG/PDF. VTK draws SVG text as paths (viewers disagree on text sizes), so an SVG also gets `title` and
+// `description` (e.g. the words on the figure) as its <title> and <desc>: searchable and read by screen
+// readers.
+void writeContextView(vtkContextView* view, const std::string& path, const std::string& title = {},
+                      const std::string& description = {});
 
 // Font size in pixels that stays readable on a projector: a fraction of the figure height, scaled by dpi
 // / 96.
 int readableFontSize(int figureHeight, double fontScale, double fraction = 0.032);
 void styleText(vtkTextProperty* text, int fontSize, bool bold = false);
 
-// A caption at the top centre of a 3D view.
-vtkSmartPointer<vtkTextActor> makeCaption(const std::string& text, int fontSize);
+// A caption at the top centre of a 3D view. With `figureWidth` (pixels), lines too long for the figure are
+// wrapped at spaces so that nothing is cut at the edges.
+vtkSmartPointer<vtkTextActor> makeCaption(const std::string& text, int fontSize, int figureWidth = 0);
 
 // A vertical colour bar for a scalar field shown through `map` over [min, max] (log10 when logScale).
 vtkSmartPointer<vtkScalarBarActor> makeColourBar(ColourMap map, double min, double max, bool logScale,

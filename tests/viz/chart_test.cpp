@@ -51,6 +51,10 @@ TEST(Chart, SvgHasVectorPaths) {
   EXPECT_TRUE(svg.find("<path") != std::string::npos || svg.find("<polyline") != std::string::npos ||
               svg.find("<polygon") != std::string::npos);
   EXPECT_EQ(svg.find("<image"), std::string::npos);  // no raster
+  // Text is drawn as paths; the title, axes and series are named in the SVG's metadata.
+  EXPECT_NE(svg.find("<title>\n    Residual against iteration"), std::string::npos);
+  EXPECT_NE(svg.find("x: iteration; y: relative residual; series: Jacobi, Gauss-Seidel"), std::string::npos);
+  EXPECT_EQ(svg.find("VTK Exported Scene"), std::string::npos);
 }
 
 TEST(Chart, PdfHasContent) {
