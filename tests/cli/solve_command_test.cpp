@@ -1,4 +1,5 @@
-// End-to-end: the radiosity CLI solves the Cornell box and the scenes of the furnace test, from the files in scenes/.
+// End-to-end: the radiosity CLI solves the Cornell box and the scenes of the furnace test, from the files in
+// scenes/.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -35,7 +36,8 @@ std::vector<std::vector<std::string>> readCsv(const std::string& path) {
 TEST(SolveCommand, FurnaceCubeGivesEOverOneMinusRho) {
   const std::string out = scratchDir("solve-furnace") + "/B.csv";
   std::string log;
-  ASSERT_EQ(runCommand(cliPath() + " solve " + sourcePath("scenes/furnace-cube.json") + " --subdivide 2 --output " + out,
+  ASSERT_EQ(runCommand(cliPath() + " solve " + sourcePath("scenes/furnace-cube.json") +
+                           " --subdivide 2 --output " + out,
                        &log),
             0)
       << log;
@@ -54,7 +56,9 @@ TEST(SolveCommand, MissingSceneIsAClearError) {
 
 TEST(SolveCommand, UnknownSolverIsAClearError) {
   std::string log;
-  EXPECT_NE(runCommand(cliPath() + " solve " + sourcePath("scenes/furnace-cube.json") + " --method nonsense", &log), 0);
+  EXPECT_NE(
+      runCommand(cliPath() + " solve " + sourcePath("scenes/furnace-cube.json") + " --method nonsense", &log),
+      0);
   EXPECT_NE(log.find("nonsense"), std::string::npos) << log;
 }
 
@@ -62,10 +66,11 @@ TEST(SolveCommand, UnknownSolverIsAClearError) {
 TEST(SolveCommand, CornellBoxImageShowsColourBleeding) {
   const std::string dir = scratchDir("solve-cornell");
   std::string log;
-  ASSERT_EQ(runCommand(cliPath() + " solve " + sourcePath("scenes/cornell-box.json") + " --max-edge 60 --output " +
-                           dir + "/B.csv --image " + dir + "/cornell.png --width 400 --height 400",
-                       &log),
-            0)
+  ASSERT_EQ(
+      runCommand(cliPath() + " solve " + sourcePath("scenes/cornell-box.json") + " --max-edge 60 --output " +
+                     dir + "/B.csv --image " + dir + "/cornell.png --width 400 --height 400",
+                 &log),
+      0)
       << log;
   vtkNew<vtkPNGReader> reader;
   reader->SetFileName((dir + "/cornell.png").c_str());
