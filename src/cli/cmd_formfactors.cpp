@@ -1,4 +1,5 @@
 // radiosity formfactors SCENE [--method NAME] [mesh options] [--resolution R] [--samples N] [--seed S]
+//                            [--tolerance T]
 //                            [--enforce-reciprocity] [--normalize-rows] [--output F.csv|F.mtx|F.npy|F.tex]
 // Computes the form-factor matrix of a scene's mesh, prints one summary line and one diagnostics line.
 #include <iostream>
@@ -69,6 +70,12 @@ void addFormFactorsCommand(CLI::App& app) {
           "raycast/analytic-visibility: sample pairs per element pair (1..1024); montecarlo: rays per "
           "element; nusselt: segments per arc")
       ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command
+      ->add_option("--tolerance", arguments->options.tolerance,
+                   "exact: relative tolerance of every entry (the cubature refines until its error estimate "
+                   "is below it; occluded pairs take much longer at small values)")
+      ->check(CLI::Range(1e-14, 0.5))
       ->capture_default_str();
   command->add_option("--seed", arguments->options.seed, "Seed of the stochastic methods")
       ->capture_default_str();

@@ -1,0 +1,73 @@
+// radiosity formfactors: the summary and diagnostics lines, the matrix file, and the exact method's
+// tolerance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include "support/test_paths.h"
+
+namespace rt::test {
+namespace {
+
+// Howell C-11: parallel unit squares at distance 1.
+constexpr double kParallelSquares = 0.19982489569838738;
+
+double entryOfTwoByTwoCsv(const std::string& path, int row, int column) {
+  std::ifstream in(path);
+  std::string line;
+  int r = 0;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    if (r++ != row) continue;
+    const auto comma = line.find(',');
+    return std::stod(column == 0 ? line.substr(0, comma) : line.substr(comma + 1));
+  }
+  return NAN;
+}
+
+bool methodAvailable(const std::string& method) {
+  std::string help;
+  runCommand(cliPath() + " formfactors --help", &help);
+  return help.find(method) != std::string::npos;
+}
+
+TEST(FormFactorsCommand, PrintsSummaryAndDiagnosticsAndWritesTheMatrix) {
+  const std::string out = scratchDir("formfactors-analytic") + "/F.csv";
+  std::string log;
+  ASSERT_EQ(runCommand(cliPath() + " formfactors " + sourcePath("scenes/parallel-squares.json") +
+                           " --no-subdivide --method analytic --quiet --output " + out,
+                       &log),
+            0)
+      << log;
+  EXPECT_NE(log.find("analytic: 2 elements"), std::string::npos) << log;
+  EXPECT_NE(log.find("diagnostics:"), std::string::npos) << log;
+  EXPECT_NEAR(entryOfTwoByTwoCsv(out, 0, 1), kParallelSquares, 1e-12);
+  EXPECT_NEAR(entryOfTwoByTwoCsv(out, 1, 0), kParallelSquares, 1e-12);
+}
+
+TEST(FormFactorsCommand, ExactMethodHonoursTheTolerance) {
+  if (!methodAvailable("exact")) GTEST_SKIP() << "built without the exact reference";
+  const std::string dir = scratchDir("formfactors-exact");
+  std::string log;
+  ASSERT_EQ(
+      runCommand(cliPath() + " formfactors " + sourcePath("scenes/parallel-squares.json") +
+                     " --no-subdivide --method exact --tolerance 1e-10 --quiet --output " + dir + "/F.csv",
+                 &log),
+      0)
+      << log;
+  EXPECT_NEAR(entryOfTwoByTwoCsv(dir + "/F.csv", 0, 1), kParallelSquares, 1e-10 * kParallelSquares);
+}
+
+TEST(FormFactorsCommand, ToleranceOutOfRangeIsRejectedByName) {
+  std::string log;
+  EXPECT_NE(runCommand(cliPath() + " formfactors " + sourcePath("scenes/parallel-squares.json") +
+                           " --method exact --tolerance 0",
+                       &log),
+            0);
+  EXPECT_NE(log.find("--tolerance"), std::string::npos) << log;
+}
+
+}  // namespace
+}  // namespace rt::test
