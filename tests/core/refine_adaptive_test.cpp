@@ -4,25 +4,11 @@
 
 #include "core/refine/piece_mesh.h"
 #include "core/refine/refine.h"
+#include "refine_energy.h"
 #include "refine_test_scenes.h"
 
 namespace rt {
 namespace {
-
-// Power balance of a closed scene: everything emitted is absorbed. With irradiance H = (B - E) / rho (every
-// surface reflects something), sum E A = sum (1 - rho) H A, per channel.
-Eigen::Array3d absorbedOverEmitted(const RefinedSolution& s) {
-  const Eigen::VectorXd A = s.mesh.areas();
-  Eigen::Array3d emitted = Eigen::Array3d::Zero(), absorbed = Eigen::Array3d::Zero();
-  for (Eigen::Index i = 0; i < A.size(); ++i) {
-    const Eigen::Array3d rho = s.mesh.reflectance.row(i).transpose().array();
-    const Eigen::Array3d E = s.mesh.emission.row(i).transpose().array();
-    const Eigen::Array3d H = (s.B.row(i).transpose().array() - E) / rho;
-    emitted += A[i] * E;
-    absorbed += A[i] * (1 - rho) * H;
-  }
-  return absorbed / emitted;
-}
 
 TEST(RefineAdaptive, ElementsShrinkAtTheShadowBoundaries) {
   RefineOptions o;
@@ -61,7 +47,7 @@ TEST(RefineAdaptive, ClosedRoomConservesEnergyAfterRefinement) {
   o.maxElements = 600;
   const RefinedSolution s = solveRefined(test::closedRoom(), o);
   EXPECT_GT(s.stats.elements, s.stats.initialElements);
-  const Eigen::Array3d ratio = absorbedOverEmitted(s);
+  const Eigen::Array3d ratio = test::absorbedOverEmitted(s);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(ratio[c], 1.0, 0.03) << s.stats.summary();
 }
 
