@@ -3,7 +3,18 @@
 #include <QCommandLineParser>
 #include <QRegularExpression>
 
+#include "app/compare_choice.h"
+
 namespace rt::app {
+namespace {
+
+QStringList meshChoices() {
+  QStringList out;
+  for (const std::string& choice : compareMeshChoices()) out << QString::fromStdString(choice);
+  return out;
+}
+
+}  // namespace
 
 AppOptions parseAppOptions(const QStringList& arguments, QString* error) {
   QCommandLineParser parser;
@@ -18,7 +29,15 @@ AppOptions parseAppOptions(const QStringList& arguments, QString* error) {
   const QCommandLineOption size("size", "Window size for --screenshot (default 1600x1000).", "WxH");
   const QCommandLineOption presenter("presenter", "Start in presenter mode (full screen, large fonts).");
   const QCommandLineOption compare("compare", "Start in compare mode (two synchronised views).");
-  parser.addOptions({lesson, step, scene, screenshot, size, presenter, compare});
+  const QCommandLineOption compareSolver("compare-solver", "Compare mode, the right pane with this solver.",
+                                         "name");
+  const QCommandLineOption compareMethod(
+      "compare-method", "Compare mode, the right pane with this form-factor method.", "name");
+  const QCommandLineOption compareMesh(
+      "compare-mesh", "Compare mode, the right pane with this mesh: " + meshChoices().join(", ") + ".",
+      "name");
+  parser.addOptions(
+      {lesson, step, scene, screenshot, size, presenter, compare, compareSolver, compareMethod, compareMesh});
   if (!parser.parse(arguments)) {
     *error = parser.errorText();
     return {};
@@ -35,7 +54,16 @@ AppOptions parseAppOptions(const QStringList& arguments, QString* error) {
   options.scene = parser.value(scene);
   options.screenshot = parser.value(screenshot);
   options.presenter = parser.isSet(presenter);
-  options.compare = parser.isSet(compare);
+  options.compareSolver = parser.value(compareSolver);
+  options.compareMethod = parser.value(compareMethod);
+  options.compareMesh = parser.value(compareMesh);
+  options.compare = parser.isSet(compare) || parser.isSet(compareSolver) || parser.isSet(compareMethod) ||
+                    parser.isSet(compareMesh);
+  if (parser.isSet(compareMesh) && !meshChoices().contains(options.compareMesh)) {
+    *error =
+        "--compare-mesh must be one of " + meshChoices().join(", ") + ", not '" + options.compareMesh + "'";
+    return {};
+  }
   if (parser.isSet(step)) {
     bool ok = false;
     options.step = parser.value(step).toInt(&ok);

@@ -17,7 +17,9 @@ struct AppOptions {
   QString screenshot;  // PNG to write, then exit
   QSize size{1600, 1000};
   bool presenter = false;
-  bool compare = false;
+  bool compare = false;  // also set by any --compare-* option
+  // What the right pane changes (--compare-solver, --compare-method, --compare-mesh); empty: the left's.
+  QString compareSolver, compareMethod, compareMesh;
 };
 
 // Returns the options, or an error message in `error` (then the result is meaningless).

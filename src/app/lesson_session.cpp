@@ -140,20 +140,33 @@ PipelineResult LessonLibrary::runOne(const lesson::Lesson& lesson, const lesson:
 }
 
 PipelineResult LessonLibrary::runStep(int lessonIndex, int stepIndex,
-                                      const lesson::StepParameters& parameters,
-                                      const std::string& compareSolver, const std::string& compareMethod,
+                                      const lesson::StepParameters& parameters, const CompareChoice& compare,
                                       Progress& progress) {
   std::lock_guard lock(runMutex_);
   const lesson::Lesson& lesson = lessons_.at(static_cast<std::size_t>(lessonIndex));
   lesson::Step step = lesson.steps.at(static_cast<std::size_t>(stepIndex));
   step.parameters = parameters;
   PipelineResult result = runOne(lesson, step, progress);
-  if (!compareSolver.empty() || !compareMethod.empty()) {
-    if (!compareSolver.empty()) step.parameters.solver = compareSolver;
-    if (!compareMethod.empty()) step.parameters.method = compareMethod;
-    result.compared = std::make_shared<PipelineResult>(runOne(lesson, step, progress));
+  if (!compare.changesSomething()) return result;
+  if (compare.refinesMesh()) {
+    // A mesh that follows the light is its own computation (core/refine), from the same scene.
+    result.compared = std::make_shared<PipelineResult>(
+        runRefinedPipeline(result.scene, compare.mesh, runner_->options().quick, progress));
+    return result;
   }
+  if (!compare.solver.empty()) step.parameters.solver = compare.solver;
+  if (!compare.method.empty()) step.parameters.method = compare.method;
+  scaleStepMesh(step.parameters, compare.mesh);
+  result.compared = std::make_shared<PipelineResult>(runOne(lesson, step, progress));
   return result;
+}
+
+std::shared_ptr<const lesson::StepResult> LessonLibrary::computeStep(int lessonIndex, int stepIndex,
+                                                                     Progress& progress) {
+  std::lock_guard lock(runMutex_);
+  const lesson::Lesson& lesson = lessons_.at(static_cast<std::size_t>(lessonIndex));
+  const lesson::Step& step = lesson.steps.at(static_cast<std::size_t>(stepIndex));
+  return std::make_shared<lesson::StepResult>(runner_->run(lesson, step, progress));
 }
 
 }  // namespace rt::app

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/compare_choice.h"
 #include "app/pipeline.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_loader.h"
@@ -31,13 +32,14 @@ class LessonLibrary {
   // The lesson a first-time reader starts with: "welcome" when there is one, else the first of the book.
   int welcomeIndex() const;
 
-  // Runs a step with `parameters` in place of the step's own (the reader's changes) and, when `compareSolver`
-  // or `compareMethod` is set, the same step with that solver or method for the compare pane. Serialised: one
+  // Runs a step with `parameters` in place of the step's own (the reader's changes) and, when `compare`
+  // changes something, the same step with that solver, method or mesh for the compare pane. Serialised: one
   // step at a time (the step runner's form-factor cache is not shared between threads). May throw InputError,
   // Cancelled.
   PipelineResult runStep(int lessonIndex, int stepIndex, const lesson::StepParameters& parameters,
-                         const std::string& compareSolver, const std::string& compareMethod,
-                         Progress& progress);
+                         const CompareChoice& compare, Progress& progress);
+  // The step as written, as the step runner returns it (what its figures are drawn from).
+  std::shared_ptr<const lesson::StepResult> computeStep(int lessonIndex, int stepIndex, Progress& progress);
   // How often form factors were computed (the rest came from the cache).
   int formFactorComputations() const;
 

@@ -14,7 +14,6 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QShortcut>
@@ -26,11 +25,13 @@
 
 #include "app/contents_tree.h"
 #include "app/exports.h"
+#include "app/figure_export.h"
 #include "app/figures_pane.h"
 #include "app/iteration_player.h"
 #include "app/lesson_session.h"
 #include "app/matrix_view.h"
 #include "app/parameter_panel.h"
+#include "app/progress_strip.h"
 #include "app/registration.h"
 #include "app/residual_chart.h"
 #include "app/scene_view.h"
@@ -53,10 +54,8 @@ MainWindow::MainWindow(const AppOptions& options, std::unique_ptr<LessonLibrary>
     statusLabel_->setText(tr("Cancelled: the previous result is still shown."));
   });
   connect(runner_, &ComputationRunner::busyChanged, this, &MainWindow::setBusy);
-  connect(runner_, &ComputationRunner::progress, this, [this](double fraction, const QString& stage) {
-    progressBar_->setValue(static_cast<int>(fraction * 1000));
-    progressBar_->setFormat(stage + "  %p%");
-  });
+  connect(runner_, &ComputationRunner::progress, this,
+          [this](double fraction, const QString& stage) { progress_->setProgress(fraction, stage); });
   buildUi();
   buildMenus();
   buildShortcuts();
@@ -65,7 +64,9 @@ MainWindow::MainWindow(const AppOptions& options, std::unique_ptr<LessonLibrary>
 }
 
 MainWindow::~MainWindow() {
-  // The worker may be inside the lesson library: stop it before the library goes.
+  // The workers may be inside the lesson library: stop them before the library goes.
+  delete figureExport_;
+  figureExport_ = nullptr;
   delete runner_;
   runner_ = nullptr;
   if (presenter_) applyLook(normalLook_);
@@ -78,6 +79,7 @@ bool MainWindow::busy() const {
 void MainWindow::closeEvent(QCloseEvent* event) {
   rememberPosition();
   if (runner_) runner_->cancel();
+  cancelFigureExport();
   QMainWindow::closeEvent(event);
 }
 
@@ -98,10 +100,12 @@ void MainWindow::buildUi() {
   stepLabel_ = new QLabel(textPane);
   stepLabel_->setAlignment(Qt::AlignCenter);
   stepLabel_->setWordWrap(true);  // a long lesson title must not widen the window
+  // The lesson and step on their own line: between the buttons a long title would wrap word by word.
   navigation->addWidget(backButton_);
-  navigation->addWidget(stepLabel_, 1);
+  navigation->addStretch(1);
   navigation->addWidget(nextButton_);
   textLayout->addWidget(text_, 1);
+  textLayout->addWidget(stepLabel_);
   textLayout->addLayout(navigation);
   connect(backButton_, &QPushButton::clicked, this, &MainWindow::previousStep);
   connect(nextButton_, &QPushButton::clicked, this, &MainWindow::nextStep);
@@ -167,7 +171,10 @@ void MainWindow::buildUi() {
   compareBox_ = new QCheckBox(tr("Compare side by side"), side);
   compareSolver_ = new QComboBox(side);
   compareMethod_ = new QComboBox(side);
-  for (QComboBox* box : {compareSolver_, compareMethod_}) {
+  compareMesh_ = new QComboBox(side);
+  compareMesh_->setObjectName("compareMesh");
+  compareMesh_->setToolTip(tr("Half or twice the subdivision, or a mesh that follows the light"));
+  for (QComboBox* box : {compareSolver_, compareMethod_, compareMesh_}) {
     box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     box->setMinimumContentsLength(8);
   }
@@ -175,10 +182,13 @@ void MainWindow::buildUi() {
   for (const auto& n : solverNames()) compareSolver_->addItem(QString::fromStdString(n));
   compareMethod_->addItem(tr("(same method)"));
   for (const auto& n : formFactorMethodNames()) compareMethod_->addItem(QString::fromStdString(n));
+  compareMesh_->addItem(tr("(same mesh)"));
+  for (const auto& n : compareMeshChoices()) compareMesh_->addItem(QString::fromStdString(n));
   if (compareSolver_->findText("jacobi") >= 0) compareSolver_->setCurrentText("jacobi");
   compareForm->addRow(compareBox_);
   compareForm->addRow(tr("Right: solver"), compareSolver_);
   compareForm->addRow(tr("Right: F method"), compareMethod_);
+  compareForm->addRow(tr("Right: mesh"), compareMesh_);
   sideLayout->addWidget(panel_);
   sideLayout->addLayout(compareForm);
   sideLayout->addStretch(1);
@@ -188,6 +198,7 @@ void MainWindow::buildUi() {
   };
   connect(compareSolver_, &QComboBox::currentTextChanged, this, recompareIfOn);
   connect(compareMethod_, &QComboBox::currentTextChanged, this, recompareIfOn);
+  connect(compareMesh_, &QComboBox::currentTextChanged, this, recompareIfOn);
   // Scrollable, so that the panel never forces the window wider than asked for (--size, small screens).
   auto* sideScroll = new QScrollArea(this);
   sideScroll->setWidgetResizable(true);
@@ -200,17 +211,13 @@ void MainWindow::buildUi() {
   addDockWidget(Qt::RightDockWidgetArea, parametersDock_);
 
   statusLabel_ = new QLabel(this);
-  progressBar_ = new QProgressBar(this);
-  progressBar_->setRange(0, 1000);
-  progressBar_->setMaximumWidth(360);
-  progressBar_->hide();
-  cancelButton_ = new QPushButton(tr("Cancel"), this);
-  cancelButton_->setObjectName("cancelButton");
-  cancelButton_->hide();
-  connect(cancelButton_, &QPushButton::clicked, this, &MainWindow::cancelComputation);
+  progress_ = new ProgressStrip(this);
+  connect(progress_, &ProgressStrip::cancelRequested, this, [this] {
+    cancelComputation();
+    cancelFigureExport();
+  });
   statusBar()->addWidget(statusLabel_, 1);
-  statusBar()->addPermanentWidget(progressBar_);
-  statusBar()->addPermanentWidget(cancelButton_);
+  statusBar()->addPermanentWidget(progress_);
 }
 
 QString MainWindow::exportFileDialog(const QString& title, const QString& filters) {
@@ -318,6 +325,28 @@ void MainWindow::setCompareMode(bool on) {
   if (mode_ != Mode::None) requestComputation();
 }
 
+CompareChoice MainWindow::compareChoice() const {
+  auto chosen = [](const QComboBox* box) {
+    return box->currentIndex() > 0 ? box->currentText().toStdString() : std::string();
+  };
+  return CompareChoice{chosen(compareSolver_), chosen(compareMethod_), chosen(compareMesh_)};
+}
+
+void MainWindow::setCompareChoice(const CompareChoice& choice) {
+  // One recomputation for the whole choice, not one per combo box.
+  {
+    const QSignalBlocker a(compareSolver_), b(compareMethod_), c(compareMesh_);
+    auto choose = [](QComboBox* box, const std::string& value) {
+      const int index = value.empty() ? 0 : box->findText(QString::fromStdString(value));
+      box->setCurrentIndex(std::max(0, index));
+    };
+    choose(compareSolver_, choice.solver);
+    choose(compareMethod_, choice.method);
+    choose(compareMesh_, choice.mesh);
+  }
+  if (compare_ && mode_ != Mode::None) requestComputation();
+}
+
 void MainWindow::setPresenterMode(bool on) {
   if (presenter_ == on) return;
   presenter_ = on;
@@ -346,68 +375,6 @@ void MainWindow::setPresenterMode(bool on) {
   chart_->setLargeFonts(on);
 }
 
-bool MainWindow::exportView(const QString& path, QSize size) {
-  if (!result_ || !result_->mesh) {
-    showError(tr("There is no view to export yet."));
-    return false;
-  }
-  try {
-    viz::SceneViewOptions options = primaryView_->viewOptions();
-    options.image.width = size.isEmpty() ? std::max(primaryView_->width(), 640) : size.width();
-    options.image.height = size.isEmpty() ? std::max(primaryView_->height(), 480) : size.height();
-    exportSceneFigure(*result_->mesh, primaryView_->currentCamera(), primaryView_->viewData(), options,
-                      path.toStdString());
-    statusLabel_->setText(tr("View written to %1").arg(path));
-    return true;
-  } catch (const std::exception& e) {
-    showError(QString::fromStdString(e.what()));
-    return false;
-  }
-}
-
-bool MainWindow::exportMatrixFile(const QString& which, const QString& path) {
-  if (!result_) {
-    showError(tr("There is nothing to export yet."));
-    return false;
-  }
-  try {
-    exportMatrix(*result_, which.toStdString(), path.toStdString());
-    statusLabel_->setText(tr("%1 written to %2").arg(which, path));
-    return true;
-  } catch (const std::exception& e) {
-    showError(QString::fromStdString(e.what()));
-    return false;
-  }
-}
-
-bool MainWindow::exportAllFigures(const QString& folder) {
-  if (mode_ != Mode::Lesson || lesson_ < 0) {
-    showError(tr("Open a lesson first: its figures are written one per step."));
-    return false;
-  }
-  if (busy()) {
-    showError(tr("Wait for the current computation to finish (or cancel it) first."));
-    return false;
-  }
-  // Runs on the GUI thread with events processed between steps: the figures use offscreen VTK windows, which
-  // must not be created on a worker thread.
-  QApplication::setOverrideCursor(Qt::WaitCursor);
-  bool ok = true;
-  try {
-    const int written = exportLessonFigures(
-        *library_, lesson_, folder.toStdString(), 1200, 900, noProgress(), [this](int s, int n) {
-          statusLabel_->setText(tr("Writing the figures of step %1 of %2...").arg(s + 1).arg(n));
-          QApplication::processEvents(QEventLoop::ExcludeUserInputEvents);
-        });
-    statusLabel_->setText(tr("%1 figures written to %2").arg(written).arg(folder));
-  } catch (const std::exception& e) {
-    showError(QString::fromStdString(e.what()));
-    ok = false;
-  }
-  QApplication::restoreOverrideCursor();
-  return ok;
-}
-
 void MainWindow::showError(const QString& message) {
   lastError_ = message;
   if (newStepPending_ && mode_ == Mode::Lesson) {
@@ -425,9 +392,10 @@ void MainWindow::showError(const QString& message) {
 }
 
 void MainWindow::setBusy(bool busy) {
-  progressBar_->setVisible(busy);
-  cancelButton_->setVisible(busy);
-  if (busy) progressBar_->setValue(0);
+  if (busy)
+    showProgressStrip(tr("Computing"));
+  else if (!figureExport_)
+    hideProgressStrip();
 }
 
 }  // namespace rt::app

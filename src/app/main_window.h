@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "app/app_options.h"
+#include "app/compare_choice.h"
 #include "app/computation_runner.h"
 #include "app/pipeline.h"
 #include "app/presenter_style.h"
@@ -17,7 +18,6 @@ class QCheckBox;
 class QComboBox;
 class QDockWidget;
 class QLabel;
-class QProgressBar;
 class QPushButton;
 class QSplitter;
 class QTabWidget;
@@ -28,9 +28,11 @@ namespace rt::app {
 class ContentsTree;
 class FiguresPane;
 class IterationPlayer;
+class LessonFigureExport;
 class LessonLibrary;
 class MatrixView;
 class ParameterPanel;
+class ProgressStrip;
 class ResidualChart;
 class SceneView;
 
@@ -64,6 +66,9 @@ class MainWindow : public QMainWindow {
 
   void setCompareMode(bool on);
   bool compareMode() const { return compare_; }
+  // What the right pane changes (empty members: the left pane's); set from the compare controls.
+  CompareChoice compareChoice() const;
+  void setCompareChoice(const CompareChoice& choice);
   void setPresenterMode(bool on);
   bool presenterMode() const { return presenter_; }
 
@@ -71,7 +76,11 @@ class MainWindow : public QMainWindow {
   // `size` empty: the view's size on screen.
   bool exportView(const QString& path, QSize size = QSize());
   bool exportMatrixFile(const QString& which, const QString& path);  // which: F, K or B
-  bool exportAllFigures(const QString& folder);
+  // Computes every step on the worker side and draws its figures, with progress and cancel; returns at once
+  // (true: started) unless computations are blocking, in which case it returns when the figures are written.
+  bool exportAllFigures(const QString& folder, QSize size = QSize(1200, 900));
+  bool exportingFigures() const { return figureExport_ != nullptr; }
+  void cancelFigureExport();
 
   // State for tests and the status bar.
   const PipelineResult* result() const { return result_.get(); }
@@ -89,6 +98,7 @@ class MainWindow : public QMainWindow {
   ParameterPanel* parameterPanel() const { return panel_; }
   ContentsTree* contents() const { return contents_; }
   FiguresPane* figuresPane() const { return figures_; }
+  ProgressStrip* progressStrip() const { return progress_; }
 
  signals:
   void resultShown();
@@ -106,6 +116,9 @@ class MainWindow : public QMainWindow {
   void showIteration(int index);
   void selectElements(int first, int second);
   void showError(const QString& message);
+  void showProgressStrip(const QString& what);
+  void hideProgressStrip();
+  void finishFigureExport(const QString& message, bool ok);
   void setBusy(bool busy);
   void updateNavigation();
   void rememberPosition();
@@ -145,13 +158,14 @@ class MainWindow : public QMainWindow {
   QCheckBox* compareBox_ = nullptr;
   QComboBox* compareSolver_ = nullptr;
   QComboBox* compareMethod_ = nullptr;
+  QComboBox* compareMesh_ = nullptr;
   QDockWidget* contentsDock_ = nullptr;
   QDockWidget* parametersDock_ = nullptr;
   QAction* presenterAction_ = nullptr;
   QAction* compareAction_ = nullptr;
   QLabel* statusLabel_ = nullptr;
-  QProgressBar* progressBar_ = nullptr;
-  QPushButton* cancelButton_ = nullptr;
+  ProgressStrip* progress_ = nullptr;
+  LessonFigureExport* figureExport_ = nullptr;
 };
 
 }  // namespace rt::app

@@ -22,6 +22,7 @@
 #include "app/scene_view.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/io/scene_loader.h"
+#include "core/solvers/solver.h"
 #include "lesson/step_result.h"
 
 namespace rt::app {
@@ -57,6 +58,12 @@ QString sceneSummary(const PipelineResult& r) {
   return md;
 }
 
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& name : names) out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
 std::vector<double> residualsOf(const PipelineResult& r) {
   std::vector<double> out;
   for (const IterationRecord& record : r.history) out.push_back(record.residual);
@@ -66,6 +73,16 @@ std::vector<double> residualsOf(const PipelineResult& r) {
 }  // namespace
 
 bool MainWindow::start() {
+  const CompareChoice choice{options_.compareSolver.toStdString(), options_.compareMethod.toStdString(),
+                             options_.compareMesh.toStdString()};
+  setCompareChoice(choice);
+  const CompareChoice applied = compareChoice();
+  if (applied.solver != choice.solver || applied.method != choice.method || applied.mesh != choice.mesh) {
+    lastError_ = tr("unknown --compare-solver or --compare-method (solvers: %1; methods: %2)")
+                     .arg(QString::fromStdString(joined(solverNames())),
+                          QString::fromStdString(joined(formFactorMethodNames())));
+    return false;
+  }
   if (options_.compare) setCompareMode(true);
   if (options_.presenter) setPresenterMode(true);
   if (!options_.scene.isEmpty()) return openScene(options_.scene);
@@ -173,36 +190,40 @@ void MainWindow::applyParameters(const lesson::StepParameters& parameters) {
 
 void MainWindow::requestComputation() {
   lastError_.clear();
-  const std::string compareSolver = compare_ && compareSolver_->currentIndex() > 0
-                                        ? compareSolver_->currentText().toStdString()
-                                        : std::string();
-  const std::string compareMethod = compare_ && compareMethod_->currentIndex() > 0
-                                        ? compareMethod_->currentText().toStdString()
-                                        : std::string();
   const bool compare = compare_;
+  const CompareChoice choice = compare ? compareChoice() : CompareChoice{};
   ComputationRunner::Job job;
   if (mode_ == Mode::Lesson) {
     LessonLibrary* library = library_.get();
     const int l = lesson_, s = step_;
     const lesson::StepParameters parameters = parameters_;
-    // Compare mode with nothing chosen still fills the right pane (the same computation), so both panes show.
-    const std::string solver =
-        compare && compareSolver.empty() && compareMethod.empty() ? parameters.solver : compareSolver;
-    job = [library, l, s, parameters, solver, compareMethod](Progress& progress) {
-      return library->runStep(l, s, parameters, solver, compareMethod, progress);
+    job = [library, l, s, parameters, compare, choice](Progress& progress) {
+      PipelineResult result = library->runStep(l, s, parameters, choice, progress);
+      // Compare mode with nothing chosen still fills the right pane (the same result), so both panes show.
+      if (compare && !result.compared) result.compared = std::make_shared<PipelineResult>(result);
+      return result;
     };
   } else if (mode_ == Mode::Scene) {
     const Scene scene = scene_;
     const PipelineSettings settings = settingsFromParameters(parameters_);
     std::shared_ptr<const PipelineResult> previous = result_;
-    job = [scene, settings, previous, compare, compareSolver, compareMethod](Progress& progress) {
+    job = [scene, settings, previous, compare, choice](Progress& progress) {
       PipelineResult result = runPipeline(scene, settings, progress, previous.get());
-      if (compare) {
-        PipelineSettings other = settings;
-        if (!compareSolver.empty()) other.solver = compareSolver;
-        if (!compareMethod.empty()) other.method = compareMethod;
-        result.compared = std::make_shared<PipelineResult>(runPipeline(scene, other, progress, &result));
+      if (!compare) return result;
+      if (!choice.changesSomething()) {
+        result.compared = std::make_shared<PipelineResult>(result);
+        return result;
       }
+      if (choice.refinesMesh()) {
+        result.compared = std::make_shared<PipelineResult>(
+            runRefinedPipeline(result.scene, choice.mesh, /*quick=*/false, progress));
+        return result;
+      }
+      PipelineSettings other = settings;
+      if (!choice.solver.empty()) other.solver = choice.solver;
+      if (!choice.method.empty()) other.method = choice.method;
+      other.mesh = scaledMesh(other.mesh, choice.mesh);
+      result.compared = std::make_shared<PipelineResult>(runPipeline(scene, other, progress, &result));
       return result;
     };
   } else {
@@ -260,13 +281,14 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
           ? &library_->lessons()[static_cast<std::size_t>(lesson_)].steps[static_cast<std::size_t>(step_)]
           : nullptr;
   primaryView_->setScene(r.mesh.get(), r.B, r.camera, newStep);
-  primaryView_->setCaption(QString::fromStdString(r.solverName.empty() ? r.title : r.solverName));
+  primaryView_->setCaption(QString::fromStdString(compare_               ? paneCaption(r)
+                                                  : r.solverName.empty() ? r.title
+                                                                         : r.solverName));
   if (stepResult && !stepResult->highlighted.empty()) primaryView_->setHighlighted(stepResult->highlighted);
   if (compare_ && r.compared) {
     secondaryView_->setScene(r.compared->mesh.get(), r.compared->B, r.camera, false);
     secondaryView_->syncCameraFrom(*primaryView_);
-    secondaryView_->setCaption(
-        QString::fromStdString(r.compared->solverName.empty() ? r.compared->title : r.compared->solverName));
+    secondaryView_->setCaption(QString::fromStdString(paneCaption(*r.compared)));
   } else {
     secondaryView_->setScene(nullptr, {}, r.camera, false);  // it must not keep a mesh that is about to go
   }

@@ -14,6 +14,9 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
+#include <algorithm>
+#include <cstring>
+
 #include "viz/vtk_render.h"
 #include "viz/vtk_views.h"
 
@@ -142,7 +145,26 @@ void SceneView::setShowEdges(bool show) {
 
 void SceneView::setCaption(const QString& text) {
   caption_->SetInput(text.toUtf8().constData());
+  fitCaption();
   requestRender();
+}
+
+void SceneView::resizeEvent(QResizeEvent* event) {
+  VtkWidget::resizeEvent(event);
+  fitCaption();
+}
+
+void SceneView::fitCaption() {
+  const char* text = caption_->GetInput();
+  const double characters = std::max<std::size_t>(1, text ? std::strlen(text) : 0);
+  // About 0.6 em per character; 10 px margins on both sides.
+  const double available = width() * devicePixelRatioF() - 20;
+  caption_->GetTextProperty()->SetFontSize(
+      std::clamp(static_cast<int>(available / (0.6 * characters)), 11, 18));
+}
+
+QString SceneView::caption() const {
+  return QString::fromUtf8(caption_->GetInput() ? caption_->GetInput() : "");
 }
 
 void SceneView::setHighlighted(const std::vector<int>& elements) {

@@ -40,6 +40,7 @@ class SceneView : public VtkWidget {
   Camera currentCamera() const;
   void setShowEdges(bool show);
   void setCaption(const QString& text);
+  QString caption() const;
   void setHighlighted(const std::vector<int>& elements);
   const std::vector<int>& highlighted() const { return highlighted_; }
   // Copies the other view's camera (compare mode).
@@ -52,8 +53,13 @@ class SceneView : public VtkWidget {
  signals:
   void elementPicked(int element);
 
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
+
  private:
   void rebuildHighlight();
+  // The caption's font shrinks (down to a floor) so that it fits a narrow pane, as in compare mode.
+  void fitCaption();
 
   const Mesh* mesh_ = nullptr;
   void repaint3d();

@@ -44,3 +44,16 @@ TEST(AppOptions, RejectsBadValuesWithTheirName) {
   parseAppOptions({"radiosity-textbook", "--no-such-option"}, &error);
   EXPECT_TRUE(error.contains("no-such-option")) << error.toStdString();
 }
+
+TEST(AppOptions, CompareChoicesImplyCompareMode) {
+  QString error;
+  const AppOptions o = parseAppOptions(
+      {"radiosity-textbook", "--compare-solver", "jacobi", "--compare-mesh", "adaptive"}, &error);
+  EXPECT_TRUE(error.isEmpty()) << error.toStdString();
+  EXPECT_TRUE(o.compare);
+  EXPECT_EQ(o.compareSolver, "jacobi");
+  EXPECT_EQ(o.compareMesh, "adaptive");
+  EXPECT_TRUE(o.compareMethod.isEmpty());
+  parseAppOptions({"radiosity-textbook", "--compare-mesh", "wavy"}, &error);
+  EXPECT_TRUE(error.contains("--compare-mesh") && error.contains("hierarchical")) << error.toStdString();
+}

@@ -4,11 +4,17 @@
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QPushButton>
+#include <QStatusBar>
 #include <QTest>
+#include <filesystem>
 
+#include "app/main_window.h"
 #include "app/parameter_panel.h"
+#include "app/progress_strip.h"
 #include "app/scene_view.h"
 #include "app_test_support.h"
+#include "support/test_paths.h"
 
 using namespace rt::app;
 
@@ -55,4 +61,57 @@ TEST(Cancel, CancelledComputationKeepsThePreviousResult) {
   ASSERT_TRUE(window->waitUntilIdle());
   ASSERT_NE(window->result(), nullptr);
   EXPECT_NE(window->result()->mesh, previousMesh);
+}
+
+TEST(Cancel, ProgressStripShowsTheJobAndItsButtonCancels) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow(/*threaded=*/true);
+  ASSERT_TRUE(window->openScene(QString()));
+  ASSERT_TRUE(window->waitUntilIdle());
+  EXPECT_FALSE(window->progressStrip()->isVisible());
+  const auto previousMesh = window->result()->mesh;
+  // Presenter mode hides the status bar, but not while something runs: the class sees it and can stop it.
+  window->setPresenterMode(true);
+  rt::lesson::StepParameters p = window->parameterPanel()->parameters();
+  p.subdivide = 24;
+  p.method = "hemicube";
+  p.resolution = 512;
+  window->applyParameters(p);
+  ASSERT_TRUE(window->busy());
+  QApplication::processEvents();
+  EXPECT_TRUE(window->progressStrip()->isVisible());
+  EXPECT_TRUE(window->statusBar()->isVisible());
+  QTest::mouseClick(window->progressStrip()->cancelButton(), Qt::LeftButton);
+  ASSERT_TRUE(window->waitUntilIdle(60000));
+  EXPECT_FALSE(window->progressStrip()->isVisible());
+  EXPECT_FALSE(window->statusBar()->isVisible());
+  EXPECT_EQ(window->result()->mesh, previousMesh);
+  window->setPresenterMode(false);
+}
+
+TEST(Cancel, LessonFigureExportRunsInTheBackgroundAndStopsOnCancel) {
+  RT_REQUIRE_DISPLAY();
+  const std::string dir = rt::test::scratchDir("app-export-cancel");
+  auto window = test::makeWindow(/*threaded=*/true);
+  ASSERT_TRUE(window->openLesson("cornell-box", 0));
+  ASSERT_TRUE(window->waitUntilIdle());
+  ASSERT_TRUE(window->exportAllFigures(QString::fromStdString(dir)));
+  // It returned at once: the steps are computed on a worker thread, with the strip showing.
+  EXPECT_TRUE(window->exportingFigures());
+  EXPECT_TRUE(window->progressStrip()->active());
+  // Cancelled before the GUI thread drew anything: no figure is written, and the window says so.
+  window->cancelFigureExport();
+  QElapsedTimer timer;
+  timer.start();
+  while (window->exportingFigures() && timer.elapsed() < 60000) QApplication::processEvents();
+  ASSERT_FALSE(window->exportingFigures());
+  EXPECT_FALSE(window->progressStrip()->active());
+  EXPECT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
+  int files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 0);
+  // The window is still usable: the next step computes.
+  ASSERT_TRUE(window->nextStep());
+  ASSERT_TRUE(window->waitUntilIdle());
+  EXPECT_EQ(window->currentStep(), 1);
 }

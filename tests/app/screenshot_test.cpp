@@ -89,3 +89,33 @@ TEST(Screenshot, CommandLineNamesAnUnknownLesson) {
   EXPECT_NE(code, 0);
   EXPECT_NE(output.find("no-such-lesson"), std::string::npos) << output;
 }
+
+TEST(Screenshot, CommandLineComparesMeshesSideBySide) {
+  RT_REQUIRE_DISPLAY();
+  const std::string png = rt::test::scratchDir("app-screenshot-compare") + "/compare.png";
+  const std::string app = rt::test::binaryPath("bin/radiosity-textbook");
+  std::string output;
+  const int code = rt::test::runCommand(
+      app + " --lesson cornell-box --step 4 --compare-mesh finer --size 1400x800" + " --screenshot " + png,
+      &output);
+  ASSERT_EQ(code, 0) << output;
+  QImage image(QString::fromStdString(png));
+  ASSERT_FALSE(image.isNull());
+  // Both halves of the view area show a lit room.
+  for (const QRect& pane : {QRect(600, 150, 160, 250), QRect(1000, 150, 160, 250)}) {
+    const PixelStatistics stats = pixelStatistics(image, pane);
+    EXPECT_GT(stats.meanLuminance, 25) << pane.x();
+    EXPECT_GT(stats.distinctColours, 30) << pane.x();
+  }
+}
+
+TEST(Screenshot, CommandLineNamesAnUnknownCompareMethod) {
+  RT_REQUIRE_DISPLAY();
+  const std::string app = rt::test::binaryPath("bin/radiosity-textbook");
+  std::string output;
+  const int code = rt::test::runCommand(
+      app + " --lesson cornell-box --compare-method no-such-method --screenshot /tmp/never.png", &output);
+  EXPECT_NE(code, 0);
+  EXPECT_NE(output.find("--compare-method"), std::string::npos) << output;
+  EXPECT_NE(output.find("hemicube"), std::string::npos) << output;
+}

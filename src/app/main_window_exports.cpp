@@ -1,0 +1,107 @@
+// MainWindow: exports (the view, matrices, every figure of a lesson) and the progress strip they share with
+// the computations.
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QStatusBar>
+#include <QThread>
+
+#include "app/exports.h"
+#include "app/figure_export.h"
+#include "app/main_window.h"
+#include "app/progress_strip.h"
+#include "app/scene_view.h"
+
+namespace rt::app {
+
+bool MainWindow::exportView(const QString& path, QSize size) {
+  if (!result_ || !result_->mesh) {
+    showError(tr("There is no view to export yet."));
+    return false;
+  }
+  try {
+    viz::SceneViewOptions options = primaryView_->viewOptions();
+    options.image.width = size.isEmpty() ? std::max(primaryView_->width(), 640) : size.width();
+    options.image.height = size.isEmpty() ? std::max(primaryView_->height(), 480) : size.height();
+    exportSceneFigure(*result_->mesh, primaryView_->currentCamera(), primaryView_->viewData(), options,
+                      path.toStdString());
+    statusLabel_->setText(tr("View written to %1").arg(path));
+    return true;
+  } catch (const std::exception& e) {
+    showError(QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+bool MainWindow::exportMatrixFile(const QString& which, const QString& path) {
+  if (!result_) {
+    showError(tr("There is nothing to export yet."));
+    return false;
+  }
+  try {
+    exportMatrix(*result_, which.toStdString(), path.toStdString());
+    statusLabel_->setText(tr("%1 written to %2").arg(which, path));
+    return true;
+  } catch (const std::exception& e) {
+    showError(QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
+bool MainWindow::exportAllFigures(const QString& folder, QSize size) {
+  if (mode_ != Mode::Lesson || lesson_ < 0) {
+    showError(tr("Open a lesson first: its figures are written one per step."));
+    return false;
+  }
+  if (busy() || figureExport_) {
+    showError(tr("Wait for the current computation to finish (or cancel it) first."));
+    return false;
+  }
+  lastError_.clear();
+  figureExport_ = new LessonFigureExport(*library_, lesson_, folder, size, this);
+  connect(figureExport_, &LessonFigureExport::progress, progress_, &ProgressStrip::setProgress);
+  connect(figureExport_, &LessonFigureExport::finished, this, [this, folder](int written) {
+    finishFigureExport(tr("%1 figures written to %2").arg(written).arg(folder), true);
+  });
+  connect(figureExport_, &LessonFigureExport::cancelled, this, [this, folder] {
+    finishFigureExport(tr("Figure export cancelled: the figures written so far are in %1").arg(folder), true);
+  });
+  connect(figureExport_, &LessonFigureExport::failed, this,
+          [this](const QString& message) { finishFigureExport(message, false); });
+  showProgressStrip(tr("Writing the figures"));
+  figureExport_->start();
+  if (!blocking_) return true;
+  // Blocking (tests, scripted use): the window keeps processing events, including the figures' drawing.
+  while (figureExport_) {
+    QApplication::processEvents(QEventLoop::AllEvents, 50);
+    QThread::msleep(2);
+  }
+  return lastError_.isEmpty();
+}
+
+void MainWindow::cancelFigureExport() {
+  if (figureExport_) figureExport_->cancel();
+}
+
+void MainWindow::finishFigureExport(const QString& message, bool ok) {
+  figureExport_->deleteLater();
+  figureExport_ = nullptr;
+  if (!busy()) hideProgressStrip();
+  if (ok)
+    statusLabel_->setText(message);
+  else
+    showError(message);
+}
+
+void MainWindow::showProgressStrip(const QString& what) {
+  progress_->begin(what);
+  // Presenter mode hides the status bar; the class still has to see that something runs and how to stop it.
+  if (presenter_) statusBar()->show();
+}
+
+void MainWindow::hideProgressStrip() {
+  progress_->end();
+  if (presenter_) statusBar()->hide();
+}
+
+}  // namespace rt::app

@@ -1,0 +1,67 @@
+#include "app/progress_strip.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <algorithm>
+
+namespace rt::app {
+
+ProgressStrip::ProgressStrip(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QHBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  label_ = new QLabel(this);
+  label_->setObjectName("progressLabel");
+  bar_ = new QProgressBar(this);
+  bar_->setObjectName("progressBar");
+  bar_->setRange(0, 1000);
+  bar_->setMinimumWidth(220);
+  bar_->setMaximumWidth(360);
+  cancel_ = new QPushButton(tr("Cancel"), this);
+  cancel_->setObjectName("cancelButton");
+  cancel_->setToolTip(tr("Stop this computation: the previous result stays on screen"));
+  // Never a default button: Enter or Space meant for the step text must not cancel by accident.
+  cancel_->setAutoDefault(false);
+  cancel_->setFocusPolicy(Qt::NoFocus);
+  layout->addWidget(label_);
+  layout->addWidget(bar_);
+  layout->addWidget(cancel_);
+  connect(cancel_, &QPushButton::clicked, this, [this] {
+    label_->setText(tr("Cancelling %1...").arg(what_.toLower()));
+    cancel_->setEnabled(false);  // one click is enough; the job stops at its next progress check
+    emit cancelRequested();
+  });
+  hide();
+}
+
+void ProgressStrip::begin(const QString& what) {
+  what_ = what;
+  active_ = true;
+  label_->setText(what);
+  bar_->setValue(0);
+  bar_->setFormat("%p%");
+  cancel_->setEnabled(true);
+  show();
+}
+
+void ProgressStrip::setProgress(double fraction, const QString& stage) {
+  if (!active_) return;
+  bar_->setValue(static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 1000));
+  bar_->setFormat(stage.isEmpty() ? QString("%p%") : stage + "  %p%");
+}
+
+void ProgressStrip::end() {
+  active_ = false;
+  hide();
+}
+
+int ProgressStrip::value() const {
+  return bar_->value();
+}
+
+QString ProgressStrip::text() const {
+  return bar_->text();
+}
+
+}  // namespace rt::app
