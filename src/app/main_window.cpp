@@ -72,6 +72,10 @@ MainWindow::~MainWindow() {
   if (presenter_) applyLook(normalLook_);
 }
 
+bool MainWindow::viewsShown() const {
+  return !viewsPane_->isHidden();
+}
+
 bool MainWindow::busy() const {
   return runner_ && runner_->busy();
 }
@@ -111,6 +115,7 @@ void MainWindow::buildUi() {
   connect(nextButton_, &QPushButton::clicked, this, &MainWindow::nextStep);
 
   auto* right = new QSplitter(Qt::Vertical, centre);
+  viewsPane_ = right;
   viewSplitter_ = new QSplitter(Qt::Horizontal, right);
   primaryView_ = new SceneView(viewSplitter_);
   primaryView_->setObjectName("primaryView");

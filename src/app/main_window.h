@@ -98,6 +98,7 @@ class MainWindow : public QMainWindow {
   ParameterPanel* parameterPanel() const { return panel_; }
   ContentsTree* contents() const { return contents_; }
   FiguresPane* figuresPane() const { return figures_; }
+  bool viewsShown() const;
   ProgressStrip* progressStrip() const { return progress_; }
 
  signals:
@@ -149,6 +150,7 @@ class MainWindow : public QMainWindow {
   SceneView* primaryView_ = nullptr;
   SceneView* secondaryView_ = nullptr;
   QSplitter* viewSplitter_ = nullptr;
+  QWidget* viewsPane_ = nullptr;  // views, player and tabs: hidden for a step of text only
   IterationPlayer* player_ = nullptr;
   ResidualChart* chart_ = nullptr;
   MatrixView* matrix_ = nullptr;

@@ -280,6 +280,8 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
       mode_ == Mode::Lesson
           ? &library_->lessons()[static_cast<std::size_t>(lesson_)].steps[static_cast<std::size_t>(step_)]
           : nullptr;
+  // A step of text only has nothing to draw: its text takes the whole width instead of an empty view.
+  viewsPane_->setVisible(r.mesh && r.mesh->size() > 0);
   primaryView_->setScene(r.mesh.get(), r.B, r.camera, newStep);
   primaryView_->setCaption(QString::fromStdString(compare_               ? paneCaption(r)
                                                   : r.solverName.empty() ? r.title
@@ -353,6 +355,11 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
       panel_->setStep(parameters_, {}, true, surfaces);
   }
 
+  if (!r.mesh || r.mesh->size() == 0) {
+    statusLabel_->setText(tr("A step of text: Right or Page Down for the next step"));
+    emit resultShown();
+    return;
+  }
   QString status = QString("%1 elements").arg(r.mesh->size());
   if (!r.solverName.empty())
     status += QString(", %1: %2 after %3 iterations, residual %4")

@@ -2,6 +2,8 @@
 
 #include <QApplication>
 #include <QMutex>
+#include <algorithm>
+#include <cstdlib>
 
 #include "app/lesson_session.h"
 #include "support/test_paths.h"
@@ -57,6 +59,25 @@ std::unique_ptr<MainWindow> makeWindow(bool threaded, bool quick) {
 
 QRect areaOf(QWidget* window, QWidget* widget) {
   return QRect(widget->mapTo(window, QPoint(0, 0)), widget->size());
+}
+
+double differenceFromBaseline(const QImage& image, const std::string& name) {
+  const QString path = QString::fromStdString(rt::test::sourcePath("tests/baselines/" + name));
+  if (std::getenv("RT_UPDATE_BASELINES")) return image.save(path) ? 0.0 : -1.0;
+  const QImage baseline(path);
+  if (baseline.isNull() || baseline.size() != image.size()) return -1;
+  const QImage a = image.convertToFormat(QImage::Format_RGB32);
+  const QImage b = baseline.convertToFormat(QImage::Format_RGB32);
+  double sum[3] = {0, 0, 0};
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x) {
+      const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+      sum[0] += std::abs(qRed(p) - qRed(q));
+      sum[1] += std::abs(qGreen(p) - qGreen(q));
+      sum[2] += std::abs(qBlue(p) - qBlue(q));
+    }
+  const double pixels = static_cast<double>(a.width()) * a.height();
+  return std::max({sum[0], sum[1], sum[2]}) / pixels;
 }
 
 }  // namespace rt::app::test

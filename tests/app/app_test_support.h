@@ -2,9 +2,11 @@
 // window on the repository's lessons (quick parameters), and pixel checks of the 3D views.
 #pragma once
 
+#include <QImage>
 #include <QRect>
 #include <QStringList>
 #include <memory>
+#include <string>
 
 #include "app/main_window.h"
 
@@ -21,6 +23,11 @@ std::unique_ptr<MainWindow> makeWindow(bool threaded = false, bool quick = true)
 
 // The rectangle of `widget` inside the window's grab.
 QRect areaOf(QWidget* window, QWidget* widget);
+
+// Mean absolute difference per channel (0..255, the worst channel) between `image` and
+// tests/baselines/<name>, or -1 when the baseline is missing or of another size. With RT_UPDATE_BASELINES
+// set, `image` becomes the baseline (look at it before committing it).
+double differenceFromBaseline(const QImage& image, const std::string& name);
 
 }  // namespace rt::app::test
 

@@ -9,6 +9,7 @@
 #include <QMenuBar>
 #include <QSettings>
 #include <QTest>
+#include <QTextBrowser>
 
 #include "app/iteration_player.h"
 #include "app/lesson_session.h"
@@ -201,4 +202,16 @@ TEST(Interaction, RemembersTheLastPosition) {
   EXPECT_EQ(window->currentLesson(), lessonIndex(*window, "cornell-box"));
   EXPECT_EQ(window->currentStep(), 2);
   QSettings().clear();
+}
+
+TEST(Interaction, AStepOfTextGetsTheWholeWidth) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  ASSERT_TRUE(window->openLesson("hemicube", 0)) << window->lastError().toStdString();
+  EXPECT_FALSE(window->viewsShown());  // no empty grey view beside the text
+  QApplication::processEvents();       // the splitter gives the space away at the next layout pass
+  EXPECT_GT(window->textView()->width(), window->width() / 3);
+  ASSERT_TRUE(window->nextStep());
+  EXPECT_TRUE(window->viewsShown());
+  EXPECT_TRUE(window->primaryView()->hasMesh());
 }

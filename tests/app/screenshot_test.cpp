@@ -60,6 +60,36 @@ TEST(Screenshot, KeyLessonStepsShowInTheView) {
   }
 }
 
+// The 3D view of key steps against baselines (Mesa's software renderer draws the same pixels run after run;
+// the threshold absorbs small changes of shading).
+TEST(Screenshot, KeyLessonStepsMatchTheirBaselines) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->resize(1400, 900);
+  for (const auto& [lesson, step] : std::vector<std::pair<QString, int>>{
+           {"cornell-box", 1}, {"cornell-box", 3}, {"gathering", 0}, {"hemicube", 1}}) {
+    ASSERT_TRUE(window->openLesson(lesson, step)) << window->lastError().toStdString();
+    const QImage view = grabWindow(*window).copy(test::areaOf(window.get(), window->primaryView()));
+    const std::string name = "app_" + lesson.toStdString() + "_" + std::to_string(step + 1) + ".png";
+    view.save(QString::fromStdString(rt::test::scratchDir("app-baseline-" + name) + "/" + name));
+    const double difference = test::differenceFromBaseline(view, name);
+    ASSERT_GE(difference, 0.0) << "no baseline tests/baselines/" << name << " of size " << view.width() << "x"
+                               << view.height();
+    EXPECT_LT(difference, 4.0) << name;
+  }
+}
+
+// Debian's VTK Qt module is built with Qt 5: loading it next to Qt 6 crashes, so the app must never link it.
+TEST(Screenshot, TheAppLinksQt6AndNoQt5) {
+  std::string output;
+  ASSERT_EQ(rt::test::runCommand("ldd " + rt::test::binaryPath("bin/radiosity-textbook"), &output), 0)
+      << output;
+  EXPECT_NE(output.find("libQt6Widgets"), std::string::npos) << output;
+  EXPECT_NE(output.find("libQt6OpenGLWidgets"), std::string::npos) << output;
+  EXPECT_EQ(output.find("Qt5"), std::string::npos) << output;
+  EXPECT_EQ(output.find("vtkGUISupportQt"), std::string::npos) << output;
+}
+
 TEST(Screenshot, CommandLineWritesAWindowImage) {
   RT_REQUIRE_DISPLAY();
   const std::string dir = rt::test::scratchDir("app-screenshot");
