@@ -25,8 +25,12 @@ class HemicubeMethod : public FormFactorMethod {
     FormFactorMatrix F = FormFactorMatrix::Zero(n, n);
     forEachRow(mesh.size(), options, progress, "form factors (hemicube)", stats,
                [&](int i, RowCounters& counters) {
-                 const HemicubeFaces faces = renderHemicube(mesh, i, resolution);
-                 accumulateHemicubeRow(faces, F.row(i).data());
+                 // One workspace per worker thread: the face buffers are reused row after row instead of
+                 // being allocated and freed (large blocks, mapped and unmapped by the allocator every time).
+                 thread_local HemicubeWorkspace workspace;
+                 workspace.computeDepth = false;
+                 renderHemicube(mesh, i, resolution, workspace);
+                 accumulateHemicubeRow(workspace.faces, F.row(i).data());
                  for (Eigen::Index j = 0; j < n; ++j) counters.pairsComputed += F(i, j) > 0 ? 1 : 0;
                });
     stats.notes =
