@@ -103,8 +103,17 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
   result.u = (edge - edge.dot(result.normal) * result.normal).normalized();
   result.v = result.normal.cross(result.u);
 
+  // Every vertex in the eye's frame, once: elements share their vertices, so this is several times fewer
+  // transforms than per element.
   Eigen::AlignedBox3d box;
-  for (const Vec3& p : mesh.vertices) box.extend(p);
+  std::vector<Vec3>& localVertices = workspace.localVertices;
+  localVertices.resize(mesh.vertices.size());
+  for (std::size_t k = 0; k < mesh.vertices.size(); ++k) {
+    const Vec3& p = mesh.vertices[k];
+    box.extend(p);
+    const Vec3 d = p - result.origin;
+    localVertices[k] = Vec3(d.dot(result.u), d.dot(result.v), d.dot(result.normal));
+  }
   const double size = box.isEmpty() ? 1.0 : box.diagonal().norm();
   const double near = 1e-9 * size;
 
@@ -137,8 +146,7 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
     const int count = static_cast<int>(other.vertices.size());
     bool above = false;
     for (int k = 0; k < count; ++k) {
-      const Vec3 d = mesh.vertices[other.vertices[k]] - result.origin;
-      local[k] = Vec3(d.dot(result.u), d.dot(result.v), d.dot(result.normal));
+      local[k] = localVertices[other.vertices[k]];
       above |= local[k].z() > near;
     }
     if (!above) continue;  // entirely below the horizon

@@ -56,6 +56,7 @@ HemicubeFaces renderHemicube(const Mesh& mesh, int element, int resolution);
 struct HemicubeWorkspace {
   HemicubeFaces faces;
   std::array<std::vector<double>, 5> inverseDepth;
+  std::vector<Vec3> localVertices;  // every mesh vertex in the eye's frame (u, v, normal), once per hemicube
   bool computeDepth = true;  // false: leave faces[].depth empty (the matrix builder only needs the ids)
 };
 void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorkspace& workspace);
