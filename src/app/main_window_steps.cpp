@@ -303,7 +303,7 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
        step->stage == lesson::Stage::Exact);
   if (formFactorStage && stepResult->sourceElement >= 0 && stepResult->sourceElement < r.F->rows()) {
     const int source = stepResult->sourceElement;
-    primaryView_->setScalarField(r.F->row(source).transpose(), "F from element " + std::to_string(source));
+    primaryView_->setScalarField(r.F->row(source).transpose(), "F[" + std::to_string(source) + ", j]");
     primaryView_->setHighlighted({source});
     primaryView_->setCaption(tr("Form factors from element %1").arg(source));
   } else {

@@ -11,6 +11,7 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
@@ -111,16 +112,30 @@ void SceneView::setScalarField(const Eigen::VectorXd& values, const std::string&
   options_.colouring = values.size() > 0 ? viz::SceneColouring::Scalar : viz::SceneColouring::Radiosity;
   options_.legend = viz::ScalarLegend{};
   options_.legend.title = title;
+  options_.colourBar = values.size() > 0;
   if (mesh_) repaint3d();
   requestRender();
 }
 
 void SceneView::repaint3d() {
   // The viz layer's paint: the same exposure, tone map and gamma as the exported figures.
+  viz::ScenePaint paint;
   try {
-    polyData_ = viz::makeElementPolyData(*mesh_, viz::paintScene(*mesh_, data_, options_));
+    paint = viz::paintScene(*mesh_, data_, options_);
   } catch (const std::exception&) {
-    polyData_ = viz::makeElementPolyData(*mesh_, viz::ScenePaint{});  // data that does not fit: plain grey
+    paint = viz::ScenePaint{};  // data that does not fit: plain grey
+  }
+  polyData_ = viz::makeElementPolyData(*mesh_, paint);
+  if (colourBar_) renderer()->RemoveViewProp(colourBar_);
+  colourBar_ = nullptr;
+  if (paint.colourBar) {
+    // The exported figures' bar (viz), in the right-hand strip of the view.
+    colourBar_ = viz::makeColourBar(paint.legend.map, paint.legend.min, paint.legend.max,
+                                    paint.legend.logScale, paint.legend.title, 14);
+    colourBar_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    colourBar_->SetPosition(0.86, 0.12);
+    colourBar_->SetPosition2(0.13, 0.76);
+    renderer()->AddViewProp(colourBar_);
   }
   mapper_->SetInputData(polyData_);
   rebuildHighlight();
@@ -161,6 +176,10 @@ void SceneView::fitCaption() {
   const double available = width() * devicePixelRatioF() - 20;
   caption_->GetTextProperty()->SetFontSize(
       std::clamp(static_cast<int>(available / (0.6 * characters)), 11, 18));
+}
+
+bool SceneView::showsColourBar() const {
+  return colourBar_ != nullptr;
 }
 
 QString SceneView::caption() const {

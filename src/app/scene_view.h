@@ -12,6 +12,7 @@
 class vtkActor;
 class vtkPolyData;
 class vtkPolyDataMapper;
+class vtkScalarBarActor;
 class vtkTextActor;
 
 namespace rt::app {
@@ -30,8 +31,8 @@ class SceneView : public VtkWidget {
   void setRadiosity(const RgbField& B);
   // Colouring, exposure, tone map, gamma, smooth shading: the same options the figure exporters take.
   void setViewOptions(const viz::SceneViewOptions& options);
-  // Colours the elements by one value each (e.g. a row of F) through the viz colour map instead of by
-  // radiosity; an empty field returns to radiosity.
+  // Colours the elements by one value each (e.g. a row of F) through the viz colour map, with its colour bar,
+  // instead of by radiosity; an empty field returns to radiosity.
   void setScalarField(const Eigen::VectorXd& values, const std::string& title);
   const viz::SceneViewOptions& viewOptions() const { return options_; }
   const viz::SceneViewData& viewData() const { return data_; }
@@ -41,6 +42,7 @@ class SceneView : public VtkWidget {
   void setShowEdges(bool show);
   void setCaption(const QString& text);
   QString caption() const;
+  bool showsColourBar() const;
   void setHighlighted(const std::vector<int>& elements);
   const std::vector<int>& highlighted() const { return highlighted_; }
   // Copies the other view's camera (compare mode).
@@ -70,6 +72,7 @@ class SceneView : public VtkWidget {
   vtkSmartPointer<vtkActor> actor_;
   vtkSmartPointer<vtkActor> highlightActor_;
   vtkSmartPointer<vtkTextActor> caption_;
+  vtkSmartPointer<vtkScalarBarActor> colourBar_;  // scalar colourings (a row of F, errors): values readable
   std::vector<int> highlighted_;
   bool showEdges_ = false;
 };

@@ -215,3 +215,12 @@ TEST(Interaction, AStepOfTextGetsTheWholeWidth) {
   EXPECT_TRUE(window->viewsShown());
   EXPECT_TRUE(window->primaryView()->hasMesh());
 }
+
+TEST(Interaction, ARowOfFormFactorsComesWithItsColourBar) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  ASSERT_TRUE(window->openLesson("hemicube", 1)) << window->lastError().toStdString();
+  EXPECT_TRUE(window->primaryView()->showsColourBar());  // values of F are read off the bar
+  ASSERT_TRUE(window->openLesson("cornell-box", 3)) << window->lastError().toStdString();
+  EXPECT_FALSE(window->primaryView()->showsColourBar());  // radiosity is the colour itself
+}
