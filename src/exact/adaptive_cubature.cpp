@@ -90,8 +90,14 @@ std::vector<WeightedPoint> AdaptiveCubature::rulePoints(const Polygon& c) const 
 
 CubatureResult AdaptiveCubature::integrate(const Polygon& domain, const std::function<double(const Vec3&)>& f,
                                            std::vector<WeightedPoint>* finalPoints) const {
+  if (domain.size() < 3) return {};
+  return integrateCells({domain}, f, finalPoints);
+}
+
+CubatureResult AdaptiveCubature::integrateCells(const std::vector<Polygon>& cells,
+                                                const std::function<double(const Vec3&)>& f,
+                                                std::vector<WeightedPoint>* finalPoints) const {
   CubatureResult result;
-  if (domain.size() < 3) return result;
   auto rule = [&](const Polygon& cell) {
     double sum = 0;
     for (const WeightedPoint& p : rulePoints(cell)) sum += p.weight * f(p.position);
@@ -109,10 +115,13 @@ CubatureResult AdaptiveCubature::integrate(const Polygon& domain, const std::fun
   };
 
   std::vector<Polygon> start;
-  if (domain.size() <= 4) {
-    start.push_back(domain);
-  } else {
-    start = fanTriangulate(domain);
+  for (const Polygon& cell : cells) {
+    if (cell.size() < 3) continue;
+    if (cell.size() <= 4) {
+      start.push_back(cell);
+    } else {
+      for (Polygon& triangle : fanTriangulate(cell)) start.push_back(std::move(triangle));
+    }
   }
   for (int s = 0; s < settings_.initialSplits; ++s) {
     std::vector<Polygon> next;

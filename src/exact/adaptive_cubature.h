@@ -39,6 +39,11 @@ class AdaptiveCubature {
   // given, receives the points and weights of the refined rule of every final cell.
   CubatureResult integrate(const Polygon& domain, const std::function<double(const Vec3&)>& f,
                            std::vector<WeightedPoint>* finalPoints = nullptr) const;
+  // The same over a tiling of the domain into convex cells (more than 4 vertices: fan triangles), e.g. one
+  // along which the integrand has kinks: the cells' boundaries then need no refinement.
+  CubatureResult integrateCells(const std::vector<Polygon>& cells,
+                                const std::function<double(const Vec3&)>& f,
+                                std::vector<WeightedPoint>* finalPoints = nullptr) const;
   // The rule's points on one cell (3 or 4 vertices).
   std::vector<WeightedPoint> rulePoints(const Polygon& cell) const;
 

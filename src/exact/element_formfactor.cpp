@@ -9,6 +9,7 @@
 #include "exact/exact_reference.h"
 #include "exact/point_evaluator.h"
 #include "exact/shaft.h"
+#include "exact/visibility_events.h"
 
 namespace rt::exact {
 namespace {
@@ -19,7 +20,7 @@ CubatureSettings settingsFor(const ExactOptions& options, bool occluded) {
   settings.maxEvaluations = options.maxEvaluations;
   // Occluded integrands have kinks along shadow boundaries: split once before adapting so that a shadow
   // smaller than the element cannot slip between identical coarse and refined estimates.
-  settings.initialSplits = occluded ? 1 : 0;
+  settings.initialSplits = occluded && !options.splitAlongEvents ? 1 : 0;
   const double relative = occluded ? options.occludedTolerance : options.tolerance;
   const double floor = options.absoluteFloor;
   settings.tolerance = [relative, floor](double estimate) {
@@ -38,8 +39,13 @@ EntryResult integratePair(const Mesh& mesh, const PairGeometry& pair, const Exac
   const AdaptiveCubature cubature(settingsFor(options, entry.occluded));
   std::vector<WeightedPoint> finalPoints;
   const auto f = [&](const Vec3& x) { return evaluate(x); };
-  const CubatureResult result =
-      cubature.integrate(pair.integrationDomain, f, points ? &finalPoints : nullptr);
+  std::vector<Polygon> cells{pair.integrationDomain};
+  if (entry.occluded && options.splitAlongEvents) {
+    cells = splitAlongEvents(pair.integrationDomain, pair.sourceNormal, visibilityEvents(pair),
+                             kGeometricEpsilon * pair.scale * 100);
+    entry.eventCells = static_cast<long>(cells.size());
+  }
+  const CubatureResult result = cubature.integrateCells(cells, f, points ? &finalPoints : nullptr);
   const double area = mesh.elements[pair.source].area;
   entry.value = result.value / area;
   entry.errorEstimate = result.errorEstimate / area;

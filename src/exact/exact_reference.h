@@ -84,6 +84,9 @@ struct ExactOptions {
   int ruleOrder = 5;          // Gauss-Legendre points per direction of the cubature rule (unoccluded pairs)
   int occludedRuleOrder = 3;  // lower order wins where shadow boundaries put kinks into F(x)
   Booleans booleans = Booleans::Exact;
+  // Occluded pairs: split the source along the lines where F(x) has kinks (visibility events) before
+  // adapting.
+  bool splitAlongEvents = true;
 };
 
 // Options for a requested relative tolerance t as the form-factor method reads it: t for unoccluded pairs,
@@ -106,6 +109,7 @@ struct EntryResult {
   long exactEvaluations = 0;  // of which went through CGAL's exact Booleans
   long splitEvaluations = 0;  // of which went through the double-precision convex split
   bool converged = true;
+  long eventCells = 1;  // cells of the source after splitting along visibility events
 };
 
 EntryResult elementFormFactor(const Mesh& mesh, int source, int receiver, const ExactOptions& options = {},

@@ -1,0 +1,246 @@
+#include "exact/visibility_events.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "core/polygon.h"
+#include "exact/geometry_util.h"
+
+namespace rt::exact {
+namespace {
+
+struct Edge {
+  Vec3 a, b;
+  bool receiver;
+};
+
+struct Vertex {
+  Vec3 p;
+  bool receiver;
+};
+
+bool near(const Vec3& p, const Vec3& q, double eps) {
+  return (p - q).squaredNorm() <= eps * eps;
+}
+
+// The occluders as they can block: clipped to the half-spaces in front of the source and of the receiver
+// (both fixed for the pair), dropping what lies in either plane.
+std::vector<Polygon> blockingParts(const PairGeometry& pair, double eps) {
+  std::vector<Polygon> parts;
+  const Vec3& s0 = pair.sourcePolygon.front();
+  const Vec3& r0 = pair.receiverPolygon.front();
+  for (const Polygon& occluder : pair.occluderPolygons) {
+    Polygon o = clipToHalfspace(occluder, s0, pair.sourceNormal);
+    if (o.size() >= 3) o = clipToHalfspace(o, r0, pair.receiverNormal);
+    if (o.size() < 3) continue;
+    if (distanceRange(o, s0, pair.sourceNormal).second <= eps) continue;
+    if (distanceRange(o, r0, pair.receiverNormal).second <= eps) continue;
+    parts.push_back(std::move(o));
+  }
+  return parts;
+}
+
+// Edges that may bound the union of the occluders' shadows: all but those shared (reversed) by two coplanar
+// occluders, whose shadows then lie on both sides of the edge's shadow.
+std::vector<Edge> boundaryEdges(const std::vector<Polygon>& parts, double eps) {
+  std::vector<Vec3> normals;
+  for (const Polygon& p : parts) normals.push_back(newellNormal(p).normalized());
+  std::vector<Edge> edges;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const Polygon& p = parts[i];
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      const Vec3& a = p[k];
+      const Vec3& b = p[(k + 1) % p.size()];
+      if (near(a, b, eps)) continue;
+      bool inner = false;
+      for (std::size_t j = 0; j < parts.size() && !inner; ++j) {
+        if (j == i || normals[i].dot(normals[j]) < 1 - 1e-9) continue;
+        if (std::abs(normals[i].dot(parts[j].front() - p.front())) > eps) continue;
+        const Polygon& q = parts[j];
+        for (std::size_t m = 0; m < q.size() && !inner; ++m)
+          inner = near(q[m], b, eps) && near(q[(m + 1) % q.size()], a, eps);
+      }
+      if (inner) continue;
+      bool duplicate = false;  // the same edge of two non-coplanar occluders (a crease): one is enough
+      for (const Edge& e : edges)
+        duplicate =
+            duplicate || (near(e.a, b, eps) && near(e.b, a, eps)) || (near(e.a, a, eps) && near(e.b, b, eps));
+      if (!duplicate) edges.push_back({a, b, false});
+    }
+  }
+  return edges;
+}
+
+// Corners of the shadow boundary: endpoints of boundary edges where the boundary turns. A vertex in the
+// middle of a straight run of edges (a block's edge split by the mesh) is no event vertex.
+std::vector<Vertex> cornerVertices(const std::vector<Edge>& edges, double eps) {
+  struct Group {
+    Vec3 p;
+    std::vector<Vec3> directions;
+  };
+  std::vector<Group> groups;
+  auto add = [&](const Vec3& p, const Vec3& direction) {
+    for (Group& g : groups)
+      if (near(g.p, p, eps)) {
+        g.directions.push_back(direction);
+        return;
+      }
+    groups.push_back({p, {direction}});
+  };
+  for (const Edge& e : edges) {
+    const Vec3 d = (e.b - e.a).normalized();
+    add(e.a, d);
+    add(e.b, d);
+  }
+  std::vector<Vertex> corners;
+  for (const Group& g : groups) {
+    bool turns = false;
+    for (const Vec3& d : g.directions) turns = turns || d.cross(g.directions.front()).norm() > 1e-9;
+    if (turns) corners.push_back({g.p, false});
+  }
+  return corners;
+}
+
+// The parameter interval [lo, hi] of the line p + t d inside the convex polygon (in the line's plane).
+bool chord(const Polygon& polygon, const Vec3& normal, const Vec3& p, const Vec3& d, double& lo, double& hi) {
+  lo = -INFINITY;
+  hi = INFINITY;
+  Vec3 centre = Vec3::Zero();
+  for (const Vec3& c : polygon) centre += c;
+  centre /= static_cast<double>(polygon.size());
+  for (std::size_t k = 0; k < polygon.size(); ++k) {
+    const Vec3& c = polygon[k];
+    Vec3 m = normal.cross(polygon[(k + 1) % polygon.size()] - c);
+    if (m.dot(centre - c) < 0) m = -m;
+    const double f0 = m.dot(p - c), f1 = m.dot(d);  // inside: f0 + t f1 >= 0
+    if (f1 == 0) {
+      if (f0 < 0) return false;
+      continue;
+    }
+    const double t = -f0 / f1;
+    if (f1 > 0)
+      lo = std::max(lo, t);
+    else
+      hi = std::min(hi, t);
+  }
+  return lo < hi;
+}
+
+// The part of the source domain where vertex v and edge [a, b] line up as seen from x: the line where the
+// plane through v, a, b meets the source plane, restricted to the double wedge at v spanned by a and b.
+void addEvent(const Vertex& v, const Edge& e, const Polygon& domain, const Vec3& s0, const Vec3& ns,
+              double eps, std::vector<EventSegment>& out) {
+  if (near(v.p, e.a, eps) || near(v.p, e.b, eps)) return;
+  const Vec3 u = e.a - v.p, w = e.b - v.p;
+  const Vec3 n = u.cross(w);
+  const double nn = n.squaredNorm();
+  if (nn <= 1e-18 * u.squaredNorm() * w.squaredNorm()) return;  // v on the edge's line
+  Vec3 d = n.cross(ns);
+  if (d.squaredNorm() <= 1e-18 * nn) return;  // the plane is parallel to the source plane
+  d.normalize();
+  // A point on both planes: n . y = n . v and ns . y = ns . s0.
+  const double h1 = n.dot(v.p), h2 = ns.dot(s0), n12 = n.dot(ns);
+  const double det = nn - n12 * n12;  // |ns| = 1
+  const Vec3 p = ((h1 - h2 * n12) * n + (h2 * nn - h1 * n12) * ns) / det;
+  double lo, hi;
+  if (!chord(domain, ns, p, d, lo, hi)) return;
+  // y - v = alpha u + beta w, both linear in t; the event needs alpha beta >= 0.
+  auto alpha = [&](double t) { return (p + t * d - v.p).cross(w).dot(n) / nn; };
+  auto beta = [&](double t) { return u.cross(p + t * d - v.p).dot(n) / nn; };
+  std::vector<double> cuts{lo, hi};
+  for (const auto& f : {std::function<double(double)>(alpha), std::function<double(double)>(beta)}) {
+    const double f0 = f(0), slope = f(1) - f0;
+    if (slope != 0) {
+      const double root = -f0 / slope;
+      if (root > lo && root < hi) cuts.push_back(root);
+    }
+  }
+  std::sort(cuts.begin(), cuts.end());
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const double mid = 0.5 * (cuts[k] + cuts[k + 1]);
+    if (cuts[k + 1] - cuts[k] > eps && alpha(mid) * beta(mid) >= 0)
+      out.push_back({p + cuts[k] * d, p + cuts[k + 1] * d});
+  }
+}
+
+}  // namespace
+
+std::vector<EventSegment> visibilityEvents(const PairGeometry& pair) {
+  std::vector<EventSegment> events;
+  if (!pair.facing || pair.occluderPolygons.empty() || pair.integrationDomain.size() < 3) return events;
+  const double eps = kGeometricEpsilon * pair.scale * 10;
+  const Vec3& s0 = pair.sourcePolygon.front();
+  const Vec3& ns = pair.sourceNormal;
+  const Polygon receiver = clipToHalfspace(pair.receiverPolygon, s0, ns);
+  if (receiver.size() < 3) return events;
+  const std::vector<Polygon> parts = blockingParts(pair, eps);
+  if (parts.empty()) return events;
+
+  std::vector<Edge> edges = boundaryEdges(parts, eps);
+  std::vector<Vertex> vertices = cornerVertices(edges, eps);
+  const std::size_t occluderEdges = edges.size(), occluderVertices = vertices.size();
+  for (std::size_t k = 0; k < receiver.size(); ++k) {
+    edges.push_back({receiver[k], receiver[(k + 1) % receiver.size()], true});
+    vertices.push_back({receiver[k], true});
+  }
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    for (std::size_t j = 0; j < edges.size(); ++j)
+      if (i < occluderVertices || j < occluderEdges)
+        addEvent(vertices[i], edges[j], pair.integrationDomain, s0, ns, eps, events);
+  return events;
+}
+
+std::vector<Polygon> splitAlongEvents(const Polygon& domain, const Vec3& normal,
+                                      const std::vector<EventSegment>& events, double margin,
+                                      std::size_t maxCells) {
+  struct Work {
+    Polygon cell;
+    std::vector<int> candidates;  // events that crossed the parent: no other can cross this cell
+  };
+  std::vector<Polygon> cells;
+  std::vector<Work> work;
+  std::vector<int> all(events.size());
+  for (std::size_t k = 0; k < events.size(); ++k) all[k] = static_cast<int>(k);
+  work.push_back({domain, std::move(all)});
+  while (!work.empty()) {
+    Work item = std::move(work.back());
+    work.pop_back();
+    if (cells.size() + work.size() + 1 >= maxCells) {
+      cells.push_back(std::move(item.cell));
+      continue;
+    }
+    std::vector<int> crossing;
+    for (int k : item.candidates) {
+      const EventSegment& e = events[k];
+      const Vec3 d = e.b - e.a;
+      const double length = d.norm();
+      if (length <= margin) continue;
+      const Vec3 m = d.cross(normal) / length;
+      double lo = INFINITY, hi = -INFINITY;
+      for (const Vec3& c : item.cell) {
+        const double s = m.dot(c - e.a);
+        lo = std::min(lo, s);
+        hi = std::max(hi, s);
+      }
+      if (lo >= -margin || hi <= margin) continue;
+      double t0, t1;  // chord of the line in the cell, in units of the segment's length
+      if (!chord(item.cell, normal, e.a, d / length, t0, t1)) continue;
+      if (std::min(t1, length) - std::max(t0, 0.0) > margin) crossing.push_back(k);
+    }
+    if (crossing.empty()) {
+      cells.push_back(std::move(item.cell));
+      continue;
+    }
+    const EventSegment& e = events[crossing.front()];
+    const Vec3 m = (e.b - e.a).cross(normal).normalized();
+    crossing.erase(crossing.begin());
+    for (const Vec3& side : {m, Vec3(-m)}) {
+      Polygon half = clipToHalfspace(item.cell, e.a, side);
+      if (half.size() >= 3) work.push_back({std::move(half), crossing});
+    }
+  }
+  return cells;
+}
+
+}  // namespace rt::exact
