@@ -6,15 +6,27 @@
 namespace rt::exact {
 
 Polygon clipToHalfspace(const Polygon& polygon, const Vec3& point, const Vec3& normal) {
+  Polygon out;
+  clipToHalfspace(polygon, point, normal, out);
+  return out;
+}
+
+void clipToHalfspace(const Polygon& polygon, const Vec3& point, const Vec3& normal, Polygon& out) {
   const std::size_t n = polygon.size();
-  std::vector<double> side(n);
+  constexpr std::size_t kStack = 64;
+  double stackSide[kStack];
+  std::vector<double> heapSide(n > kStack ? n : 0);
+  double* side = n > kStack ? heapSide.data() : stackSide;
   bool allInside = true;
   for (std::size_t k = 0; k < n; ++k) {
     side[k] = normal.dot(polygon[k] - point);
     allInside = allInside && side[k] >= 0;
   }
-  if (allInside) return polygon;
-  Polygon out;
+  out.clear();
+  if (allInside) {
+    out.assign(polygon.begin(), polygon.end());
+    return;
+  }
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t l = (k + 1) % n;
     if (side[k] >= 0) out.push_back(polygon[k]);
@@ -24,7 +36,6 @@ Polygon clipToHalfspace(const Polygon& polygon, const Vec3& point, const Vec3& n
     }
   }
   if (out.size() < 3) out.clear();
-  return out;
 }
 
 Eigen::AlignedBox3d boundsOf(const Polygon& polygon) {

@@ -8,11 +8,10 @@
 #include "exact/geometry_util.h"
 
 namespace rt::exact {
-namespace {
 
 // -(1/2pi) sum_k beta_k n . gamma_k for a closed contour, without any facing test: positive for a contour
 // that is CCW seen from the side x is on, negative for a clockwise one (so holes subtract).
-double contourSum(const Vec3& x, const Vec3& n, const Polygon& contour) {
+double lambertContourSum(const Vec3& x, const Vec3& n, const Polygon& contour) {
   double sum = 0;
   const std::size_t count = contour.size();
   for (std::size_t k = 0; k < count; ++k) {
@@ -27,8 +26,6 @@ double contourSum(const Vec3& x, const Vec3& n, const Polygon& contour) {
   return -sum / (2 * std::numbers::pi);
 }
 
-}  // namespace
-
 double PolygonWithHoles::area() const {
   double a = polygonArea(outer);
   for (const Polygon& h : holes) a -= polygonArea(h);
@@ -39,7 +36,7 @@ double pointToPolygonFormFactor(const Vec3& x, const Vec3& n, const Polygon& pol
   if (polygon.size() < 3) return 0;
   const Vec3 front = newellNormal(polygon);
   if ((x - polygon[0]).dot(front) <= 0) return 0;  // x sees the back (or the polygon edge-on)
-  return std::max(0.0, contourSum(x, n, polygon));
+  return std::max(0.0, lambertContourSum(x, n, polygon));
 }
 
 double pointToPolygonFormFactorClipped(const Vec3& x, const Vec3& n, const Polygon& polygon) {
@@ -52,8 +49,8 @@ double pointToRegionFormFactor(const Vec3& x, const Vec3& n, const std::vector<P
     if (region.outer.size() < 3) continue;
     const Vec3 front = newellNormal(region.outer);
     if ((x - region.outer[0]).dot(front) <= 0) continue;
-    total += contourSum(x, n, region.outer);
-    for (const Polygon& hole : region.holes) total += contourSum(x, n, hole);
+    total += lambertContourSum(x, n, region.outer);
+    for (const Polygon& hole : region.holes) total += lambertContourSum(x, n, hole);
   }
   return std::max(0.0, total);
 }

@@ -10,49 +10,60 @@
 namespace rt::exact {
 namespace {
 
-struct ConePlane {
-  Vec3 normal;  // unit, pointing into the pyramid
-  double distance(const Vec3& p, const Vec3& apex) const { return normal.dot(p - apex); }
-};
+// Appends a slot to a pool of polygons that keeps the slots' storage between points.
+Polygon& slot(std::vector<Polygon>& pool, std::size_t& count) {
+  if (count == pool.size()) pool.emplace_back();
+  return pool[count++];
+}
 
-enum class Relation { Outside, Covers, Unknown };
+}  // namespace
 
-// How one occluder relates to the pyramid from x over the clipped receiver `rc`, decided in double precision
-// with a margin `eps`; Unknown whenever the margin does not prove Outside or Covers.
-Relation classify(const Polygon& occluder, const Vec3& x, const Polygon& rc,
-                  const std::vector<ConePlane>& cone, const Vec3& receiverPoint, const Vec3& receiverNormal,
-                  double eps) {
-  for (const ConePlane& plane : cone) {
+PointEvaluator::PointEvaluator(const PairGeometry& pair, Booleans booleans)
+    : pair_(pair), booleans_(booleans) {
+  if (pair.sourcePolygon.empty() || pair.receiverPolygon.empty()) return;
+  receiver_ = clipToHalfspace(pair.receiverPolygon, pair.sourcePolygon.front(), pair.sourceNormal);
+  if (receiver_.size() >= 3) receiverArea_ = polygonArea(receiver_);
+  for (const Polygon& polygon : pair.occluderPolygons) {
+    Occluder occluder{&polygon, Vec3::Zero(), {}, {}};
+    const Vec3 n = newellNormal(polygon);
+    if (n.norm() > 0) occluder.normal = n.normalized();
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      const Vec3 inward = occluder.normal.cross(polygon[(k + 1) % polygon.size()] - polygon[k]);
+      occluder.inward.push_back(inward.norm() > 0 ? Vec3(inward.normalized()) : Vec3::Zero());
+    }
+    occluder.inFrontOfReceiver =
+        clipToHalfspace(polygon, pair.receiverPolygon.front(), pair.receiverNormal);  // beyond it: no shadow
+    occluders_.push_back(std::move(occluder));
+  }
+}
+
+// How one occluder relates to the pyramid from x over the clipped receiver, decided in double precision with
+// a margin `eps`; Unknown whenever the margin does not prove Outside or Covers.
+PointEvaluator::Relation PointEvaluator::classify(const Occluder& occluder, const Vec3& x, double eps) const {
+  const Polygon& polygon = *occluder.polygon;
+  for (const Vec3& plane : cone_) {
     double hi = -INFINITY;
-    for (const Vec3& v : occluder) hi = std::max(hi, plane.distance(v, x));
+    for (const Vec3& v : polygon) hi = std::max(hi, plane.dot(v - x));
     if (hi <= eps) return Relation::Outside;
   }
-  if (distanceRange(occluder, receiverPoint, receiverNormal).second <= eps) return Relation::Outside;
-
-  Vec3 n = newellNormal(occluder);
-  const double len = n.norm();
-  if (len == 0) return Relation::Outside;
-  n /= len;
-  const Vec3& o = occluder.front();
+  if (distanceRange(polygon, pair_.receiverPolygon.front(), pair_.receiverNormal).second <= eps)
+    return Relation::Outside;
+  const Vec3& n = occluder.normal;
+  if (n.isZero()) return Relation::Outside;
+  const Vec3& o = polygon.front();
   const double dx = n.dot(x - o);
-  const auto [lo, hi] = distanceRange(rc, o, n);
+  const auto [lo, hi] = distanceRange(receiver_, o, n);
   // The occluder's plane does not cut any segment from x to the receiver.
   if ((dx >= eps && lo >= eps) || (dx <= -eps && hi <= -eps)) return Relation::Outside;
   // The plane separates x from the whole receiver: covered when every corner ray pierces the occluder inside.
   const bool separates = (dx > eps && hi < -eps) || (dx < -eps && lo > eps);
   if (!separates) return Relation::Unknown;
-  const std::size_t m = occluder.size();
-  for (const Vec3& c : rc) {
+  for (const Vec3& c : receiver_) {
     const double dc = n.dot(c - o);
     const Vec3 q = x + (dx / (dx - dc)) * (c - x);
-    for (std::size_t k = 0; k < m; ++k) {
-      const Vec3& a = occluder[k];
-      const Vec3& b = occluder[(k + 1) % m];
-      Vec3 inward = n.cross(b - a);
-      const double el = inward.norm();
-      if (el == 0) continue;
-      inward /= el;
-      if (inward.dot(q - a) <= eps) return Relation::Unknown;
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      if (occluder.inward[k].isZero()) continue;
+      if (occluder.inward[k].dot(q - polygon[k]) <= eps) return Relation::Unknown;
     }
   }
   return Relation::Covers;
@@ -63,99 +74,95 @@ Relation classify(const Polygon& occluder, const Vec3& x, const Polygon& rc,
 // plane), so subtracting it means splitting each convex piece by the cone's side planes and dropping the part
 // inside all of them. Rounding can only move piece boundaries by ~1e-16 of the scene size; it never drops or
 // duplicates an area.
-void subtractShadow(const Vec3& x, const Polygon& occluder, const Vec3& receiverPoint,
-                    const Vec3& receiverNormal, double eps, double minArea, std::vector<Polygon>& pieces) {
-  Polygon o =
-      clipToHalfspace(occluder, receiverPoint, receiverNormal);  // beyond the receiver plane: no shadow
+void PointEvaluator::subtractShadow(const Vec3& x, const Occluder& occluder, double eps,
+                                    double minArea) const {
+  if (occluder.inFrontOfReceiver.size() < 3 || occluder.normal.isZero()) return;
+  clipToHalfspace(occluder.inFrontOfReceiver, x, -pair_.receiverNormal, clipped_);  // behind x: no shadow
+  const Polygon& o = clipped_;
   if (o.size() < 3) return;
-  o = clipToHalfspace(o, x, -receiverNormal);  // farther from the receiver plane than x: behind x
-  if (o.size() < 3) return;
-  Vec3 on = newellNormal(o);
-  const double len = on.norm();
-  if (len == 0) return;
-  on /= len;
-  if (std::abs(on.dot(x - o.front())) <= eps) return;  // seen edge-on: no area
+  if (std::abs(occluder.normal.dot(x - o.front())) <= eps) return;  // seen edge-on: no area
   Vec3 centre = Vec3::Zero();
   for (const Vec3& v : o) centre += v;
   centre /= static_cast<double>(o.size());
-  std::vector<Vec3> sides;
+  cone_.clear();  // reused for the occluder's cone: the receiver's is no longer needed
   for (std::size_t k = 0; k < o.size(); ++k) {
     Vec3 m = (o[k] - x).cross(o[(k + 1) % o.size()] - x);
     const double ml = m.norm();
     if (ml == 0) continue;
     m /= ml;
     if (m.dot(centre - x) < 0) m = -m;
-    sides.push_back(m);
+    cone_.push_back(m);
   }
-  std::vector<Polygon> result;
-  for (const Polygon& piece : pieces) {
-    Polygon inside = piece;
-    for (const Vec3& m : sides) {
-      Polygon outside = clipToHalfspace(inside, x, -m);
+  std::size_t nextCount = 0;
+  for (std::size_t p = 0; p < pieceCount_; ++p) {
+    inside_ = work_[p];
+    for (const Vec3& m : cone_) {
+      clipToHalfspace(inside_, x, -m, outside_);
       // Slivers from shadow planes that coincide up to rounding (occluders sharing edges) carry no area:
       // dropping them keeps the piece count from growing with every coincident plane.
-      if (!outside.empty() && polygonArea(outside) > minArea) result.push_back(std::move(outside));
-      inside = clipToHalfspace(inside, x, m);
-      if (inside.empty()) break;
+      if (!outside_.empty() && polygonArea(outside_) > minArea) std::swap(slot(next_, nextCount), outside_);
+      clipToHalfspace(inside_, x, m, outside_);
+      std::swap(inside_, outside_);
+      if (inside_.empty()) break;
     }
   }
-  pieces = std::move(result);
+  std::swap(work_, next_);
+  pieceCount_ = nextCount;
 }
-
-}  // namespace
 
 double PointEvaluator::operator()(const Vec3& x) const {
   ++evaluations_;
-  const Vec3& r0 = pair_.receiverPolygon.front();
-  if (pair_.receiverNormal.dot(x - r0) <= 0) return 0;
-  const Polygon rc = clipToHalfspace(pair_.receiverPolygon, x, pair_.sourceNormal);
-  if (rc.size() < 3) return 0;
-  if (pair_.occluderPolygons.empty()) return pointToPolygonFormFactor(x, pair_.sourceNormal, rc);
+  if (pair_.receiverNormal.dot(x - pair_.receiverPolygon.front()) <= 0) return 0;
+  if (receiver_.size() < 3) return 0;
+  if (occluders_.empty()) return std::max(0.0, lambertContourSum(x, pair_.sourceNormal, receiver_));
 
   const double eps = kGeometricEpsilon * pair_.scale * 10;
   Vec3 centre = Vec3::Zero();
-  for (const Vec3& c : rc) centre += c;
-  centre /= static_cast<double>(rc.size());
-  std::vector<ConePlane> cone;
-  for (std::size_t k = 0; k < rc.size(); ++k) {
-    Vec3 n = (rc[k] - x).cross(rc[(k + 1) % rc.size()] - x);
+  for (const Vec3& c : receiver_) centre += c;
+  centre /= static_cast<double>(receiver_.size());
+  cone_.clear();
+  for (std::size_t k = 0; k < receiver_.size(); ++k) {
+    Vec3 n = (receiver_[k] - x).cross(receiver_[(k + 1) % receiver_.size()] - x);
     const double len = n.norm();
     if (len == 0) continue;
     n /= len;
     if (n.dot(centre - x) < 0) n = -n;
-    cone.push_back({n});
+    cone_.push_back(n);
   }
-  std::vector<const Polygon*> uncertain;
-  for (const Polygon& occluder : pair_.occluderPolygons) {
-    switch (classify(occluder, x, rc, cone, r0, pair_.receiverNormal, eps)) {
+  uncertain_.clear();
+  for (const Occluder& occluder : occluders_) {
+    switch (classify(occluder, x, eps)) {
       case Relation::Covers:
         return 0;
       case Relation::Outside:
         break;
       case Relation::Unknown:
-        uncertain.push_back(&occluder);
+        uncertain_.push_back(&occluder);
         break;
     }
   }
-  if (uncertain.empty()) return pointToPolygonFormFactor(x, pair_.sourceNormal, rc);
+  if (uncertain_.empty()) return std::max(0.0, lambertContourSum(x, pair_.sourceNormal, receiver_));
   if (booleans_ == Booleans::Exact) {
     ++exactEvaluations_;
     std::vector<Polygon> occluders;
-    for (const Polygon* o : uncertain) occluders.push_back(*o);
+    for (const Occluder* o : uncertain_) occluders.push_back(*o->polygon);
     const detail::ExactVisibility visibility = detail::exactVisibility(
         x, pair_.sourceNormal, pair_.receiverPolygon, pair_.receiverNormal, occluders);
     return pointToRegionFormFactor(x, pair_.sourceNormal, visibility.visible);
   }
   ++splitEvaluations_;
-  std::vector<Polygon> pieces{rc};
-  const double minArea = 1e-15 * polygonArea(rc);
-  for (const Polygon* o : uncertain) {
-    subtractShadow(x, *o, r0, pair_.receiverNormal, eps, minArea, pieces);
-    if (pieces.empty()) return 0;
+  // x sees the receiver's front (tested above), and the pieces keep its orientation: no facing test per
+  // piece.
+  pieceCount_ = 0;
+  slot(work_, pieceCount_) = receiver_;
+  const double minArea = 1e-15 * receiverArea_;
+  for (const Occluder* o : uncertain_) {
+    subtractShadow(x, *o, eps, minArea);
+    if (pieceCount_ == 0) return 0;
   }
   double total = 0;
-  for (const Polygon& piece : pieces) total += pointToPolygonFormFactor(x, pair_.sourceNormal, piece);
-  return total;
+  for (std::size_t p = 0; p < pieceCount_; ++p) total += lambertContourSum(x, pair_.sourceNormal, work_[p]);
+  return std::max(0.0, total);
 }
 
 }  // namespace rt::exact
