@@ -14,7 +14,7 @@
 namespace rt::exact {
 namespace {
 
-CubatureSettings settingsFor(const ExactOptions& options, bool occluded) {
+CubatureSettings settingsFor(const ExactOptions& options, bool occluded, double sourceArea) {
   CubatureSettings settings;
   settings.order = occluded ? options.occludedRuleOrder : options.ruleOrder;
   settings.maxEvaluations = options.maxEvaluations;
@@ -22,7 +22,9 @@ CubatureSettings settingsFor(const ExactOptions& options, bool occluded) {
   // smaller than the element cannot slip between identical coarse and refined estimates.
   settings.initialSplits = occluded && !options.splitAlongEvents ? 1 : 0;
   const double relative = occluded ? options.occludedTolerance : options.tolerance;
-  const double floor = options.absoluteFloor;
+  // The cubature integrates A_i F(x): the floor, a form factor, scales with the source's area (so that a scene
+  // in millimetres and the same scene in metres get the same targets).
+  const double floor = options.absoluteFloor * sourceArea;
   settings.tolerance = [relative, floor](double estimate) {
     return relative * std::max(std::abs(estimate), floor);
   };
@@ -36,7 +38,7 @@ EntryResult integratePair(const Mesh& mesh, const PairGeometry& pair, const Exac
   entry.occluded = !pair.occluders.empty();
   if (!pair.facing) return entry;
   const PointEvaluator evaluate(pair, options.booleans);
-  const AdaptiveCubature cubature(settingsFor(options, entry.occluded));
+  const AdaptiveCubature cubature(settingsFor(options, entry.occluded, mesh.elements[pair.source].area));
   std::vector<WeightedPoint> finalPoints;
   const auto f = [&](const Vec3& x) { return evaluate(x); };
   std::vector<Polygon> cells{pair.integrationDomain};

@@ -77,8 +77,8 @@ enum class Booleans {
 struct ExactOptions {
   double tolerance = 1e-9;          // relative, pairs with no occluder in the shaft
   double occludedTolerance = 1e-7;  // relative, pairs with occluders (shadow boundaries make F(x) non-smooth)
-  // Entries smaller than this are computed to tolerance * floor absolutely (a relative target on ~0 is
-  // meaningless).
+  // Entries F_ij smaller than this are computed to tolerance * floor absolutely (a relative target on ~0 is
+  // meaningless). A form factor, so independent of the scene's unit of length.
   double absoluteFloor = 1e-6;
   long maxEvaluations = 400000;  // per entry; the error estimate tells when it was not enough
   int ruleOrder = 5;          // Gauss-Legendre points per direction of the cubature rule (unoccluded pairs)

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numbers>
 
 #include "core/formfactor/formfactor_method.h"
 #include "exact/exact_reference.h"
@@ -101,6 +102,46 @@ TEST(ExactMethod, CubaturePointsReproduceTheEntry) {
   EXPECT_NEAR(integral / mesh.elements[floor].area, entry.value, 1e-14);
   EXPECT_LT(entry.value, 0.19982489569838738);  // the boxes take their share of the unoccluded C-11 value
   EXPECT_GT(entry.value, 0.1);
+}
+
+TEST(ExactMethod, TheSameSceneInAnotherUnitGivesTheSameEntriesForTheSameWork) {
+  // Metres or millimetres: tolerances, margins and the floor for tiny entries are all relative, so the work
+  // and the result agree (up to rounding steering the adaptive refinement a little differently).
+  auto scaled = [](std::vector<Polygon> polygons, double factor) {
+    for (Polygon& p : polygons)
+      for (Vec3& v : p) v *= factor;
+    return polygons;
+  };
+  const ExactOptions options = exactOptionsFor(1e-6);
+  // Two 1 cm squares 10 m apart: F ~ 3e-7, below the floor of 1e-6, in both units.
+  const std::vector<Polygon> far{test::axisRectangle(2, 0, {0, 0, 0}, {0.01, 0.01, 0}, true),
+                                 test::axisRectangle(2, 10, {0, 0, 10}, {0.01, 0.01, 10}, false)};
+  const EntryResult m = elementFormFactor(test::meshFromPolygons(far), 0, 1, options);
+  const EntryResult mm = elementFormFactor(test::meshFromPolygons(scaled(far, 1000)), 0, 1, options);
+  EXPECT_NEAR(m.value, 1e-4 / (std::numbers::pi * 100), 1e-3 * m.value);
+  EXPECT_NEAR(mm.value, m.value, 1e-6 * m.value);
+  EXPECT_EQ(mm.evaluations, m.evaluations);
+
+  std::vector<Polygon> room = test::roomFaces({0, 0, 0}, {1, 1, 1});
+  for (const Polygon& f : test::boxFaces({0.2, 0.1, 0.2}, {0.45, 0.4, 0.5}, true)) room.push_back(f);
+  const Mesh unit = test::meshFromPolygons(room, 2),
+             millimetres = test::meshFromPolygons(scaled(room, 1000), 2);
+  // A floor above every entry makes all targets absolute: they must scale with the unit too.
+  ExactOptions floored = exactOptionsFor(1e-3);
+  floored.absoluteFloor = 0.5;
+  int occluded = 0;
+  for (const ExactOptions& o : {options, floored})
+    for (int source = 0; source < 8; ++source)
+      for (int receiver = 8; receiver < static_cast<int>(unit.size()); receiver += 5) {
+        const EntryResult a = elementFormFactor(unit, source, receiver, o);
+        const EntryResult b = elementFormFactor(millimetres, source, receiver, o);
+        occluded += a.occluded ? 1 : 0;
+        EXPECT_EQ(a.occluded, b.occluded);
+        EXPECT_NEAR(a.value, b.value, 2 * o.tolerance * std::max(a.value, o.absoluteFloor) + 1e-12)
+            << source << " -> " << receiver;
+        EXPECT_NEAR((b.evaluations + 1.0) / (a.evaluations + 1.0), 1.0, 0.5);
+      }
+  EXPECT_GT(occluded, 0);
 }
 
 TEST(ExactMethod, ErrorMapIsTheAbsoluteDifference) {
