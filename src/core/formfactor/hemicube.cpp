@@ -43,6 +43,16 @@ struct ProjectedPolygon {
   double k0 = 0, k1 = 0, k2 = 0;
 };
 
+// True when the sphere lies entirely outside one of the four side planes of the face's frustum, widened by
+// `margin` as the clipping below widens it (so the test only ever skips what the outcodes would reject).
+bool sphereOutsideFrustum(const Vec3& centre, double radius, const HemicubeFaceAxes& face, double margin) {
+  const double x = centre.dot(face.across), y = centre.dot(face.up), z = centre.dot(face.forward);
+  const double w = 1 + margin, low = face.upMin - margin;
+  const double wideNorm = std::sqrt(1 + w * w), lowNorm = std::sqrt(1 + low * low);
+  return x - w * z > radius * wideNorm || -x - w * z > radius * wideNorm || y - w * z > radius * wideNorm ||
+         low * z - y > radius * lowNorm;
+}
+
 }  // namespace
 
 HemicubeFaceAxes hemicubeFaceAxes(HemicubeFace face) {
@@ -150,6 +160,14 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
       above |= local[k].z() > near;
     }
     if (!above) continue;  // entirely below the horizon
+    // A bounding sphere in the eye's frame rejects most (element, face) combinations with a few dot products
+    // before the per-vertex outcodes: a small element lies on one or two of the five faces.
+    Vec3 centre = Vec3::Zero();
+    for (int k = 0; k < count; ++k) centre += local[k];
+    centre /= count;
+    double radius = 0;
+    for (int k = 0; k < count; ++k) radius = std::max(radius, (local[k] - centre).squaredNorm());
+    radius = std::sqrt(radius) * (1 + 1e-9) + near;
     // The plane of the element in local coordinates: m . p = c.
     const Vec3 m(other.normal.dot(result.u), other.normal.dot(result.v), other.normal.dot(result.normal));
     const double c = m.dot(local[0]);
@@ -157,9 +175,10 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
     for (int f = 0; f < 5; ++f) {
       const HemicubeFaceAxes& face = axes[f];
       HemicubeFaceBuffer& buffer = result.faces[f];
+      constexpr double margin = 1e-3;
+      if (sphereOutsideFrustum(centre, radius, face, margin)) continue;
       // Face coordinates (across, up, depth), then clip against the near plane depth >= near.
       std::array<Vec3, 16> in, clipped;
-      constexpr double margin = 1e-3;
       // Outcodes against the five frustum planes: reject when all vertices are outside one of them, skip
       // clipping when all are inside every one (the common cases).
       unsigned allOutside = 31, anyOutside = 0;

@@ -3,6 +3,7 @@
 // point-at-centroid assumption, which is poor for adjacent elements. Rows are independent, so no reciprocity
 // is used.
 #include <algorithm>
+#include <vector>
 
 #include "core/formfactor/analytic_method.h"
 #include "core/formfactor/hemicube.h"
@@ -30,8 +31,14 @@ class HemicubeMethod : public FormFactorMethod {
                  thread_local HemicubeWorkspace workspace;
                  workspace.computeDepth = false;
                  renderHemicube(mesh, i, resolution, workspace);
-                 accumulateHemicubeRow(workspace.faces, F.row(i).data());
-                 for (Eigen::Index j = 0; j < n; ++j) counters.pairsComputed += F(i, j) > 0 ? 1 : 0;
+                 // Accumulate in a cache-resident row, then write the matrix row once: the matrix's fresh
+                 // pages are first touched by a write, not by the read of "+=" (which maps the shared zero
+                 // page and then pays a copy-on-write fault with a TLB flush on every core).
+                 thread_local std::vector<double> row;
+                 row.assign(static_cast<std::size_t>(n), 0.0);
+                 accumulateHemicubeRow(workspace.faces, row.data());
+                 std::copy(row.begin(), row.end(), F.row(i).data());
+                 for (double value : row) counters.pairsComputed += value > 0 ? 1 : 0;
                });
     stats.notes =
         "hemicube " + std::to_string(resolution) + "x" + std::to_string(resolution) + " at centroids";
