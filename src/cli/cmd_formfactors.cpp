@@ -1,13 +1,19 @@
 // radiosity formfactors SCENE [--method NAME] [mesh options] [--resolution R] [--samples N] [--seed S]
 //                            [--tolerance T]
 //                            [--enforce-reciprocity] [--normalize-rows] [--output F.csv|F.mtx|F.npy|F.tex]
-// Computes the form-factor matrix of a scene's mesh, prints one summary line and one diagnostics line.
+//                            [--compare-to REFERENCE.npy]
+// Computes the form-factor matrix of a scene's mesh, prints one summary line and one diagnostics line, and
+// with --compare-to one line of its error against a reference matrix saved earlier (e.g. by --method exact).
+#include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "core/formfactor/formfactor_method.h"
+#include "core/input_error.h"
 #include "core/io/matrix_export.h"
+#include "core/io/matrix_import.h"
 
 namespace rt::cli {
 namespace {
@@ -21,12 +27,39 @@ struct FormFactorsArguments {
   bool normalizeRows = false;
   bool quiet = false;
   std::string output;
+  std::string compareTo;
 };
+
+// One line: RMS and largest error of F against the reference, and the RMS error relative to the reference's
+// RMS (the figure that says "F to 1 %").
+void checkShape(const Eigen::MatrixXd& reference, Eigen::Index n, const std::string& path) {
+  if (reference.rows() != n || reference.cols() != n)
+    throw InputError({path, 0, {}}, "the reference is " + std::to_string(reference.rows()) + " x " +
+                                        std::to_string(reference.cols()) + ", this mesh has " +
+                                        std::to_string(n) + " elements (same scene and mesh options?)");
+}
+
+void printComparison(const FormFactorMatrix& F, const Eigen::MatrixXd& reference, const std::string& path) {
+  const Eigen::MatrixXd difference = F - reference;
+  Eigen::Index row = 0, col = 0;
+  const double largest = difference.cwiseAbs().maxCoeff(&row, &col);
+  const double rms = std::sqrt(difference.squaredNorm() / static_cast<double>(difference.size()));
+  const double norm = reference.norm();
+  const double rowSums = (F.rowwise().sum() - reference.rowwise().sum()).cwiseAbs().maxCoeff();
+  std::printf(
+      "against %s: rms error %.3e, relative rms %.3g %%, max error %.3e at (%ld, %ld), max row-sum "
+      "difference %.3e\n",
+      path.c_str(), rms, norm > 0 ? 100 * difference.norm() / norm : 0.0, largest, static_cast<long>(row),
+      static_cast<long>(col), rowSums);
+}
 
 void run(const FormFactorsArguments& a) {
   const Scene scene = loadSceneReportingWarnings(a.scene);
   const Mesh mesh = buildMesh(scene, a.mesh.options());
   const auto method = makeFormFactorMethod(a.method);
+  // Read the reference first: a wrong path should not cost a whole computation.
+  const Eigen::MatrixXd reference = a.compareTo.empty() ? Eigen::MatrixXd() : readNpyMatrix(a.compareTo);
+  if (!a.compareTo.empty()) checkShape(reference, static_cast<Eigen::Index>(mesh.size()), a.compareTo);
   FormFactorStats stats;
   ProgressLine progress(!a.quiet);
   FormFactorMatrix F = method->compute(mesh, a.options, progress, stats);
@@ -43,6 +76,8 @@ void run(const FormFactorsArguments& a) {
   }
   std::cout << a.method << ": " << stats.summary() << "\n";
   std::cout << "diagnostics: " << diagnose(F, areas).summary() << repairs << "\n";
+  std::cout.flush();
+  if (!a.compareTo.empty()) printComparison(F, reference, a.compareTo);
   if (!a.output.empty()) {
     writeMatrix(F, a.output);
     std::cout << "wrote " << a.output << " (" << F.rows() << " x " << F.cols() << ")\n";
@@ -77,6 +112,9 @@ void addFormFactorsCommand(CLI::App& app) {
                    "is below it; occluded pairs take much longer at small values)")
       ->check(CLI::Range(1e-14, 0.5))
       ->capture_default_str();
+  command->add_option(
+      "--compare-to", arguments->compareTo,
+      "Print the error against a reference matrix (.npy, e.g. written by --method exact --output)");
   command->add_option("--seed", arguments->options.seed, "Seed of the stochastic methods")
       ->capture_default_str();
   command->add_option("--threads", arguments->options.threads, "Worker threads (0 = all cores)")

@@ -69,5 +69,50 @@ TEST(FormFactorsCommand, ToleranceOutOfRangeIsRejectedByName) {
   EXPECT_NE(log.find("--tolerance"), std::string::npos) << log;
 }
 
+TEST(FormFactorsCommand, ComparesWithAReferenceMatrixSavedEarlier) {
+  const std::string dir = scratchDir("formfactors-compare");
+  const std::string scene = sourcePath("scenes/cornell-box.json") + " --subdivide 2 --quiet";
+  std::string log;
+  ASSERT_EQ(
+      runCommand(cliPath() + " formfactors " + scene + " --method analytic --output " + dir + "/A.npy", &log),
+      0)
+      << log;
+  // Against itself: no error at all.
+  ASSERT_EQ(
+      runCommand(cliPath() + " formfactors " + scene + " --method analytic --compare-to " + dir + "/A.npy",
+                 &log),
+      0)
+      << log;
+  EXPECT_NE(log.find("rms error 0.000e+00, relative rms 0 %, max error 0.000e+00"), std::string::npos) << log;
+  // The hemicube sees the blocks, the unoccluded analytic does not: a visible difference.
+  ASSERT_EQ(
+      runCommand(cliPath() + " formfactors " + scene + " --method hemicube --compare-to " + dir + "/A.npy",
+                 &log),
+      0)
+      << log;
+  EXPECT_NE(log.find("against " + dir + "/A.npy: rms error "), std::string::npos) << log;
+  EXPECT_EQ(log.find("rms error 0.000e+00"), std::string::npos) << log;
+}
+
+TEST(FormFactorsCommand, AReferenceOfAnotherMeshOrNoMatrixIsAClearError) {
+  const std::string dir = scratchDir("formfactors-compare-errors");
+  const std::string scene = sourcePath("scenes/cornell-box.json") + " --quiet";
+  std::string log;
+  ASSERT_EQ(
+      runCommand(cliPath() + " formfactors " + scene + " --subdivide 2 --output " + dir + "/A.npy", &log), 0)
+      << log;
+  EXPECT_NE(
+      runCommand(cliPath() + " formfactors " + scene + " --subdivide 3 --compare-to " + dir + "/A.npy", &log),
+      0);
+  EXPECT_NE(log.find("A.npy: error: the reference is 80 x 80, this mesh has 180 elements"), std::string::npos)
+      << log;
+  std::ofstream(dir + "/junk.npy") << "not a matrix";
+  EXPECT_NE(runCommand(cliPath() + " formfactors " + scene + " --compare-to " + dir + "/junk.npy", &log), 0);
+  EXPECT_NE(log.find("junk.npy: error: not a NumPy .npy file"), std::string::npos) << log;
+  EXPECT_NE(runCommand(cliPath() + " formfactors " + scene + " --compare-to " + dir + "/missing.npy", &log),
+            0);
+  EXPECT_NE(log.find("missing.npy: error: cannot open the file"), std::string::npos) << log;
+}
+
 }  // namespace
 }  // namespace rt::test
