@@ -1,5 +1,7 @@
 #include "viz/vtk_render.h"
 
+#include "viz/display_check.h"
+
 #include <vtkContextView.h>
 #include <vtkImageData.h>
 #include <vtkLookupTable.h>
@@ -87,6 +89,7 @@ vtkSmartPointer<vtkRenderWindow> makeOffscreenWindow(int width, int height) {
   if (width < 16 || height < 16 || width > 16384 || height > 16384)
     throw std::invalid_argument("figure size " + std::to_string(width) + " x " + std::to_string(height) +
                                 " is outside 16..16384 pixels");
+  requireDisplay();
   auto window = vtkSmartPointer<vtkRenderWindow>::New();
   window->SetOffScreenRendering(1);
   window->SetSize(width, height);

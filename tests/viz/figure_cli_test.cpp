@@ -93,8 +93,8 @@ INSTANTIATE_TEST_SUITE_P(
         ViewCase{"runtime_error", "--view runtime-error", false},
         ViewCase{"runtime_error_table",
                  "--view runtime-error --input @SOURCE@/tests/viz/data/bench-formfactors.csv"},
-        ViewCase{"visibility", "--view visibility", true, true},
-        ViewCase{"links", "--view links"}, ViewCase{"links_element", "--view links --element 300"},
+        ViewCase{"visibility", "--view visibility", true, true}, ViewCase{"links", "--view links"},
+        ViewCase{"links_element", "--view links --element 300"},
         ViewCase{"links_formfactor", "--view links --link-colour formfactor --link-tolerance 0.05"},
         ViewCase{"discontinuity", "--view discontinuity", true, true}),
     [](const ::testing::TestParamInfo<ViewCase>& info) { return info.param.name; });
@@ -141,6 +141,18 @@ TEST(FigureCommand, InputBelongsToTheRuntimeErrorView) {
                       test::scratchDir("figure_bad") + "/x.png", &log),
             0);
   EXPECT_NE(log.find("--input"), std::string::npos) << log;
+}
+
+TEST(FigureCommand, WithoutADisplayItIsAClearErrorNotACrash) {
+  // VTK's X window aborts the process when no X server answers; the figure must say what to do instead.
+  const std::string dir = test::scratchDir("figure_no_display");
+  std::string log;
+  const int status = test::runCommand("env -u DISPLAY " + test::cliPath() + " figure " + cornellBox() +
+                                          " --view scene --output " + dir + "/x.png",
+                                      &log);
+  EXPECT_EQ(status, 1) << log;  // an error exit, not SIGABRT
+  EXPECT_NE(log.find("cannot render: no X display (DISPLAY is not set)"), std::string::npos) << log;
+  EXPECT_NE(log.find("xvfb-run"), std::string::npos) << log;
 }
 
 TEST(FigureCommand, AMalformedTimingTableNamesItsLine) {
