@@ -39,6 +39,25 @@ double parallelRectangles(double a, double b, double c) {
           y * x1 * std::atan(y / x1) - x * std::atan(x) - y * std::atan(y));
 }
 
+TEST(AnalyticFormFactor, FarApartPairsKeepTheirDigitsInAnyUnit) {
+  // Squares 1 cm wide, 5 cm to 10 m apart, in metres and in millimetres: the double contour integral of ln r
+  // cancels (distance / size)^2 of its digits; far pairs take Lambert's formula over the source instead.
+  // References: Howell C-11 evaluated with 50 digits (the closed form cancels too many in double).
+  const std::vector<std::pair<double, double>> cases{{0.05, 0.012403977313245101},
+                                                     {0.1, 0.0031620568387576013},
+                                                     {1.0, 3.1828866732829196e-5},
+                                                     {10.0, 3.1830967397738026e-7}};
+  for (double unit : {1.0, 1000.0})
+    for (const auto& [distance, reference] : cases) {
+      const double a = 0.01 * unit, d = distance * unit;
+      const Polygon from{{0, 0, 0}, {a, 0, 0}, {a, a, 0}, {0, a, 0}};
+      const Polygon to{{0, 0, d}, {0, a, d}, {a, a, d}, {a, 0, d}};
+      const double tolerance = 1e-11 * reference;
+      EXPECT_NEAR(polygonToPolygonFormFactor(from, to), reference, tolerance) << unit << " " << distance;
+      EXPECT_NEAR(polygonToPolygonFormFactor(to, from), reference, tolerance) << unit << " " << distance;
+    }
+}
+
 TEST(AnalyticFormFactor, MatchesEveryUnoccludedReferenceCase) {
   if (!test::sharedAvailable()) GTEST_SKIP() << "no ../shared/refdata";
   const json reference = loadReference();

@@ -218,6 +218,35 @@ struct ClipBuffer {
   }
 };
 
+// Far apart, the double contour integral of ln r loses about (distance / size)^2 of its digits to
+// cancellation (0.3 % at 1000 sizes apart); Lambert's formula integrated over the source does not: its
+// integrand is analytic over the source, with the nearest singularity on the receiver, so a Gauss rule whose
+// order follows that distance converges fast. Collapsed product rule on a fan of triangles.
+double farFieldArea(const Vec3* from, int m, const Vec3* to, int n, const Vec3& normal, int points) {
+  const QuadratureRule& rule = gaussLegendre(points);
+  double sum = 0;
+  for (int t = 1; t + 1 < m; ++t) {
+    const Vec3 e1 = from[t] - from[0], e2 = from[t + 1] - from[t];
+    const double scale = e1.cross(e2).norm();
+    for (std::size_t i = 0; i < rule.nodes.size(); ++i)
+      for (std::size_t j = 0; j < rule.nodes.size(); ++j) {
+        const double u = rule.nodes[i], v = rule.nodes[j];
+        const Vec3 x = from[0] + u * e1 + (u * v) * e2;
+        sum += rule.weights[i] * rule.weights[j] * u * scale * std::max(0.0, lambertSum(x, normal, to, n));
+      }
+  }
+  return sum;
+}
+
+// Centre (vertex average) and radius of a polygon's bounding sphere around it.
+void boundingSphere(const Vec3* v, int n, Vec3& centre, double& radius) {
+  centre = Vec3::Zero();
+  for (int k = 0; k < n; ++k) centre += v[k];
+  centre /= n;
+  radius = 0;
+  for (int k = 0; k < n; ++k) radius = std::max(radius, (v[k] - centre).norm());
+}
+
 }  // namespace
 
 Polygon clipPolygonToPlane(const Polygon& polygon, const Vec3& origin, const Vec3& normal) {
@@ -265,6 +294,15 @@ double polygonToPolygonFormFactor(const Vec3* from, int m, const Vec3* to, int n
   if (mv < 3) return 0;
   // Edge-on leftovers have no area facing the other side.
   if (areaOf(toVisible, nv) <= 1e-14 * areaOf(to, n) || areaOf(fromVisible, mv) <= 1e-14 * area) return 0;
+  // Well separated (a gap of more than twice the two radii): Lambert over the source, see farFieldArea.
+  Vec3 ci, cj;
+  double ri, rj;
+  boundingSphere(fromVisible, mv, ci, ri);
+  boundingSphere(toVisible, nv, cj, rj);
+  const double gap = (ci - cj).norm() - ri - rj;
+  if (gap > 2 * (ri + rj))
+    return std::max(0.0,
+                    farFieldArea(fromVisible, mv, toVisible, nv, ni, pointsForRatio(gap / (2 * ri))) / area);
   return std::max(0.0, contourArea(fromVisible, mv, toVisible, nv) / area);
 }
 
