@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/formfactor/analytic.h"
 #include "exact/adaptive_cubature.h"
 #include "exact/exact_kernel.h"
 #include "exact/exact_reference.h"
@@ -14,21 +15,41 @@
 namespace rt::exact {
 namespace {
 
-CubatureSettings settingsFor(const ExactOptions& options, bool occluded, double sourceArea) {
+// `base` is the part of A_i F_ij known without cubature (the analytic unoccluded value when the cubature
+// integrates only what the occluders take away): relative targets refer to the entry, base minus the
+// integral.
+CubatureSettings settingsFor(const ExactOptions& options, bool occluded, double sourceArea, double base) {
   CubatureSettings settings;
   settings.order = occluded ? options.occludedRuleOrder : options.ruleOrder;
   settings.maxEvaluations = options.maxEvaluations;
-  // Occluded integrands have kinks along shadow boundaries: split once before adapting so that a shadow
-  // smaller than the element cannot slip between identical coarse and refined estimates.
+  // Without the event split, occluded integrands have kinks anywhere: split once before adapting so that a
+  // shadow smaller than the element cannot slip between identical coarse and refined estimates.
   settings.initialSplits = occluded && !options.splitAlongEvents ? 1 : 0;
   const double relative = occluded ? options.occludedTolerance : options.tolerance;
-  // The cubature integrates A_i F(x): the floor, a form factor, scales with the source's area (so that a scene
-  // in millimetres and the same scene in metres get the same targets).
+  // The cubature integrates A_i F(x): the floor, a form factor, scales with the source's area (so that a
+  // scene in millimetres and the same scene in metres get the same targets).
   const double floor = options.absoluteFloor * sourceArea;
-  settings.tolerance = [relative, floor](double estimate) {
-    return relative * std::max(std::abs(estimate), floor);
+  settings.tolerance = [relative, floor, base](double estimate) {
+    return relative * std::max(std::abs(base - estimate), floor);
   };
   return settings;
+}
+
+// Elements whose bounding spheres overlap (neighbours sharing an edge or a corner, or close): there F(x) is
+// nearly singular along the common boundary, where the direct cubature's error estimate is too optimistic.
+bool near(const PairGeometry& pair) {
+  auto sphere = [](const Polygon& p, Vec3& centre, double& radius) {
+    centre = Vec3::Zero();
+    for (const Vec3& v : p) centre += v;
+    centre /= static_cast<double>(p.size());
+    radius = 0;
+    for (const Vec3& v : p) radius = std::max(radius, (v - centre).norm());
+  };
+  Vec3 ci, cj;
+  double ri, rj;
+  sphere(pair.sourcePolygon, ci, ri);
+  sphere(pair.receiverPolygon, cj, rj);
+  return (ci - cj).norm() < ri + rj;
 }
 
 EntryResult integratePair(const Mesh& mesh, const PairGeometry& pair, const ExactOptions& options,
@@ -37,10 +58,30 @@ EntryResult integratePair(const Mesh& mesh, const PairGeometry& pair, const Exac
   entry.facing = pair.facing;
   entry.occluded = !pair.occluders.empty();
   if (!pair.facing) return entry;
+  const double area = mesh.elements[pair.source].area;
+  // The unoccluded entry is the analytic value (exact up to rounding, even for elements sharing an edge,
+  // where F(x) is singular and cubature error estimates are too optimistic). For occluded neighbours, the
+  // cubature integrates only what the occluders take away, F_unoccluded(x) - F_visible(x): zero wherever
+  // nothing is in the way, so the singular neighbourhood of the common edge usually costs nothing. Occluded
+  // pairs further apart integrate F_visible(x) directly (smooth away from shadow boundaries, and cheaper).
+  // Lessons asking for the cubature points get the direct integral, whose points show F itself.
+  const bool subtract = options.analyticUnoccluded && points == nullptr && (!entry.occluded || near(pair));
+  const double unoccluded =
+      subtract ? rt::polygonToPolygonFormFactor(pair.sourcePolygon, pair.receiverPolygon) : 0.0;
+  if (subtract && !entry.occluded) {
+    entry.value = unoccluded;
+    entry.analytic = true;
+    return entry;
+  }
   const PointEvaluator evaluate(pair, options.booleans);
-  const AdaptiveCubature cubature(settingsFor(options, entry.occluded, mesh.elements[pair.source].area));
+  const AdaptiveCubature cubature(settingsFor(options, entry.occluded, area, unoccluded * area));
   std::vector<WeightedPoint> finalPoints;
-  const auto f = [&](const Vec3& x) { return evaluate(x); };
+  bool anyVisible = false;  // all points in full shadow: F_ij = 0 exactly, not a difference of two integrals
+  const auto f = [&](const Vec3& x) {
+    const double visible = evaluate(x);
+    anyVisible = anyVisible || visible > 0;
+    return subtract ? evaluate.unoccluded(x) - visible : visible;
+  };
   std::vector<Polygon> cells{pair.integrationDomain};
   if (entry.occluded && options.splitAlongEvents) {
     cells = splitAlongEvents(pair.integrationDomain, pair.sourceNormal, visibilityEvents(pair),
@@ -48,9 +89,9 @@ EntryResult integratePair(const Mesh& mesh, const PairGeometry& pair, const Exac
     entry.eventCells = static_cast<long>(cells.size());
   }
   const CubatureResult result = cubature.integrateCells(cells, f, points ? &finalPoints : nullptr);
-  const double area = mesh.elements[pair.source].area;
-  entry.value = result.value / area;
+  entry.value = subtract ? std::max(0.0, unoccluded - result.value / area) : result.value / area;
   entry.errorEstimate = result.errorEstimate / area;
+  if (!anyVisible) entry.value = entry.errorEstimate = 0;  // the direct integral over the same points
   entry.evaluations = result.evaluations;
   entry.exactEvaluations = evaluate.exactEvaluations();
   entry.splitEvaluations = evaluate.splitEvaluations();

@@ -87,6 +87,10 @@ struct ExactOptions {
   // Occluded pairs: split the source along the lines where F(x) has kinks (visibility events) before
   // adapting.
   bool splitAlongEvents = true;
+  // Unoccluded entries from the analytic contour integral; occluded ones as that minus the cubature of what
+  // the occluders take away. Off: the cubature of F_visible(x) for every entry (the lessons' cubature
+  // points).
+  bool analyticUnoccluded = true;
 };
 
 // Options for a requested relative tolerance t as the form-factor method reads it: t for unoccluded pairs,
@@ -109,7 +113,8 @@ struct EntryResult {
   long exactEvaluations = 0;  // of which went through CGAL's exact Booleans
   long splitEvaluations = 0;  // of which went through the double-precision convex split
   bool converged = true;
-  long eventCells = 1;  // cells of the source after splitting along visibility events
+  long eventCells = 1;    // cells of the source after splitting along visibility events
+  bool analytic = false;  // unoccluded, from the analytic contour integral: no cubature, no estimate (0)
 };
 
 EntryResult elementFormFactor(const Mesh& mesh, int source, int receiver, const ExactOptions& options = {},

@@ -110,6 +110,11 @@ void PointEvaluator::subtractShadow(const Vec3& x, const Occluder& occluder, dou
   pieceCount_ = nextCount;
 }
 
+double PointEvaluator::unoccluded(const Vec3& x) const {
+  if (pair_.receiverNormal.dot(x - pair_.receiverPolygon.front()) <= 0 || receiver_.size() < 3) return 0;
+  return std::max(0.0, lambertContourSum(x, pair_.sourceNormal, receiver_));
+}
+
 double PointEvaluator::operator()(const Vec3& x) const {
   ++evaluations_;
   if (pair_.receiverNormal.dot(x - pair_.receiverPolygon.front()) <= 0) return 0;

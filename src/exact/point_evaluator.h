@@ -22,6 +22,9 @@ class PointEvaluator {
  public:
   PointEvaluator(const PairGeometry& pair, Booleans booleans);
   double operator()(const Vec3& x) const;
+  // The same without any occluder: F(dA at x -> horizon-clipped receiver). operator() returns exactly this
+  // number wherever no occluder is in the way, so their difference is exactly 0 there.
+  double unoccluded(const Vec3& x) const;
   long exactEvaluations() const { return exactEvaluations_; }
   long splitEvaluations() const { return splitEvaluations_; }
   long evaluations() const { return evaluations_; }
