@@ -6,6 +6,8 @@
 #include <QPushButton>
 #include <algorithm>
 
+#include "core/time_left.h"
+
 namespace rt::app {
 
 ProgressStrip::ProgressStrip(QWidget* parent) : QWidget(parent) {
@@ -42,6 +44,8 @@ void ProgressStrip::begin(const QString& what) {
   bar_->setValue(0);
   bar_->setFormat("%p%");
   cancel_->setEnabled(true);
+  stage_.clear();
+  stageTimer_.start();
   show();
 }
 
@@ -49,6 +53,15 @@ void ProgressStrip::setProgress(double fraction, const QString& stage) {
   if (!active_) return;
   bar_->setValue(static_cast<int>(std::clamp(fraction, 0.0, 1.0) * 1000));
   bar_->setFormat(stage.isEmpty() ? QString("%p%") : stage + "  %p%");
+  // Each stage starts again from 0 %: the estimate of the time left is per stage.
+  if (stage != stage_) {
+    stage_ = stage;
+    stageTimer_.restart();
+  }
+  if (!cancel_->isEnabled()) return;  // "Cancelling..." stays
+  const std::string left = describeTimeLeft(static_cast<double>(stageTimer_.elapsed()) / 1000.0, fraction);
+  label_->setText(left.empty() ? what_
+                               : what_ + QString::fromUtf8(" \u2014 ") + QString::fromStdString(left));
 }
 
 void ProgressStrip::end() {
@@ -62,6 +75,10 @@ int ProgressStrip::value() const {
 
 QString ProgressStrip::text() const {
   return bar_->text();
+}
+
+QString ProgressStrip::label() const {
+  return label_->text();
 }
 
 }  // namespace rt::app

@@ -4,6 +4,7 @@
 // status bar is hidden, the window shows the status bar only while a job runs, so the class still sees it.
 #pragma once
 
+#include <QElapsedTimer>
 #include <QWidget>
 
 class QLabel;
@@ -24,9 +25,11 @@ class ProgressStrip : public QWidget {
   // Hides the strip.
   void end();
   bool active() const { return active_; }
-  // The bar's value in per mille and its text (tests, the status line).
+  // The bar's value in per mille and its text (tests, the status line); the label, with the time left once
+  // it can be estimated ("Computing \u2014 about 3 min left").
   int value() const;
   QString text() const;
+  QString label() const;
   QPushButton* cancelButton() const { return cancel_; }
 
  signals:
@@ -38,6 +41,8 @@ class ProgressStrip : public QWidget {
   QProgressBar* bar_ = nullptr;
   QPushButton* cancel_ = nullptr;
   bool active_ = false;
+  QString stage_;
+  QElapsedTimer stageTimer_;
 };
 
 }  // namespace rt::app

@@ -2,10 +2,12 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 
 #include "core/io/scene_loader.h"
+#include "core/time_left.h"
 
 namespace rt::cli {
 
@@ -60,13 +62,18 @@ void ProgressLine::report(double fraction, const std::string& stage) {
   const int step = terminal_ ? 1 : 10;
   if (stage == lastStage_ && percent / step == lastPercent_ / step) return;
   if (stage != lastStage_ && open_ && terminal_) std::fprintf(stderr, "\n");
+  const auto now = std::chrono::steady_clock::now();
+  if (stage != lastStage_) stageStart_ = now;
   lastStage_ = stage;
   lastPercent_ = percent;
+  const std::string left =
+      describeTimeLeft(std::chrono::duration<double>(now - stageStart_).count(), fraction);
+  const std::string suffix = left.empty() ? "" : " (" + left + ")";
   if (terminal_) {
-    std::fprintf(stderr, "\r%-24s %3d%%", stage.c_str(), percent);
+    std::fprintf(stderr, "\r%-24s %3d%%%-24s", stage.c_str(), percent, suffix.c_str());
     open_ = true;
   } else {
-    std::fprintf(stderr, "%s %d%%\n", stage.c_str(), percent);
+    std::fprintf(stderr, "%s %d%%%s\n", stage.c_str(), percent, suffix.c_str());
   }
   std::fflush(stderr);
 }

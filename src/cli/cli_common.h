@@ -44,6 +44,7 @@ class ProgressLine : public Progress {
   bool terminal_;
   int lastPercent_ = -1;
   std::string lastStage_;
+  std::chrono::steady_clock::time_point stageStart_;
   bool open_ = false;
 };
 
