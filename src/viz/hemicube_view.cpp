@@ -10,6 +10,7 @@ namespace rt::viz {
 namespace {
 
 constexpr Rgb8 kNothing{235, 235, 235};
+constexpr Rgb8 kBackFace{90, 90, 90};  // the back of a polygon: blocks, receives nothing
 const char* kFaceNames[5] = {"top", "+u", "+v", "-u", "-v"};
 
 }  // namespace
@@ -86,7 +87,9 @@ Drawing hemicubeFacesDrawing(const HemicubeFaces& faces, std::size_t elements,
         if (options.colouring == HemicubeColouring::DeltaFormFactors)
           colour = sampleColourMap(options.map, deltas[p] / maxDelta);
         else
-          colour = buffer.element[p] >= 0 ? categoryColour(buffer.element[p]) : kNothing;
+          colour = buffer.element[p] >= 0                       ? categoryColour(buffer.element[p])
+                   : buffer.element[p] == kHemicubeSeesBackFace ? kBackFace
+                                                                : kNothing;
         std::vector<Vec2> quad;
         for (const Vec3& corner : hemicubePixelCorners(face, row, column, faces.resolution))
           quad.push_back(toFigure(face, corner));
@@ -140,6 +143,16 @@ Drawing hemicubeFacesDrawing(const HemicubeFaces& faces, std::size_t elements,
     d.text(text, {legendX + 1.6 * font, y}, 0.85 * font, Drawing::Align::Start, Drawing::Align::Centre);
     y -= 1.6 * font;
     ++shown;
+  }
+  const bool anyBackFace = std::any_of(faces.faces.begin(), faces.faces.end(), [](const auto& buffer) {
+    return std::find(buffer.element.begin(), buffer.element.end(), kHemicubeSeesBackFace) !=
+           buffer.element.end();
+  });
+  if (anyBackFace) {
+    d.rectangle(legendX, y - 0.5 * font, 1.1 * font, 1.1 * font, kBackFace, 1.0, {40, 40, 40});
+    d.text("back of a surface (blocks)", {legendX + 1.6 * font, y}, 0.85 * font, Drawing::Align::Start,
+           Drawing::Align::Centre);
+    y -= 1.6 * font;
   }
   d.rectangle(legendX, y - 0.5 * font, 1.1 * font, 1.1 * font, kNothing, 1.0, {40, 40, 40});
   d.text("nothing seen", {legendX + 1.6 * font, y}, 0.85 * font, Drawing::Align::Start,

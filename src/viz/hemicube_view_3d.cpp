@@ -77,8 +77,9 @@ void writeHemicube3dFigure(const Mesh& mesh, const HemicubeFaces& faces, const H
         const int seen = buffer.element[p];
         const Rgb8 colour = options.colouring == HemicubeColouring::DeltaFormFactors
                                 ? sampleColourMap(options.map, deltas[p] / maxDelta)
-                            : seen >= 0 ? categoryColour(seen)
-                                        : Rgb8{235, 235, 235};
+                            : seen >= 0                     ? categoryColour(seen)
+                            : seen == kHemicubeSeesBackFace ? Rgb8{90, 90, 90}
+                                                            : Rgb8{235, 235, 235};
         colours->InsertNextTypedTuple(colour.data());
       }
   }

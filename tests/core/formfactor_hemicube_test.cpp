@@ -68,6 +68,33 @@ TEST(Hemicube, ConvergesToThePointFormFactorOfTheCentroid) {
   }
 }
 
+// Polygons are one-sided but opaque: a panel between floor and ceiling that turns its back to the floor
+// hides the ceiling (the pixels show its back) instead of letting the floor see through it, as rays and the
+// exact method do. Turned the other way it is seen like any element.
+TEST(Hemicube, BackFacesBlockAndReceiveNothing) {
+  for (const bool backToTheFloor : {true, false}) {
+    Scene s = test::emptyScene();
+    test::addQuad(s, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0});  // floor, facing up
+    test::addQuad(s, {0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1});  // ceiling, facing down
+    const Vec3 a(-2, -2, 0.5), b(3, -2, 0.5), c(3, 3, 0.5), d(-2, 3, 0.5);
+    if (backToTheFloor)
+      test::addQuad(s, a, b, c, d);
+    else
+      test::addQuad(s, a, d, c, b);
+    const Mesh mesh = test::meshOf(s, 1);
+    const HemicubeFaces h = renderHemicube(mesh, 0, 32);
+    const int centre = h.faces[0].element[16 * 32 + 16];
+    EXPECT_EQ(centre, backToTheFloor ? kHemicubeSeesBackFace : 2);
+    EXPECT_NEAR(h.faces[0].depth[16 * 32 + 16], 0.5, 1e-6);  // a back face has a depth too
+    std::vector<double> row(mesh.size(), 0.0);
+    accumulateHemicubeRow(h, row.data());
+    EXPECT_EQ(row[1], 0.0);  // the ceiling is hidden either way
+    EXPECT_NEAR(row[2],
+                backToTheFloor ? 0.0 : pointToPolygonFormFactor({0.5, 0.5, 0}, {0, 0, 1}, mesh.polygon(2)),
+                2e-2);
+  }
+}
+
 TEST(Nusselt, OutlineAreaConvergesToLambertQuadratically) {
   const Polygon square = {{-0.3, -0.2, 1}, {-0.3, 0.6, 1.4}, {0.7, 0.6, 1.4}, {0.7, -0.2, 1}};
   const Vec3 point = Vec3::Zero(), normal(0, 0, 1);

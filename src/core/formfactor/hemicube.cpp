@@ -134,7 +134,7 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
     HemicubeFaceBuffer& buffer = result.faces[f];
     buffer.width = resolution;
     buffer.height = heightOf(resolution, face);
-    buffer.element.assign(static_cast<std::size_t>(buffer.width) * buffer.height, -1);
+    buffer.element.assign(static_cast<std::size_t>(buffer.width) * buffer.height, kHemicubeSeesNothing);
     if (workspace.computeDepth)
       buffer.depth.assign(buffer.element.size(), std::numeric_limits<float>::infinity());
     else
@@ -149,8 +149,9 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
     if (j == element) continue;
     const Element& other = mesh.elements[j];
     const Vec3& anchor = mesh.vertices[other.vertices[0]];
-    if (other.normal.dot(result.origin - anchor) <= eyeEps)
-      continue;  // back face (or edge-on) seen from the eye
+    const double facing = other.normal.dot(result.origin - anchor);
+    if (std::abs(facing) <= eyeEps) continue;  // edge-on: covers no pixel centre
+    const int id = facing > 0 ? j : kHemicubeSeesBackFace;
     // Local coordinates (u, v, normal) of the vertices.
     std::array<Vec3, 8> local;
     const int count = static_cast<int>(other.vertices.size());
@@ -288,7 +289,7 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
           double& current = zbuffer[base + column];
           if (inverse > current) {
             current = inverse;
-            buffer.element[base + column] = j;
+            buffer.element[base + column] = id;
           }
         }
       }
@@ -298,7 +299,8 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
   for (int f = 0; f < 5; ++f) {
     HemicubeFaceBuffer& buffer = result.faces[f];
     for (std::size_t p = 0; p < buffer.element.size(); ++p)
-      if (buffer.element[p] >= 0) buffer.depth[p] = static_cast<float>(1.0 / inverseDepth[f][p]);
+      if (buffer.element[p] != kHemicubeSeesNothing)
+        buffer.depth[p] = static_cast<float>(1.0 / inverseDepth[f][p]);
   }
 }
 

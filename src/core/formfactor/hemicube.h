@@ -23,9 +23,15 @@ struct HemicubeFaceAxes {
 };
 HemicubeFaceAxes hemicubeFaceAxes(HemicubeFace face);
 
+// Pixel values besides element ids: nothing in that direction, or the back of a polygon. Polygons are
+// one-sided but opaque: a back face blocks what lies behind it and takes no share itself, as in every other
+// method (rays that hit a back face count for nothing; the exact method's occluders are all polygons).
+constexpr int kHemicubeSeesNothing = -1;
+constexpr int kHemicubeSeesBackFace = -2;
+
 struct HemicubeFaceBuffer {
   int width = 0, height = 0;  // top: res x res; sides: res x ceil(res/2) (rows from the horizon upwards)
-  std::vector<int> element;   // width * height, row-major; -1 where nothing is seen
+  std::vector<int> element;   // width * height, row-major; an element id, kHemicubeSeesNothing or ...BackFace
   std::vector<float> depth;   // distance along the face's axis, +inf where nothing is seen
 };
 
@@ -48,8 +54,10 @@ const std::vector<double>& deltaFormFactors(int resolution, HemicubeFace face);
 // The largest delta form factor over the five faces (the scale of a delta-form-factor heat map).
 double maxDeltaFormFactor(int resolution);
 
-// Renders the hemicube of `element`: pixel-centre coverage, near-plane clipping, z-buffer. Elements whose
-// back faces the eye, and the parts below the element's horizon, are not drawn.
+// Renders the hemicube of `element`: pixel-centre coverage, near-plane clipping, z-buffer. Elements that turn
+// their back to the eye are drawn as kHemicubeSeesBackFace (they occlude: the floor under a block without a
+// bottom sees the block's inside, not the room through it); elements edge-on to the eye and the parts below
+// the element's horizon are not drawn.
 HemicubeFaces renderHemicube(const Mesh& mesh, int element, int resolution);
 
 // Reusable storage for rendering many hemicubes in a row (one per thread): no allocation after the first.
