@@ -30,8 +30,6 @@ struct FormFactorsArguments {
   std::string compareTo;
 };
 
-// One line: RMS and largest error of F against the reference, and the RMS error relative to the reference's
-// RMS (the figure that says "F to 1 %").
 void checkShape(const Eigen::MatrixXd& reference, Eigen::Index n, const std::string& path) {
   if (reference.rows() != n || reference.cols() != n)
     throw InputError({path, 0, {}}, "the reference is " + std::to_string(reference.rows()) + " x " +
@@ -39,6 +37,8 @@ void checkShape(const Eigen::MatrixXd& reference, Eigen::Index n, const std::str
                                         std::to_string(n) + " elements (same scene and mesh options?)");
 }
 
+// One line: RMS and largest error of F against the reference, and the RMS error relative to the reference's
+// RMS (the figure that says "F to 1 %").
 void printComparison(const FormFactorMatrix& F, const Eigen::MatrixXd& reference, const std::string& path) {
   const Eigen::MatrixXd difference = F - reference;
   Eigen::Index row = 0, col = 0;
