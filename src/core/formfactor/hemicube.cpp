@@ -251,7 +251,7 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
       }
       if (area2 == 0) continue;
       const double orientation = area2 > 0 ? 1.0 : -1.0;
-      std::array<double, 16> ea, eb, ec;  // edge functions e(x, y) = ea x + eb y + ec
+      std::array<double, 16> ea, eb, ec, inverseEa;  // edge functions e(x, y) = ea x + eb y + ec
       for (int k = 0; k < n; ++k) {
         const Vec2& p = projected.screen[k];
         const Vec2& q = projected.screen[(k + 1) % n];
@@ -261,6 +261,7 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
         // Clipping through a frustum corner can leave two vertices a rounding error apart: such an edge has
         // no direction, and its half-plane (-rest / ea with ea ~ 1e-17) would empty whole rows at random.
         if ((q - p).squaredNorm() < 1e-18) ea[k] = eb[k] = ec[k] = 0.0;
+        inverseEa[k] = ea[k] != 0 ? 1.0 / ea[k] : 0.0;  // one division per edge, not per edge and row
       }
       std::vector<double>& zbuffer = inverseDepth[f];
       for (int row = r0; row <= r1; ++row) {
@@ -271,9 +272,9 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
         for (int k = 0; k < n && !empty; ++k) {
           const double rest = eb[k] * y + ec[k];
           if (ea[k] > 0)
-            lo = std::max(lo, -rest / ea[k]);
+            lo = std::max(lo, -rest * inverseEa[k]);
           else if (ea[k] < 0)
-            hi = std::min(hi, -rest / ea[k]);
+            hi = std::min(hi, -rest * inverseEa[k]);
           else if (rest < -1e-9)
             empty = true;
         }
@@ -284,12 +285,14 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
         const int first = std::max(c0, static_cast<int>(std::ceil(lo - 0.5)));
         const int last = std::min(c1, static_cast<int>(std::floor(hi - 0.5)));
         const std::size_t base = static_cast<std::size_t>(row) * buffer.width;
+        const double rowTerm = ky * y + k0;
+        double* depths = zbuffer.data() + base;
+        int* ids = buffer.element.data() + base;
         for (int column = first; column <= last; ++column) {
-          const double inverse = kx * (column + 0.5) + ky * y + k0;
-          double& current = zbuffer[base + column];
-          if (inverse > current) {
-            current = inverse;
-            buffer.element[base + column] = id;
+          const double inverse = kx * (column + 0.5) + rowTerm;
+          if (inverse > depths[column]) {
+            depths[column] = inverse;
+            ids[column] = id;
           }
         }
       }
