@@ -67,8 +67,11 @@ PipelineResult runRefinedPipeline(const std::shared_ptr<const Scene>& scene, con
   return result;
 }
 
-std::string paneCaption(const PipelineResult& result) {
+std::string paneCaption(const PipelineResult& result, const PipelineResult* other) {
   std::string name = result.solverName.empty() ? result.title : result.solverName;
+  if (other && !result.formFactorMethod.empty() && !other->formFactorMethod.empty() &&
+      result.formFactorMethod != other->formFactorMethod)
+    name += (name.empty() ? "" : ", ") + result.formFactorMethod + " F";
   if (result.mesh) name += (name.empty() ? "" : ", ") + std::to_string(result.mesh->size()) + " elements";
   return name;
 }

@@ -35,7 +35,9 @@ void scaleStepMesh(lesson::StepParameters& parameters, const std::string& choice
 PipelineResult runRefinedPipeline(const std::shared_ptr<const Scene>& scene, const std::string& choice,
                                   bool quick, Progress& progress);
 
-// "gauss-seidel, 400 elements": what a pane shows in its corner, so that two panes can be told apart.
-std::string paneCaption(const PipelineResult& result);
+// "gauss-seidel, 400 elements": what a pane shows in its corner, so that two panes can be told apart. With
+// `other` (the pane beside it) the form-factor method is named when the two differ: "gauss-seidel, hemicube
+// F, 400 elements".
+std::string paneCaption(const PipelineResult& result, const PipelineResult* other = nullptr);
 
 }  // namespace rt::app

@@ -94,6 +94,7 @@ PipelineResult LessonLibrary::runOne(const lesson::Lesson& lesson, const lesson:
   out.camera = stepResult->camera;
   out.F = stepResult->F;
   out.formFactorStats = stepResult->formFactorStats;
+  if (out.F) out.formFactorMethod = step.parameters.method;
   out.title = step.title;
   // What the 3D view shows: the solution, else the local-illumination estimate, else the scene's own light.
   if (stepResult->B.rows() == static_cast<Eigen::Index>(stepResult->mesh.size()))

@@ -115,6 +115,7 @@ PipelineResult runPipeline(const Scene& input, const PipelineSettings& settings,
           method->compute(*mesh, settings.formFactors, progress, result.formFactorStats));
     }
   }
+  if (result.F) result.formFactorMethod = settings.method;
   if (!result.F) {
     result.B = ambientEstimate(*mesh);
     return result;

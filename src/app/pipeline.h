@@ -31,6 +31,7 @@ struct PipelineResult {
   std::shared_ptr<const Mesh> mesh;
   std::shared_ptr<const FormFactorMatrix> F;  // null when no form-factor method was available
   std::string formFactorKey;                  // what F depends on: geometry, method and its options
+  std::string formFactorMethod;               // the method that computed F (empty without F)
   FormFactorStats formFactorStats;
   bool formFactorsReused = false;
   std::string solverName;

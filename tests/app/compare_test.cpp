@@ -34,6 +34,34 @@ TEST(CompareChoice, ScalesTheMeshByHalfOrTwice) {
   EXPECT_TRUE((CompareChoice{"", "", "hierarchical"}.refinesMesh()));
 }
 
+TEST(CompareChoice, CaptionsNameTheFormFactorMethodWhenThePanesDiffer) {
+  PipelineResult left, right;
+  left.solverName = right.solverName = "gauss-seidel";
+  left.formFactorMethod = "analytic";
+  right.formFactorMethod = "hemicube";
+  EXPECT_EQ(paneCaption(left, &right), "gauss-seidel, analytic F");
+  EXPECT_EQ(paneCaption(right, &left), "gauss-seidel, hemicube F");
+  right.formFactorMethod = "analytic";
+  EXPECT_EQ(paneCaption(left, &right), "gauss-seidel");  // the same on both sides: not worth the room
+  EXPECT_EQ(paneCaption(left), "gauss-seidel");
+}
+
+TEST(CompareMode, AHemicubeLessonAgainstAnalyticFormFactorsSaysWhichPaneIsWhich) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  ASSERT_TRUE(window->openLesson("cornell-box", 3)) << window->lastError().toStdString();
+  window->setCompareMode(true);
+  window->setCompareChoice(CompareChoice{"", "analytic", ""});
+  QApplication::processEvents();
+  const PipelineResult* r = window->result();
+  ASSERT_NE(r, nullptr);
+  ASSERT_NE(r->compared, nullptr);
+  EXPECT_EQ(r->formFactorMethod, "hemicube");
+  EXPECT_EQ(r->compared->formFactorMethod, "analytic");
+  EXPECT_NE(window->primaryView()->caption().toStdString().find("hemicube F"), std::string::npos);
+  EXPECT_NE(window->secondaryView()->caption().toStdString().find("analytic F"), std::string::npos);
+}
+
 TEST(CompareMode, FinerMeshInTheRightPane) {
   RT_REQUIRE_DISPLAY();
   auto window = test::makeWindow();
