@@ -1,17 +1,14 @@
-// "raycast": area-to-area form factors by N = options.samples stratified sample pairs per element pair.
-// Estimator: F_ij ~ (1/N) sum_k F(dA_k -> j) V(x_k, y_k), with x_k stratified on i, y_k stratified on j, F(dA
-// -> j) Lambert's exact point-to-polygon formula and V the ray-cast visibility of the segment x_k -> y_k.
-// Using the exact inner integral instead of the point-to-point kernel cos cos / (pi r^2) removes the 1/r^2
-// singularity that makes the naive estimator useless for adjacent elements; without occluders the estimator
-// is a stratified quadrature of a bounded integrand. Rays are cast only when the shaft between i and j can
-// contain another element. Deterministic for a seed: each pair draws from its own generator seeded by (seed,
-// i, j).
+// "raycast": area-to-area form factors by N = options.samples stratified sample pairs per element pair; the
+// estimator (unoccluded Lambert from each sample point minus what the occluders hide) is in raycast_pair.h.
+// Rays are cast only when the shaft between i and j can contain another element. Deterministic for a seed:
+// each pair draws from its own generator seeded by (seed, i, j).
 #include <algorithm>
 #include <memory>
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/analytic_method.h"
 #include "core/formfactor/pair_matrix.h"
+#include "core/formfactor/raycast_pair.h"
 #include "core/formfactor/sampling.h"
 #include "core/formfactor/visibility.h"
 
@@ -22,7 +19,8 @@ class RaycastMethod : public FormFactorMethod {
  public:
   std::string name() const override { return "raycast"; }
   std::string description() const override {
-    return "N stratified sample pairs per element pair: Lambert point-to-element times ray-cast visibility";
+    return "N stratified sample pairs per element pair: Lambert point-to-element less the kernel of the "
+           "sample pairs a ray finds hidden";
   }
   FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
                            FormFactorStats& stats) const override {
@@ -32,27 +30,11 @@ class RaycastMethod : public FormFactorMethod {
     // made on the larger one would be multiplied by A_large / A_small (1000 for a 1000:1 sliver against its
     // neighbour), and so would its sampling error.
     auto integrate = [&](int i, int j) {
+      const RaycastPairEstimate estimate = estimateRaycastPair(mesh, visibility, i, j, samples, options.seed);
       PairResult result;
-      const ElementPolygon a(mesh, i), b(mesh, j);
-      const Vec3& normal = mesh.elements[i].normal;
-      const bool occludable = visibility.mayBeOccluded(i, j);
-      PairRandom random(options.seed, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(j));
-      const int shift = static_cast<int>(random.next() % static_cast<std::uint64_t>(samples));
-      double sum = 0;
-      for (int k = 0; k < samples; ++k) {
-        const Vec2 s = jitteredSample(k, samples, random);
-        const Vec3 x = pointOnPolygon(a.v.data(), a.count, s.x(), s.y());
-        double value = pointToPolygonFormFactor(x, normal, b.v.data(), b.count);
-        if (occludable && value > 0) {
-          const Vec2 t = jitteredSample((k + shift) % samples, samples, random);
-          const Vec3 y = pointOnPolygon(b.v.data(), b.count, t.x(), t.y());
-          if (!visibility.rays().visible(x, y, i, j)) value = 0;
-          ++result.rays;
-        }
-        sum += value;
-      }
-      result.value = sum / samples;
-      result.needsVisibility = occludable;
+      result.value = estimate.value;
+      result.rays = estimate.rays;
+      result.needsVisibility = estimate.needsVisibility;
       return result;
     };
     FormFactorMatrix F =
@@ -66,8 +48,8 @@ class RaycastMethod : public FormFactorMethod {
         });
     stats.notes =
         std::to_string(samples) +
-        " stratified samples/pair: Lambert point-to-element times ray visibility where the shaft may be "
-        "blocked";
+        " stratified samples/pair: Lambert point-to-element, less the kernel of the hidden sample pairs "
+        "where the shaft may be blocked";
     return F;
   }
 };

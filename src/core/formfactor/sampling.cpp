@@ -26,10 +26,19 @@ double PairRandom::uniform() {
 }
 
 Vec2 jitteredSample(int k, int n, PairRandom& random) {
-  const int columns = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n)))));
-  const int rows = (n + columns - 1) / columns;
+  const int columns = std::max(1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(n)))));
+  const int rows = std::max(1, n / columns);
+  if (k >= columns * rows) return {random.uniform(), random.uniform()};
   const int column = k % columns, row = k / columns;
   return {(column + random.uniform()) / columns, (row + random.uniform()) / rows};
+}
+
+void shuffledStrata(int n, PairRandom& random, std::vector<int>& order) {
+  order.resize(static_cast<std::size_t>(std::max(0, n)));
+  for (int k = 0; k < n; ++k) order[static_cast<std::size_t>(k)] = k;
+  for (int k = n - 1; k > 0; --k)  // Fisher-Yates
+    std::swap(order[static_cast<std::size_t>(k)],
+              order[static_cast<std::size_t>(random.next() % static_cast<std::uint64_t>(k + 1))]);
 }
 
 Vec3 pointOnPolygon(const Vec3* polygon, int count, double u, double v) {

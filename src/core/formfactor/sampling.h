@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "core/vec.h"
 
@@ -20,9 +21,15 @@ class PairRandom {
   std::uint64_t state_;
 };
 
-// Sample k of n of a jittered grid over [0,1]^2 (ceil(sqrt n) columns): stratified, so errors fall faster
-// than 1/sqrt n for smooth integrands.
+// Sample k of n of a jittered grid over [0,1]^2: stratified, so errors fall faster than 1/sqrt n for smooth
+// integrands. The grid has floor(sqrt n) columns and as many full rows as n fills; the samples left over
+// (n not a product of the two) are uniform over the square, so every n is unbiased (a partly filled last row
+// would leave part of the square unsampled).
 Vec2 jitteredSample(int k, int n, PairRandom& random);
+
+// A random permutation of 0..n-1 into `order` (resized; no allocation once it is large enough): pairs the
+// strata of two jittered grids without lining them up.
+void shuffledStrata(int n, PairRandom& random, std::vector<int>& order);
 
 // Maps (u, v) in [0,1]^2 to a uniformly distributed point on a convex polygon (fan triangles chosen by area
 // with u, then the square-to-triangle map), preserving stratification.

@@ -1,6 +1,7 @@
 #include "core/formfactor/visibility.h"
 
 #include <stdexcept>
+#include <vector>
 
 #include "core/formfactor/sampling.h"
 
@@ -18,12 +19,14 @@ PairVisibility::PairVisibility(const Mesh& mesh)
 double PairVisibility::fraction(int i, int j, int samples, std::uint64_t seed) const {
   const ElementPolygon a(mesh_, i), b(mesh_, j);
   PairRandom random(seed ^ 0x5bd1e995ull, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(j));
-  const int shift = static_cast<int>(random.next() % static_cast<std::uint64_t>(samples));
+  // Stratum k on i with a randomly permuted stratum on j: a fixed shift would make each y a translated copy
+  // of its x, and the N rays together worth about one independent sample.
+  thread_local std::vector<int> strataOfJ;
+  shuffledStrata(samples, random, strataOfJ);
   int visible = 0;
   for (int k = 0; k < samples; ++k) {
     const Vec2 s = jitteredSample(k, samples, random);
-    // Pair stratum k on i with a shifted stratum on j so that the pairs do not line up.
-    const Vec2 t = jitteredSample((k + shift) % samples, samples, random);
+    const Vec2 t = jitteredSample(strataOfJ[static_cast<std::size_t>(k)], samples, random);
     const Vec3 x = pointOnPolygon(a.v.data(), a.count, s.x(), s.y());
     const Vec3 y = pointOnPolygon(b.v.data(), b.count, t.x(), t.y());
     visible += rays_->visible(x, y, i, j) ? 1 : 0;

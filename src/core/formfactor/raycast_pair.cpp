@@ -1,0 +1,48 @@
+#include "core/formfactor/raycast_pair.h"
+
+#include <algorithm>
+#include <numbers>
+#include <vector>
+
+#include "core/formfactor/analytic.h"
+#include "core/formfactor/sampling.h"
+#include "core/formfactor/visibility.h"
+
+namespace rt {
+
+RaycastPairEstimate estimateRaycastPair(const Mesh& mesh, const PairVisibility& visibility, int i, int j,
+                                        int samples, std::uint64_t seed) {
+  RaycastPairEstimate result;
+  const ElementPolygon a(mesh, i), b(mesh, j);
+  const Vec3& normalI = mesh.elements[i].normal;
+  const Vec3& normalJ = mesh.elements[j].normal;
+  const double areaJ = mesh.elements[j].area;
+  result.needsVisibility = visibility.mayBeOccluded(i, j);
+  PairRandom random(seed, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(j));
+  // y_k's stratum is a random permutation of x_k's: a fixed shift (stratum k + s) would make y_k a translated
+  // copy of x_k, so that all N pairs together were worth about one independent sample of the kernel.
+  thread_local std::vector<int> strataOfJ;
+  if (result.needsVisibility) shuffledStrata(samples, random, strataOfJ);
+  double sum = 0;
+  for (int k = 0; k < samples; ++k) {
+    const Vec2 s = jitteredSample(k, samples, random);
+    const Vec3 x = pointOnPolygon(a.v.data(), a.count, s.x(), s.y());
+    double value = pointToPolygonFormFactor(x, normalI, b.v.data(), b.count);
+    if (result.needsVisibility && value > 0) {
+      const Vec2 t = jitteredSample(strataOfJ[static_cast<std::size_t>(k)], samples, random);
+      const Vec3 y = pointOnPolygon(b.v.data(), b.count, t.x(), t.y());
+      ++result.rays;
+      if (!visibility.rays().visible(x, y, i, j)) {
+        const Vec3 d = y - x;
+        const double r2 = d.squaredNorm();
+        const double cosines = std::max(0.0, normalI.dot(d)) * std::max(0.0, -normalJ.dot(d));
+        if (r2 > 0) value -= areaJ * cosines / (std::numbers::pi * r2 * r2);
+      }
+    }
+    sum += value;
+  }
+  result.value = std::max(0.0, sum / samples);
+  return result;
+}
+
+}  // namespace rt
