@@ -107,7 +107,8 @@ void run(const BenchArguments& a) {
   std::vector<Sweep> sweeps = {{"hemicube", "resolution", {16, 32, 64, 128, 256, 512}},
                                {"raycast", "samples/pair", {1, 4, 16, 64, 256, 1024}},
                                {"montecarlo", "rays/element", {64, 256, 1024, 4096, 16384, 65536}},
-                               {"nusselt", "segments/arc", {4, 8, 16, 32, 64}}};
+                               {"nusselt", "segments/arc", {4, 8, 16, 32, 64}},
+                               {"hybrid", "rays per 1 % F", {1, 4, 16, 64, 256}}};
   if (occludable) sweeps.push_back({"analytic-visibility", "rays/pair", {1, 4, 16, 64, 256}});
 
   std::vector<Row> rows;

@@ -433,7 +433,7 @@ const std::vector<std::string>& stepKeys() {
 
 const std::vector<std::string>& knownMethods() {
   static const std::vector<std::string> methods{
-      "analytic", "analytic-visibility", "hemicube", "raycast", "montecarlo", "nusselt", "exact"};
+      "analytic", "analytic-visibility", "hemicube", "raycast", "montecarlo", "nusselt", "hybrid", "exact"};
   return methods;
 }
 

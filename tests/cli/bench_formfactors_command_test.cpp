@@ -42,8 +42,10 @@ TEST(BenchFormFactorsCommand, SweepsEveryMethodAgainstTheAnalyticReference) {
     EXPECT_NEAR(rel, rms / (0.19982489569838738 / std::sqrt(2.0)), 1e-3 * rel + 1e-12) << line;
     relative[cells[0]].push_back(rel);
   }
-  for (const char* method : {"hemicube", "raycast", "montecarlo", "nusselt"})
+  for (const char* method : {"hemicube", "raycast", "montecarlo", "nusselt", "hybrid"})
     EXPECT_FALSE(relative[method].empty()) << method;
+  // Two adjacent plates are a near pair for the hybrid method: exact, and nothing to occlude them.
+  for (double rel : relative["hybrid"]) EXPECT_LT(rel, 1e-12);
   // The stochastic methods converge: the largest budget beats the smallest.
   EXPECT_LT(relative["raycast"].back(), relative["raycast"].front());
   EXPECT_LT(relative["montecarlo"].back(), relative["montecarlo"].front());

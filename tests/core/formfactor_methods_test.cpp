@@ -26,7 +26,8 @@ double maxAbsDifference(const FormFactorMatrix& a, const FormFactorMatrix& b) {
 
 TEST(FormFactorMethods, AllBuiltinsAreRegistered) {
   const auto names = formFactorMethodNames();
-  for (const char* name : {"analytic", "analytic-visibility", "raycast", "hemicube", "montecarlo", "nusselt"})
+  for (const char* name :
+       {"analytic", "analytic-visibility", "raycast", "hemicube", "montecarlo", "nusselt", "hybrid"})
     EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
   EXPECT_THROW(makeFormFactorMethod("no-such-method"), std::invalid_argument);
 }
@@ -189,7 +190,7 @@ TEST(FormFactorMethods, CancellationThrows) {
   CallbackProgress progress(nullptr);
   progress.cancel();
   FormFactorStats stats;
-  for (const char* name : {"analytic", "raycast", "hemicube", "montecarlo", "nusselt"})
+  for (const char* name : {"analytic", "raycast", "hemicube", "montecarlo", "nusselt", "hybrid"})
     EXPECT_THROW(makeFormFactorMethod(name)->compute(mesh, {}, progress, stats), Cancelled) << name;
 }
 

@@ -15,5 +15,7 @@ std::unique_ptr<FormFactorMethod> makeRaycastMethod();
 std::unique_ptr<FormFactorMethod> makeMonteCarloMethod();
 std::unique_ptr<FormFactorMethod> makeHemicubeMethod();
 std::unique_ptr<FormFactorMethod> makeNusseltMethod();
+// "hybrid": exact near, centroid far, ray-cast hidden part with rays in proportion to F (hybrid_method.cpp).
+std::unique_ptr<FormFactorMethod> makeHybridMethod();
 
 }  // namespace rt

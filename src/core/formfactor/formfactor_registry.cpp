@@ -11,6 +11,7 @@ void registerBuiltinFormFactorMethods() {
     registerFormFactorMethod("montecarlo", [] { return makeMonteCarloMethod(); });
     registerFormFactorMethod("hemicube", [] { return makeHemicubeMethod(); });
     registerFormFactorMethod("nusselt", [] { return makeNusseltMethod(); });
+    registerFormFactorMethod("hybrid", [] { return makeHybridMethod(); });
     return true;
   }();
   (void)once;

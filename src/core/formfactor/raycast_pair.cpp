@@ -23,14 +23,16 @@ RaycastPairEstimate estimateRaycastPair(const Mesh& mesh, const PairVisibility& 
   // copy of x_k, so that all N pairs together were worth about one independent sample of the kernel.
   thread_local std::vector<int> strataOfJ;
   if (result.needsVisibility) shuffledStrata(samples, random, strataOfJ);
+  const StrataGrid grid(samples);
+  const PolygonSampler onI(a.v.data(), a.count), onJ(b.v.data(), b.count);
   double sum = 0;
   for (int k = 0; k < samples; ++k) {
-    const Vec2 s = jitteredSample(k, samples, random);
-    const Vec3 x = pointOnPolygon(a.v.data(), a.count, s.x(), s.y());
+    const Vec2 s = grid.sample(k, random);
+    const Vec3 x = onI.point(s.x(), s.y());
     double value = pointToPolygonFormFactor(x, normalI, b.v.data(), b.count);
     if (result.needsVisibility && value > 0) {
-      const Vec2 t = jitteredSample(strataOfJ[static_cast<std::size_t>(k)], samples, random);
-      const Vec3 y = pointOnPolygon(b.v.data(), b.count, t.x(), t.y());
+      const Vec2 t = grid.sample(strataOfJ[static_cast<std::size_t>(k)], random);
+      const Vec3 y = onJ.point(t.x(), t.y());
       ++result.rays;
       if (!visibility.rays().visible(x, y, i, j)) {
         const Vec3 d = y - x;

@@ -25,12 +25,18 @@ double PairRandom::uniform() {
   return static_cast<double>(next() >> 11) * 0x1.0p-53;
 }
 
+StrataGrid::StrataGrid(int n)
+    : columns_(std::max(1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(n)))))),
+      rows_(std::max(1, n / columns_)) {}
+
+Vec2 StrataGrid::sample(int k, PairRandom& random) const {
+  if (k >= columns_ * rows_) return {random.uniform(), random.uniform()};
+  const int column = k % columns_, row = k / columns_;
+  return {(column + random.uniform()) / columns_, (row + random.uniform()) / rows_};
+}
+
 Vec2 jitteredSample(int k, int n, PairRandom& random) {
-  const int columns = std::max(1, static_cast<int>(std::floor(std::sqrt(static_cast<double>(n)))));
-  const int rows = std::max(1, n / columns);
-  if (k >= columns * rows) return {random.uniform(), random.uniform()};
-  const int column = k % columns, row = k / columns;
-  return {(column + random.uniform()) / columns, (row + random.uniform()) / rows};
+  return StrataGrid(n).sample(k, random);
 }
 
 void shuffledStrata(int n, PairRandom& random, std::vector<int>& order) {
@@ -41,26 +47,31 @@ void shuffledStrata(int n, PairRandom& random, std::vector<int>& order) {
               order[static_cast<std::size_t>(random.next() % static_cast<std::uint64_t>(k + 1))]);
 }
 
-Vec3 pointOnPolygon(const Vec3* polygon, int count, double u, double v) {
-  const std::size_t triangles = static_cast<std::size_t>(count) - 2;
-  std::size_t chosen = 0;
-  if (triangles > 1) {
-    double total = 0;
-    double areas[16];
-    const std::size_t counted = std::min<std::size_t>(triangles, 16);
-    for (std::size_t t = 0; t < counted; ++t) {
-      areas[t] = (polygon[t + 1] - polygon[0]).cross(polygon[t + 2] - polygon[0]).norm();
-      total += areas[t];
-    }
-    double target = u * total;
-    for (chosen = 0; chosen + 1 < counted && target >= areas[chosen]; ++chosen) target -= areas[chosen];
-    u = areas[chosen] > 0 ? std::clamp(target / areas[chosen], 0.0, 1.0) : 0.5;
+PolygonSampler::PolygonSampler(const Vec3* polygon, int count)
+    : polygon_(polygon), triangles_(std::clamp(count - 2, 1, 16)) {
+  if (triangles_ == 1) return;
+  for (int t = 0; t < triangles_; ++t) {
+    areas_[t] = (polygon[t + 1] - polygon[0]).cross(polygon[t + 2] - polygon[0]).norm();
+    total_ += areas_[t];
+  }
+}
+
+Vec3 PolygonSampler::point(double u, double v) const {
+  int chosen = 0;
+  if (triangles_ > 1) {
+    double target = u * total_;
+    for (chosen = 0; chosen + 1 < triangles_ && target >= areas_[chosen]; ++chosen) target -= areas_[chosen];
+    u = areas_[chosen] > 0 ? std::clamp(target / areas_[chosen], 0.0, 1.0) : 0.5;
   }
   const double s = std::sqrt(u);
-  const Vec3& a = polygon[0];
-  const Vec3& b = polygon[chosen + 1];
-  const Vec3& c = polygon[chosen + 2];
+  const Vec3& a = polygon_[0];
+  const Vec3& b = polygon_[chosen + 1];
+  const Vec3& c = polygon_[chosen + 2];
   return (1 - s) * a + s * (1 - v) * b + s * v * c;
+}
+
+Vec3 pointOnPolygon(const Vec3* polygon, int count, double u, double v) {
+  return PolygonSampler(polygon, count).point(u, v);
 }
 
 Vec3 cosineDirection(const Vec3& normal, double u, double v) {

@@ -27,6 +27,16 @@ class PairRandom {
 // would leave part of the square unsampled).
 Vec2 jitteredSample(int k, int n, PairRandom& random);
 
+// The same grid with its shape worked out once, for loops that draw many samples of one n.
+class StrataGrid {
+ public:
+  explicit StrataGrid(int n);
+  Vec2 sample(int k, PairRandom& random) const;
+
+ private:
+  int columns_, rows_;
+};
+
 // A random permutation of 0..n-1 into `order` (resized; no allocation once it is large enough): pairs the
 // strata of two jittered grids without lining them up.
 void shuffledStrata(int n, PairRandom& random, std::vector<int>& order);
@@ -34,6 +44,19 @@ void shuffledStrata(int n, PairRandom& random, std::vector<int>& order);
 // Maps (u, v) in [0,1]^2 to a uniformly distributed point on a convex polygon (fan triangles chosen by area
 // with u, then the square-to-triangle map), preserving stratification.
 Vec3 pointOnPolygon(const Vec3* polygon, int count, double u, double v);
+
+// pointOnPolygon with the fan's triangle areas computed once (the polygon must outlive the sampler).
+class PolygonSampler {
+ public:
+  PolygonSampler(const Vec3* polygon, int count);
+  Vec3 point(double u, double v) const;
+
+ private:
+  const Vec3* polygon_;
+  int triangles_;
+  double areas_[16];
+  double total_ = 0;
+};
 inline Vec3 pointOnPolygon(const Polygon& polygon, double u, double v) {
   return pointOnPolygon(polygon.data(), static_cast<int>(polygon.size()), u, v);
 }
