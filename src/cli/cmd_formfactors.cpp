@@ -103,7 +103,7 @@ void addFormFactorsCommand(CLI::App& app) {
       ->add_option(
           "--samples", arguments->options.samples,
           "raycast/analytic-visibility: sample pairs per element pair (1..1024); montecarlo: rays per "
-          "element; nusselt: segments per arc")
+          "element; nusselt: segments per arc; hybrid: rays per 1 % of an occluded pair's form factor")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command

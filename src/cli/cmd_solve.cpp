@@ -219,7 +219,9 @@ void addSolveCommand(CLI::App& app) {
   command->add_option("--max-iterations", a->maxIterations, "Iteration cap")->capture_default_str();
   command->add_option("--seed", a->seed, "Seed of the stochastic methods")->capture_default_str();
   command->add_option("--resolution", a->resolution, "Hemicube resolution")->capture_default_str();
-  command->add_option("--samples", a->samples, "Ray-cast samples per pair / Monte Carlo rays")
+  command
+      ->add_option("--samples", a->samples,
+                   "Ray-cast samples per pair / Monte Carlo rays per element / hybrid rays per 1 % of F")
       ->capture_default_str();
   command->add_flag("--ambient", a->ambient, "progressive: show B plus the ambient term");
   command->add_flag("--no-matrix", a->noMatrix,

@@ -129,5 +129,17 @@ TEST_F(LessonFacts, MonteCarloErrorFallsWithSamples) {
   EXPECT_LT(*r.value("error.raycast[3]"), *r.value("error.raycast[0]"));
 }
 
+// runtime-error-lab, the Cornell box: the hemicube levels off, ray casting keeps improving, and the hybrid
+// method beats ray casting at the same number (rays per 1 % of F against samples per pair).
+TEST_F(LessonFacts, OnTheCornellBoxTheHemicubeLevelsOffAndTheHybridMethodLeads) {
+  RUN_OR_SKIP(r, "runtime-error-lab", "cornell");
+  EXPECT_GT(*r.value("error.hemicube[3]"), 0.5 * *r.value("error.hemicube[1]"));
+  EXPECT_LT(*r.value("error.raycast[3]"), 0.5 * *r.value("error.raycast[1]"));
+  for (int k = 0; k < 4; ++k) {
+    const std::string index = "[" + std::to_string(k) + "]";
+    EXPECT_LT(*r.value("error.hybrid" + index), *r.value("error.raycast" + index)) << k;
+  }
+}
+
 }  // namespace
 }  // namespace rt::lesson

@@ -6,6 +6,9 @@
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/formfactor_method.h"
 #include "support/test_paths.h"
+#ifdef RT_HAVE_EXACT
+#include "exact/exact_reference.h"
+#endif
 
 namespace rt::lesson::test {
 namespace {
@@ -51,6 +54,9 @@ bool hasMethod(const std::string& name) {
 }
 
 void ensureAnalyticMethod() {
+#ifdef RT_HAVE_EXACT
+  if (!hasMethod("exact")) rt::exact::registerExactMethod();
+#endif
   if (!hasMethod("analytic"))
     registerFormFactorMethod("analytic", [] { return std::make_unique<ClosedFormMethod>(); });
 }
