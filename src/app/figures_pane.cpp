@@ -4,6 +4,7 @@
 #include <QLabel>
 #include <QPixmap>
 #include <QVBoxLayout>
+#include <algorithm>
 
 #include "viz/lesson_figures.h"
 
@@ -23,6 +24,7 @@ void FiguresPane::clear() {
     delete item->widget();
     delete item;
   }
+  figures_.clear();
   count_ = 0;
 }
 
@@ -49,13 +51,29 @@ int FiguresPane::showStep(const lesson::Lesson& lesson, const lesson::Step& step
         new QLabel(k < figures.size() ? QString::fromStdString(figures[k].caption) : QString(), content_);
     caption->setWordWrap(true);
     auto* image = new QLabel(content_);
-    image->setPixmap(pixmap.scaledToWidth(std::min(pixmap.width(), 720), Qt::SmoothTransformation));
     image->setObjectName("figure");
+    figures_.push_back({image, pixmap});
     layout_->insertWidget(layout_->count() - 1, caption);
     layout_->insertWidget(layout_->count() - 1, image);
     ++count_;
   }
+  fitFigures();
   return count_;
+}
+
+void FiguresPane::resizeEvent(QResizeEvent* event) {
+  QScrollArea::resizeEvent(event);
+  fitFigures();
+}
+
+void FiguresPane::fitFigures() {
+  const QMargins margins = layout_->contentsMargins();
+  const int available = std::max(64, viewport()->width() - margins.left() - margins.right());
+  for (Figure& figure : figures_) {
+    const int width = std::min(figure.original.width(), available);
+    if (figure.label->pixmap().width() == width) continue;
+    figure.label->setPixmap(figure.original.scaledToWidth(width, Qt::SmoothTransformation));
+  }
 }
 
 }  // namespace rt::app

@@ -2,6 +2,7 @@
 // the book: the same function as `radiosity lesson render`, shown as images under their captions.
 #pragma once
 
+#include <QPixmap>
 #include <QScrollArea>
 #include <QString>
 #include <QTemporaryDir>
@@ -10,6 +11,7 @@
 #include "lesson/lesson.h"
 #include "lesson/step_result.h"
 
+class QLabel;
 class QVBoxLayout;
 
 namespace rt::app {
@@ -24,7 +26,18 @@ class FiguresPane : public QScrollArea {
   void clear();
   int figureCount() const { return count_; }
 
+ protected:
+  // Figures shrink to the pane's width (never grow past their own), so a whole chart with its legend is on
+  // screen however the docks are arranged.
+  void resizeEvent(QResizeEvent* event) override;
+
  private:
+  void fitFigures();
+  struct Figure {
+    QLabel* label;
+    QPixmap original;
+  };
+  std::vector<Figure> figures_;
   QTemporaryDir folder_;
   QWidget* content_ = nullptr;
   QVBoxLayout* layout_ = nullptr;

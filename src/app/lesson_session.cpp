@@ -96,13 +96,16 @@ PipelineResult LessonLibrary::runOne(const lesson::Lesson& lesson, const lesson:
   out.formFactorStats = stepResult->formFactorStats;
   if (out.F) out.formFactorMethod = step.parameters.method;
   out.title = step.title;
-  // What the 3D view shows: the solution, else the local-illumination estimate, else the scene's own light.
-  if (stepResult->B.rows() == static_cast<Eigen::Index>(stepResult->mesh.size()))
+  // What the 3D view shows: the solution, else the local-illumination estimate, else the materials (B then
+  // holds the ambient estimate, for exports that need a radiosity).
+  if (stepResult->B.rows() == static_cast<Eigen::Index>(stepResult->mesh.size())) {
     out.B = stepResult->B;
-  else if (stepResult->local.rows() == static_cast<Eigen::Index>(stepResult->mesh.size()))
+  } else if (stepResult->local.rows() == static_cast<Eigen::Index>(stepResult->mesh.size())) {
     out.B = stepResult->local;
-  else
+  } else {
     out.B = ambientEstimate(stepResult->mesh);
+    out.materials = true;
+  }
   // Solving steps are replayed iteration by iteration: solve again with the history recorded (F is at hand,
   // so this costs a solve, never a form-factor computation). A bounces step replays its partial sums, bounce
   // by bounce.

@@ -282,12 +282,14 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
           : nullptr;
   // A step of text only has nothing to draw: its text takes the whole width instead of an empty view.
   viewsPane_->setVisible(r.mesh && r.mesh->size() > 0);
+  primaryView_->setMaterialView(r.materials);
   primaryView_->setScene(r.mesh.get(), r.B, r.camera, newStep);
   primaryView_->setCaption(QString::fromStdString(compare_               ? paneCaption(r, r.compared.get())
                                                   : r.solverName.empty() ? r.title
                                                                          : r.solverName));
   if (stepResult && !stepResult->highlighted.empty()) primaryView_->setHighlighted(stepResult->highlighted);
   if (compare_ && r.compared) {
+    secondaryView_->setMaterialView(r.compared->materials);
     secondaryView_->setScene(r.compared->mesh.get(), r.compared->B, r.camera, false);
     secondaryView_->syncCameraFrom(*primaryView_);
     secondaryView_->setCaption(QString::fromStdString(paneCaption(*r.compared, &r)));

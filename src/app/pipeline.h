@@ -40,7 +40,8 @@ struct PipelineResult {
   SolverStatus status = SolverStatus::InvalidInput;
   int iterations = 0;
   double residual = 0;
-  std::string note;  // why the result is an approximation, when it is one
+  std::string note;        // why the result is an approximation, when it is one
+  bool materials = false;  // no radiosity to show (a benchmark step): the 3D view shows the materials
   Camera camera;
   // Lesson steps: the title, the step's text with its placeholders filled in, and what the step runner
   // returned.

@@ -101,15 +101,40 @@ void SceneView::setRadiosity(const RgbField& B) {
 
 void SceneView::setViewOptions(const viz::SceneViewOptions& options) {
   options_ = options;
+  applyLighting();
   actor_->GetProperty()->SetInterpolation(options_.image.smooth ? VTK_GOURAUD : VTK_FLAT);
   setShowEdges(options_.image.showEdges);
   if (mesh_) repaint3d();
   requestRender();
 }
 
+void SceneView::setMaterialView(bool materials) {
+  materialView_ = materials;
+  if (options_.colouring == viz::SceneColouring::Radiosity ||
+      options_.colouring == viz::SceneColouring::Reflectance)
+    options_.colouring = materials ? viz::SceneColouring::Reflectance : viz::SceneColouring::Radiosity;
+  applyLighting();
+  if (mesh_) repaint3d();
+  requestRender();
+}
+
+void SceneView::applyLighting() {
+  // The same mild headlight as the figure pipeline's material view (viz/vtk_views.cpp); radiosity and scalar
+  // colourings are the colour itself.
+  const bool shaded = options_.colouring == viz::SceneColouring::Reflectance;
+  vtkProperty* property = actor_->GetProperty();
+  property->SetLighting(shaded);
+  property->SetAmbient(shaded ? 0.6 : 0.0);
+  property->SetDiffuse(shaded ? 0.4 : 1.0);
+  property->SetSpecular(0.0);
+}
+
 void SceneView::setScalarField(const Eigen::VectorXd& values, const std::string& title) {
   data_.scalar = values;
-  options_.colouring = values.size() > 0 ? viz::SceneColouring::Scalar : viz::SceneColouring::Radiosity;
+  options_.colouring = values.size() > 0 ? viz::SceneColouring::Scalar
+                       : materialView_   ? viz::SceneColouring::Reflectance
+                                         : viz::SceneColouring::Radiosity;
+  applyLighting();
   options_.legend = viz::ScalarLegend{};
   options_.legend.title = title;
   options_.colourBar = values.size() > 0;

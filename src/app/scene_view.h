@@ -34,6 +34,10 @@ class SceneView : public VtkWidget {
   // Colours the elements by one value each (e.g. a row of F) through the viz colour map, with its colour bar,
   // instead of by radiosity; an empty field returns to radiosity.
   void setScalarField(const Eigen::VectorXd& values, const std::string& title);
+  // Steps without a solution show the materials instead, lit by a headlight so that the shapes read (a white
+  // block in front of a white wall would otherwise vanish), as the exported material figures do.
+  void setMaterialView(bool materials);
+  bool materialView() const { return materialView_; }
   const viz::SceneViewOptions& viewOptions() const { return options_; }
   const viz::SceneViewData& viewData() const { return data_; }
   const Mesh* mesh() const { return mesh_; }
@@ -65,6 +69,7 @@ class SceneView : public VtkWidget {
 
   const Mesh* mesh_ = nullptr;
   void repaint3d();
+  void applyLighting();
   viz::SceneViewData data_;
   viz::SceneViewOptions options_;
   vtkSmartPointer<vtkPolyData> polyData_;
@@ -72,6 +77,7 @@ class SceneView : public VtkWidget {
   vtkSmartPointer<vtkActor> actor_;
   vtkSmartPointer<vtkActor> highlightActor_;
   vtkSmartPointer<vtkTextActor> caption_;
+  bool materialView_ = false;
   vtkSmartPointer<vtkScalarBarActor> colourBar_;  // scalar colourings (a row of F, errors): values readable
   std::vector<int> highlighted_;
   bool showEdges_ = false;

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <QImage>
+#include <QLabel>
 
+#include "app/figures_pane.h"
 #include "app/scene_view.h"
 #include "app/screenshot.h"
 #include "app_test_support.h"
@@ -58,6 +60,26 @@ TEST(Screenshot, KeyLessonStepsShowInTheView) {
     }
     expectRealImage(*window, lesson.toStdString() + " step " + std::to_string(step + 1));
   }
+}
+
+// A benchmark step solves nothing: the view shows the materials under a headlight (with the radiosity
+// colouring of an ambient estimate, the box's white walls and floor were one flat colour); its charts fit the
+// pane.
+TEST(Screenshot, AStepWithoutASolutionShowsTheShadedMaterials) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->resize(1400, 900);
+  ASSERT_TRUE(window->openLesson("runtime-error-lab", 0)) << window->lastError().toStdString();
+  EXPECT_TRUE(window->primaryView()->materialView());
+  EXPECT_EQ(window->primaryView()->viewOptions().colouring, rt::viz::SceneColouring::Reflectance);
+  expectRealImage(*window, "runtime-error-lab step 1");
+  const auto figures = window->figuresPane()->findChildren<QLabel*>("figure");
+  ASSERT_FALSE(figures.empty());
+  for (const QLabel* figure : figures)
+    EXPECT_LE(figure->pixmap().width(), window->figuresPane()->viewport()->width());
+  ASSERT_TRUE(window->openLesson("cornell-box", 3)) << window->lastError().toStdString();
+  EXPECT_FALSE(window->primaryView()->materialView());
+  EXPECT_EQ(window->primaryView()->viewOptions().colouring, rt::viz::SceneColouring::Radiosity);
 }
 
 // The 3D view of key steps against baselines (Mesa's software renderer draws the same pixels run after run;
