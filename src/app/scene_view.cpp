@@ -88,6 +88,7 @@ void SceneView::applyCamera(const Camera& c) {
   camera->SetFocalPoint(c.target.data());
   camera->SetViewUp(c.up.data());
   camera->SetViewAngle(c.fovYDegrees);
+  fitViewAngle();
   renderer()->ResetCameraClippingRange();
   requestRender();
 }
@@ -192,6 +193,19 @@ void SceneView::setCaption(const QString& text) {
 void SceneView::resizeEvent(QResizeEvent* event) {
   VtkWidget::resizeEvent(event);
   fitCaption();
+  fitViewAngle();
+}
+
+void SceneView::fitViewAngle() {
+  // A step's camera frames the scene for a roughly square view, its angle measured along the height. A pane
+  // narrower than it is tall (each of compare mode's two) would then show only the middle of the room: it
+  // takes the same angle across its width instead, so the whole framing stays in view.
+  if (width() <= 0 || height() <= 0) return;
+  vtkCamera* camera = renderer()->GetActiveCamera();
+  const bool narrow = width() < height();
+  if (camera->GetUseHorizontalViewAngle() == narrow) return;
+  camera->SetUseHorizontalViewAngle(narrow);
+  requestRender();
 }
 
 void SceneView::fitCaption() {
@@ -246,6 +260,7 @@ void SceneView::rebuildHighlight() {
 
 void SceneView::syncCameraFrom(const SceneView& other) {
   renderer()->GetActiveCamera()->DeepCopy(other.renderer()->GetActiveCamera());
+  fitViewAngle();
   renderer()->ResetCameraClippingRange();
   requestRender();
 }

@@ -70,6 +70,7 @@ class SceneView : public VtkWidget {
   const Mesh* mesh_ = nullptr;
   void repaint3d();
   void applyLighting();
+  void fitViewAngle();
   viz::SceneViewData data_;
   viz::SceneViewOptions options_;
   vtkSmartPointer<vtkPolyData> polyData_;

@@ -1,14 +1,22 @@
 // Compare mode's right pane: another solver, form-factor method or mesh, on one camera and one clock.
 #include <gtest/gtest.h>
 
+#include <vtkCamera.h>
+#include <vtkRenderer.h>
+#include <cstdlib>
+
 #include <QApplication>
+#include <QColor>
 #include <QComboBox>
+#include <QImage>
 
 #include "app/compare_choice.h"
 #include "app/iteration_player.h"
 #include "app/parameter_panel.h"
 #include "app/scene_view.h"
+#include "app/screenshot.h"
 #include "app_test_support.h"
+#include "viz/vtk_render.h"
 
 using namespace rt::app;
 
@@ -114,4 +122,45 @@ TEST(CompareMode, TheMeshChoiceIsOfferedInThePanel) {
     EXPECT_GE(box->findText(QString::fromStdString(choice)), 0) << choice;
   box->setCurrentText("coarser");
   EXPECT_EQ(window->compareChoice().mesh, "coarser");
+}
+
+// Compare mode's panes are narrower than they are tall: each keeps the step's view angle across its width, so
+// both side walls of the Cornell box (red and green) are in view, not just the middle of the room.
+TEST(CompareMode, NarrowPanesShowTheWholeRoom) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->resize(1400, 900);
+  ASSERT_TRUE(window->openLesson("gathering", 0)) << window->lastError().toStdString();
+  window->setCompareMode(true);
+  QApplication::processEvents();
+  for (SceneView* view : {window->primaryView(), window->secondaryView()}) {
+    ASSERT_LT(view->width(), view->height());
+    EXPECT_TRUE(view->renderer()->GetActiveCamera()->GetUseHorizontalViewAngle());
+    const QImage image = grabWindow(*window).copy(test::areaOf(window.get(), view));
+    // The room fills a square across the pane, background above it (a view cropped to the middle of the room
+    // has none), and both side walls show.
+    const QColor background =
+        QColor::fromRgbF(rt::viz::kBackground[0], rt::viz::kBackground[1], rt::viz::kBackground[2]);
+    int top = 0, topSamples = 0, red = 0, green = 0, samples = 0;
+    for (int y = 0; y < image.height(); y += 2)
+      for (int x = 0; x < image.width(); x += 2) {
+        const QColor c = image.pixelColor(x, y);
+        ++samples;
+        red += c.red() > 1.8 * c.green() && c.red() > 1.8 * c.blue() && c.red() > 60;
+        green += c.green() > 1.3 * c.red() && c.green() > 1.3 * c.blue() && c.green() > 60;
+        if (y < image.height() / 10) {
+          ++topSamples;
+          top += std::abs(c.red() - background.red()) + std::abs(c.green() - background.green()) +
+                     std::abs(c.blue() - background.blue()) <
+                 12;
+        }
+      }
+    EXPECT_GT(top, topSamples * 9 / 10) << "background above the room";
+    EXPECT_GT(red, samples / 50) << "the red wall";
+    EXPECT_GT(green, samples / 50) << "the green wall";
+  }
+  window->setCompareMode(false);
+  QApplication::processEvents();
+  EXPECT_GT(window->primaryView()->width(), window->primaryView()->height());
+  EXPECT_FALSE(window->primaryView()->renderer()->GetActiveCamera()->GetUseHorizontalViewAngle());
 }
