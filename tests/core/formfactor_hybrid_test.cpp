@@ -11,13 +11,7 @@
 namespace rt {
 namespace {
 
-FormFactorMatrix run(const std::string& method, const Mesh& mesh, FormFactorOptions options = {},
-                     FormFactorStats* statsOut = nullptr) {
-  FormFactorStats stats;
-  FormFactorMatrix F = makeFormFactorMethod(method)->compute(mesh, options, noProgress(), stats);
-  if (statsOut) *statsOut = stats;
-  return F;
-}
+using test::runMethod;
 
 double radius(const Mesh& mesh, int e) {
   double r = 0;
@@ -38,9 +32,9 @@ double rms(const FormFactorMatrix& a) {
 TEST(HybridFormFactors, NearPairsAreExactAndFarPairsWithinTheCentroidRulesBound) {
   for (int subdivide : {3, 6}) {
     const Mesh mesh = test::meshOf(test::closedBox(1, 2, 3), subdivide);
-    const FormFactorMatrix exact = run("analytic", mesh);
+    const FormFactorMatrix exact = runMethod("analytic", mesh);
     FormFactorStats stats;
-    const FormFactorMatrix F = run("hybrid", mesh, {}, &stats);
+    const FormFactorMatrix F = runMethod("hybrid", mesh, {}, &stats);
     EXPECT_EQ(stats.raysCast, 0u);
     int near = 0, far = 0;
     double worstRatio = 0;
@@ -75,7 +69,7 @@ TEST(HybridFormFactors, OccludedPairsConvergeAndAreDeterministicForASeed) {
   FormFactorOptions options;
   options.samples = 1024;
   options.seed = 99;
-  const FormFactorMatrix reference = run("raycast", mesh, options);
+  const FormFactorMatrix reference = runMethod("raycast", mesh, options);
 
   double previousError = 1e9;
   std::size_t previousRays = 0;
@@ -83,7 +77,7 @@ TEST(HybridFormFactors, OccludedPairsConvergeAndAreDeterministicForASeed) {
     options.samples = samples;
     options.seed = 1;
     FormFactorStats stats;
-    const FormFactorMatrix F = run("hybrid", mesh, options, &stats);
+    const FormFactorMatrix F = runMethod("hybrid", mesh, options, &stats);
     const double error = rms(F - reference);
     if (samples == 256) {
       EXPECT_LT((F - reference).cwiseAbs().maxCoeff(), 2e-3);
@@ -92,9 +86,9 @@ TEST(HybridFormFactors, OccludedPairsConvergeAndAreDeterministicForASeed) {
     EXPECT_LT(error, previousError) << samples;
     previousError = error;
     previousRays = stats.raysCast;
-    EXPECT_EQ((F - run("hybrid", mesh, options)).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ((F - runMethod("hybrid", mesh, options)).cwiseAbs().maxCoeff(), 0.0);
     options.seed = 7;
-    EXPECT_GT((F - run("hybrid", mesh, options)).cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_GT((F - runMethod("hybrid", mesh, options)).cwiseAbs().maxCoeff(), 0.0);
   }
 }
 

@@ -12,13 +12,7 @@
 namespace rt {
 namespace {
 
-FormFactorMatrix run(const std::string& method, const Mesh& mesh, FormFactorOptions options = {},
-                     FormFactorStats* statsOut = nullptr) {
-  FormFactorStats stats;
-  FormFactorMatrix F = makeFormFactorMethod(method)->compute(mesh, options, noProgress(), stats);
-  if (statsOut) *statsOut = stats;
-  return F;
-}
+using test::runMethod;
 
 double maxAbsDifference(const FormFactorMatrix& a, const FormFactorMatrix& b) {
   return (a - b).cwiseAbs().maxCoeff();
@@ -37,7 +31,7 @@ TEST(FormFactorMethods, AnalyticRowsSumToOneInClosedBoxes) {
     for (int subdivide : {1, 3}) {
       const Mesh mesh = test::meshOf(scene, subdivide);
       FormFactorStats stats;
-      const FormFactorMatrix F = run("analytic", mesh, {}, &stats);
+      const FormFactorMatrix F = runMethod("analytic", mesh, {}, &stats);
       const auto d = diagnose(F, mesh.areas());
       EXPECT_LT(d.maxClosureError, 1e-9) << subdivide;
       EXPECT_LT(d.maxReciprocityError, 1e-12);
@@ -48,7 +42,7 @@ TEST(FormFactorMethods, AnalyticRowsSumToOneInClosedBoxes) {
 
 TEST(FormFactorMethods, AnalyticMatchesReferenceCubeFaces) {
   const Mesh mesh = test::meshOf(test::closedBox(1, 1, 1), 1);
-  const FormFactorMatrix F = run("analytic", mesh);
+  const FormFactorMatrix F = runMethod("analytic", mesh);
   EXPECT_NEAR(F(0, 1), 0.19982489569838738, 1e-15);  // opposite faces (Howell C-11)
   EXPECT_NEAR(F(0, 2), 0.20004377607540316, 1e-15);  // adjacent faces (Howell C-14)
 }
@@ -56,7 +50,7 @@ TEST(FormFactorMethods, AnalyticMatchesReferenceCubeFaces) {
 TEST(FormFactorMethods, SkipRulesFireWhereTheyShouldAndNeverChangeTheResult) {
   const Mesh mesh = test::meshOf(test::closedBox(1, 2, 3), 2);
   FormFactorStats stats;
-  const FormFactorMatrix F = run("analytic", mesh, {}, &stats);
+  const FormFactorMatrix F = runMethod("analytic", mesh, {}, &stats);
   // Each face is 2 x 2 elements: pairs on the same face (6 faces x 6 pairs) face away; everything else is
   // computed once and mirrored.
   const std::size_t n = mesh.size(), pairs = n * (n - 1) / 2;
@@ -100,8 +94,8 @@ TEST(FormFactorMethods, VisibilityReducesOccludedPairsOnly) {
   FormFactorOptions options;
   options.samples = 64;
   FormFactorStats stats;
-  const FormFactorMatrix open = run("analytic", mesh);
-  const FormFactorMatrix shadowed = run("analytic-visibility", mesh, options, &stats);
+  const FormFactorMatrix open = runMethod("analytic", mesh);
+  const FormFactorMatrix shadowed = runMethod("analytic-visibility", mesh, options, &stats);
   EXPECT_GT(stats.raysCast, 0u);
   EXPECT_LT(shadowed.sum(), open.sum());
   EXPECT_TRUE((shadowed.array() <= open.array() + 1e-15).all());
@@ -121,17 +115,17 @@ TEST(FormFactorMethods, RaycastConvergesToAnalyticInAConvexBox) {
   const Mesh mesh = test::meshOf(test::closedBox(1, 2, 3), 2);
   FormFactorOptions options;
   options.samples = 64;
-  const FormFactorMatrix exact = run("analytic", mesh);
+  const FormFactorMatrix exact = runMethod("analytic", mesh);
   FormFactorStats stats;
-  const FormFactorMatrix F = run("raycast", mesh, options, &stats);
+  const FormFactorMatrix F = runMethod("raycast", mesh, options, &stats);
   EXPECT_EQ(stats.raysCast, 0u);
   EXPECT_LT(maxAbsDifference(F, exact), 2e-2);
   EXPECT_LT(diagnose(F, mesh.areas()).maxClosureError, 2e-2);
   EXPECT_LT(diagnose(F, mesh.areas()).maxReciprocityError, 1e-12);  // reciprocity by construction
   // Deterministic for a seed, different for another.
-  EXPECT_EQ(maxAbsDifference(F, run("raycast", mesh, options)), 0.0);
+  EXPECT_EQ(maxAbsDifference(F, runMethod("raycast", mesh, options)), 0.0);
   options.seed = 7;
-  EXPECT_GT(maxAbsDifference(F, run("raycast", mesh, options)), 0.0);
+  EXPECT_GT(maxAbsDifference(F, runMethod("raycast", mesh, options)), 0.0);
 }
 
 // montecarlo: each entry is a binomial proportion, standard error sqrt(F(1-F)/N). With N = 20000 rays per
@@ -142,14 +136,14 @@ TEST(FormFactorMethods, MonteCarloIsUnbiasedWithinItsStandardError) {
   const Mesh mesh = test::meshOf(test::closedBox(1, 2, 3), 1);
   FormFactorOptions options;
   options.samples = 20000;
-  const FormFactorMatrix exact = run("analytic", mesh);
+  const FormFactorMatrix exact = runMethod("analytic", mesh);
   FormFactorStats stats;
-  const FormFactorMatrix F = run("montecarlo", mesh, options, &stats);
+  const FormFactorMatrix F = runMethod("montecarlo", mesh, options, &stats);
   EXPECT_LT(maxAbsDifference(F, exact), 0.017);
   EXPECT_GT(stats.standardError, 0.0);
   EXPECT_LT(stats.standardError, 0.004);
   EXPECT_LT(diagnose(F, mesh.areas()).maxClosureError, 1e-3);
-  EXPECT_EQ(maxAbsDifference(F, run("montecarlo", mesh, options)), 0.0);
+  EXPECT_EQ(maxAbsDifference(F, runMethod("montecarlo", mesh, options)), 0.0);
 }
 
 // hemicube: the centroid-point approximation dominates for face-sized elements (about 5e-2 for adjacent faces
@@ -159,12 +153,12 @@ TEST(FormFactorMethods, HemicubeApproachesAnalyticAndClosesRows) {
   const Mesh mesh = test::meshOf(test::closedBox(1, 1, 1), 1);
   FormFactorOptions options;
   options.hemicubeResolution = 256;
-  const FormFactorMatrix F = run("hemicube", mesh, options);
-  EXPECT_LT(maxAbsDifference(F, run("analytic", mesh)), 0.06);
+  const FormFactorMatrix F = runMethod("hemicube", mesh, options);
+  EXPECT_LT(maxAbsDifference(F, runMethod("analytic", mesh)), 0.06);
   EXPECT_LT(diagnose(F, mesh.areas()).maxClosureError, 1e-12);
   // Finer elements: the centroid approximation improves (error of the point rule ~ (size/distance)^2).
   const Mesh fine = test::meshOf(test::closedBox(1, 2, 3), 4);
-  const FormFactorMatrix Ff = run("hemicube", fine, options);
+  const FormFactorMatrix Ff = runMethod("hemicube", fine, options);
   EXPECT_LT(diagnose(Ff, fine.areas()).maxClosureError, 1e-9);
 }
 
@@ -174,7 +168,7 @@ TEST(FormFactorMethods, NusseltRowsMatchCentroidLambert) {
   const Mesh mesh = test::meshOf(test::closedBox(1, 2, 3), 2);
   FormFactorOptions options;
   options.samples = 64;
-  const FormFactorMatrix F = run("nusselt", mesh, options);
+  const FormFactorMatrix F = runMethod("nusselt", mesh, options);
   for (int i = 0; i < static_cast<int>(mesh.size()); ++i)
     for (int j = 0; j < static_cast<int>(mesh.size()); ++j) {
       const double lambert = i == j ? 0

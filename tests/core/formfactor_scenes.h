@@ -2,6 +2,9 @@
 // inside (occlusion), two facing squares.
 #pragma once
 
+#include <string>
+
+#include "core/formfactor/formfactor_method.h"
 #include "core/mesh.h"
 #include "core/polygon.h"
 
@@ -66,6 +69,15 @@ inline Mesh meshOf(const Scene& s, int subdivide) {
     o.count = subdivide;
   }
   return buildMesh(s, o);
+}
+
+// F of `mesh` by the registered method `method`, its stats in *statsOut when asked for.
+inline FormFactorMatrix runMethod(const std::string& method, const Mesh& mesh, FormFactorOptions options = {},
+                                  FormFactorStats* statsOut = nullptr) {
+  FormFactorStats stats;
+  FormFactorMatrix F = makeFormFactorMethod(method)->compute(mesh, options, noProgress(), stats);
+  if (statsOut) *statsOut = stats;
+  return F;
 }
 
 }  // namespace rt::test

@@ -311,4 +311,12 @@ double polygonToPolygonFormFactor(const Polygon& from, const Polygon& to) {
                                     static_cast<int>(to.size()));
 }
 
+double pointToPointKernel(const Vec3& x, const Vec3& nx, const Vec3& y, const Vec3& ny) {
+  const Vec3 d = y - x;
+  const double r2 = d.squaredNorm();
+  if (r2 <= 0) return 0;
+  // The cosines are d.n / r each: r^4 below, not r^2.
+  return std::max(0.0, nx.dot(d)) * std::max(0.0, -ny.dot(d)) / (std::numbers::pi * r2 * r2);
+}
+
 }  // namespace rt

@@ -38,6 +38,10 @@ double polygonToPolygonFormFactor(const Polygon& from, const Polygon& to);
 // edges keep full accuracy.
 double contourFormFactorArea(const Polygon& from, const Polygon& to);
 
+// The point-to-point kernel cos θ_x cos θ_y / (π r²) between x (normal nx) and y (normal ny), zero where
+// either faces away; the integrand of F_ij times A_j.
+double pointToPointKernel(const Vec3& x, const Vec3& nx, const Vec3& y, const Vec3& ny);
+
 // Allocation-free overloads on raw vertex arrays (the matrix builders call these once per pair).
 double pointToPolygonFormFactor(const Vec3& point, const Vec3& normal, const Vec3* polygon, int count);
 double polygonToPolygonFormFactor(const Vec3* from, int fromCount, const Vec3* to, int toCount);

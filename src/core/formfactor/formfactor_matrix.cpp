@@ -8,9 +8,10 @@ namespace rt {
 
 std::string FormFactorDiagnostics::summary() const {
   char line[256];
-  std::snprintf(line, sizeof line,
-                "row sums [%.6g, %.6g], max |1 - row sum| %.3g, reciprocity error %.3g, %ld negative, %ld > 1",
-                minRowSum, maxRowSum, maxClosureError, maxReciprocityError, negativeEntries, entriesAboveOne);
+  std::snprintf(
+      line, sizeof line,
+      "row sums [%.6g, %.6g], max |1 - row sum| %.3g, reciprocity error %.3g, %ld negative, %ld > 1",
+      minRowSum, maxRowSum, maxClosureError, maxReciprocityError, negativeEntries, entriesAboveOne);
   return line;
 }
 

@@ -1,6 +1,7 @@
 // The form-factor matrix and the diagnostics every method reports.
-// Convention (docs/conventions.md): F(i,j) = (1/A_i) int_Ai int_Aj cos_i cos_j V / (pi r^2) dA_j dA_i, the fraction of
-// power leaving element i that arrives at element j. Rows sum to <= 1 (= 1 in a closed scene); A_i F_ij = A_j F_ji.
+// Convention (docs/conventions.md): F(i,j) = (1/A_i) int_Ai int_Aj cos_i cos_j V / (pi r^2) dA_j dA_i, the
+// fraction of power leaving element i that arrives at element j. Rows sum to <= 1 (= 1 in a closed scene);
+// A_i F_ij = A_j F_ji.
 #pragma once
 
 #include <Eigen/Core>

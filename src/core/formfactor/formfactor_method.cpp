@@ -24,10 +24,11 @@ void registerBuiltinFormFactorMethods();
 
 std::string FormFactorStats::summary() const {
   char line[512];
-  std::snprintf(line, sizeof line,
-                "%zu elements, %zu pairs computed, skipped: %zu facing away, %zu by reciprocity; %zu pairs needed no "
-                "visibility, %zu rays, %.3f s",
-                elements, pairsComputed, pairsSkippedFacing, pairsByReciprocity, pairsUnoccluded, raysCast, seconds);
+  std::snprintf(
+      line, sizeof line,
+      "%zu elements, %zu pairs computed, skipped: %zu facing away, %zu by reciprocity; %zu pairs needed no "
+      "visibility, %zu rays, %.3f s",
+      elements, pairsComputed, pairsSkippedFacing, pairsByReciprocity, pairsUnoccluded, raysCast, seconds);
   std::string s = line;
   if (standardError > 0) s += ", standard error " + std::to_string(standardError);
   if (!notes.empty()) s += " (" + notes + ")";

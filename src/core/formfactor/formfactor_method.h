@@ -25,15 +25,15 @@ struct FormFactorOptions {
 // What a run did and skipped; printed as one line by the CLI.
 struct FormFactorStats {
   std::size_t elements = 0;
-  std::size_t pairsComputed = 0;        // pairs that were integrated
-  std::size_t pairsSkippedFacing = 0;   // one entirely behind the other's plane: F = 0 without work
-  std::size_t pairsByReciprocity = 0;   // derived as F_ji = A_i F_ij / A_j
-  std::size_t pairsUnoccluded = 0;      // shaft proved empty: no visibility work
+  std::size_t pairsComputed = 0;       // pairs that were integrated
+  std::size_t pairsSkippedFacing = 0;  // one entirely behind the other's plane: F = 0 without work
+  std::size_t pairsByReciprocity = 0;  // derived as F_ji = A_i F_ij / A_j
+  std::size_t pairsUnoccluded = 0;     // shaft proved empty: no visibility work
   std::size_t raysCast = 0;
   double seconds = 0.0;
-  double standardError = 0.0;  // stochastic methods: RMS standard error of the entries (0 otherwise)
-  std::string notes;           // e.g. "visibility by ray casting (16 rays/pair)"
-  std::string summary() const; // one line
+  double standardError = 0.0;   // stochastic methods: RMS standard error of the entries (0 otherwise)
+  std::string notes;            // e.g. "visibility by ray casting (16 rays/pair)"
+  std::string summary() const;  // one line
 };
 
 class FormFactorMethod {
@@ -48,10 +48,11 @@ class FormFactorMethod {
 
 using FormFactorMethodFactory = std::function<std::unique_ptr<FormFactorMethod>()>;
 
-// Registry. Built-in methods register themselves in formfactor_registry.cpp; the exact library adds "exact" with
-// registerFormFactorMethod when it is linked (rt::exact::registerExactMethod()).
+// Registry. Built-in methods register themselves in formfactor_registry.cpp; the exact library adds "exact"
+// with registerFormFactorMethod when it is linked (rt::exact::registerExactMethod()).
 void registerFormFactorMethod(const std::string& name, FormFactorMethodFactory factory);
-std::unique_ptr<FormFactorMethod> makeFormFactorMethod(const std::string& name);  // throws std::invalid_argument
+std::unique_ptr<FormFactorMethod> makeFormFactorMethod(
+    const std::string& name);  // throws std::invalid_argument
 std::vector<std::string> formFactorMethodNames();
 
 }  // namespace rt

@@ -20,7 +20,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <numbers>
 #include <vector>
 
 #include "core/formfactor/analytic.h"
@@ -43,13 +42,6 @@ std::vector<double> elementRadii(const Mesh& mesh) {
     for (int v : mesh.elements[e].vertices)
       radii[e] = std::max(radii[e], (mesh.vertices[v] - mesh.elements[e].centroid).norm());
   return radii;
-}
-
-double kernel(const Vec3& x, const Vec3& normalX, const Vec3& y, const Vec3& normalY) {
-  const Vec3 d = y - x;
-  const double r2 = d.squaredNorm();
-  if (r2 <= 0) return 0;
-  return std::max(0.0, normalX.dot(d)) * std::max(0.0, -normalY.dot(d)) / (std::numbers::pi * r2 * r2);
 }
 
 class HybridMethod : public FormFactorMethod {
@@ -79,7 +71,8 @@ class HybridMethod : public FormFactorMethod {
       else if (distance < kFarRadii * reach)
         unoccluded = pointToPolygonFormFactor(from.centroid, from.normal, b.v.data(), b.count);
       else
-        unoccluded = std::min(1.0, to.area * kernel(from.centroid, from.normal, to.centroid, to.normal));
+        unoccluded =
+            std::min(1.0, to.area * pointToPointKernel(from.centroid, from.normal, to.centroid, to.normal));
       result.value = unoccluded;
       result.needsVisibility = visibility.mayBeOccluded(i, j);
       if (!result.needsVisibility || unoccluded <= 0) return result;
@@ -95,7 +88,8 @@ class HybridMethod : public FormFactorMethod {
         const Vec2 s = grid.sample(k, random),
                    t = grid.sample(strataOfJ[static_cast<std::size_t>(k)], random);
         const Vec3 x = onI.point(s.x(), s.y()), y = onJ.point(t.x(), t.y());
-        if (!visibility.rays().visible(x, y, i, j)) hidden += kernel(x, from.normal, y, to.normal);
+        if (!visibility.rays().visible(x, y, i, j))
+          hidden += pointToPointKernel(x, from.normal, y, to.normal);
       }
       result.rays = static_cast<std::size_t>(rays);
       // Clamped: hidden samples close together can overshoot a pair that is in fact fully hidden.
@@ -104,15 +98,8 @@ class HybridMethod : public FormFactorMethod {
     };
 
     FormFactorMatrix F =
-        computeReciprocalMatrix(mesh, options, progress, stats, "form factors (hybrid)", [&](int i, int j) {
-          // Work from the smaller element, as raycast does: errors made on the larger one would be
-          // multiplied by the area ratio on the way back.
-          const double ai = mesh.elements[i].area, aj = mesh.elements[j].area;
-          if (ai <= aj * (1 + 1e-9)) return integrate(i, j);
-          PairResult result = integrate(j, i);
-          result.value *= aj / ai;
-          return result;
-        });
+        computeReciprocalMatrix(mesh, options, progress, stats, "form factors (hybrid)",
+                                [&](int i, int j) { return fromSmallerElement(mesh, i, j, integrate); });
     stats.notes = "exact F within " + std::to_string(static_cast<int>(kNearRadii)) +
                   " radii, centroid rules beyond; occluded pairs less a ray-cast hidden part, " +
                   std::to_string(std::max(1, options.samples)) + " rays per 1 % of form factor (1.." +

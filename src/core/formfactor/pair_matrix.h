@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/formfactor/formfactor_method.h"
+#include "core/mesh.h"
 
 namespace rt {
 
@@ -33,6 +34,19 @@ struct PairResult {
   std::size_t rays = 0;          // rays cast for it
   bool needsVisibility = false;  // false: the shaft test proved it unoccluded
 };
+
+// F_ij for a method that estimates on the element it samples: integrate(a, b) runs from the smaller of i and
+// j and the result is scaled to i -> j by reciprocity. An estimate made on the larger element would be
+// multiplied by A_large / A_small on the way back (1000 for a 1000:1 sliver against its neighbour), and so
+// would its error. Equal areas (to rounding, which changes with the units) keep the pair's order.
+template <class Integrate>
+PairResult fromSmallerElement(const Mesh& mesh, int i, int j, Integrate&& integrate) {
+  const double ai = mesh.elements[i].area, aj = mesh.elements[j].area;
+  if (ai <= aj * (1 + 1e-9)) return integrate(i, j);
+  PairResult result = integrate(j, i);
+  result.value *= aj / ai;
+  return result;
+}
 
 // For methods whose pair integral is symmetric (analytic, raycast): computes F_ij for i < j only when the
 // elements face each other, sets F_ji = A_i F_ij / A_j. With `useSkipRules` false every ordered pair is

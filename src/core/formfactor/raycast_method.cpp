@@ -26,9 +26,6 @@ class RaycastMethod : public FormFactorMethod {
                            FormFactorStats& stats) const override {
     const PairVisibility visibility(mesh);
     const int samples = std::clamp(options.samples, 1, 1024);
-    // Sample on the smaller of the two elements and derive the other direction by reciprocity: an estimate
-    // made on the larger one would be multiplied by A_large / A_small (1000 for a 1000:1 sliver against its
-    // neighbour), and so would its sampling error.
     auto integrate = [&](int i, int j) {
       const RaycastPairEstimate estimate = estimateRaycastPair(mesh, visibility, i, j, samples, options.seed);
       PairResult result;
@@ -38,14 +35,8 @@ class RaycastMethod : public FormFactorMethod {
       return result;
     };
     FormFactorMatrix F =
-        computeReciprocalMatrix(mesh, options, progress, stats, "form factors (raycast)", [&](int i, int j) {
-          // Equal areas (to rounding, which changes with the units) keep the pair's order.
-          const double ai = mesh.elements[i].area, aj = mesh.elements[j].area;
-          if (ai <= aj * (1 + 1e-9)) return integrate(i, j);
-          PairResult result = integrate(j, i);
-          result.value *= aj / ai;
-          return result;
-        });
+        computeReciprocalMatrix(mesh, options, progress, stats, "form factors (raycast)",
+                                [&](int i, int j) { return fromSmallerElement(mesh, i, j, integrate); });
     stats.notes =
         std::to_string(samples) +
         " stratified samples/pair: Lambert point-to-element, less the kernel of the hidden sample pairs "

@@ -1,7 +1,6 @@
 #include "core/formfactor/raycast_pair.h"
 
 #include <algorithm>
-#include <numbers>
 #include <vector>
 
 #include "core/formfactor/analytic.h"
@@ -34,12 +33,7 @@ RaycastPairEstimate estimateRaycastPair(const Mesh& mesh, const PairVisibility& 
       const Vec2 t = grid.sample(strataOfJ[static_cast<std::size_t>(k)], random);
       const Vec3 y = onJ.point(t.x(), t.y());
       ++result.rays;
-      if (!visibility.rays().visible(x, y, i, j)) {
-        const Vec3 d = y - x;
-        const double r2 = d.squaredNorm();
-        const double cosines = std::max(0.0, normalI.dot(d)) * std::max(0.0, -normalJ.dot(d));
-        if (r2 > 0) value -= areaJ * cosines / (std::numbers::pi * r2 * r2);
-      }
+      if (!visibility.rays().visible(x, y, i, j)) value -= areaJ * pointToPointKernel(x, normalI, y, normalJ);
     }
     sum += value;
   }
