@@ -1,5 +1,5 @@
-// The subcommands of `radiosity`. Each lives in its own cmd_*.cpp and adds itself to the CLI11 app; its callback
-// does the work and throws on error (main prints the message to stderr and exits non-zero).
+// The subcommands of `radiosity`. Each lives in its own cmd_*.cpp and adds itself to the CLI11 app; its
+// callback does the work and throws on error (main prints the message to stderr and exits non-zero).
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -1,4 +1,5 @@
-// radiosity: everything the app computes, headless. Thin: parses arguments, runs a subcommand, reports errors.
+// radiosity: everything the app computes, headless. Thin: parses arguments, runs a subcommand, reports
+// errors.
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>

@@ -61,8 +61,8 @@ SpectralRadiusEstimate spectralRadius(const FormFactorMatrix& F, const Eigen::Ve
   // A positive start vector has a component along the (non-negative) Perron vector.
   Eigen::VectorXd x = Eigen::VectorXd::Ones(n) / std::sqrt(static_cast<double>(n));
   // Nilpotent M (light that dies out after a few bounces: an open scene whose emitters reflect nothing) has
-  // radius 0, which power iteration on M + I only approaches like 1/k. For M >= 0 and x > 0, M^k x = 0 exactly
-  // when M^k = 0, so a few plain products detect it (chains of up to 64 bounces).
+  // radius 0, which power iteration on M + I only approaches like 1/k. For M >= 0 and x > 0, M^k x = 0
+  // exactly when M^k = 0, so a few plain products detect it (chains of up to 64 bounces).
   Eigen::VectorXd z = x;
   for (Eigen::Index k = 0; k < std::min<Eigen::Index>(n, 64); ++k) {
     z = rho.cwiseProduct(F * z);

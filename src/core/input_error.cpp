@@ -10,6 +10,8 @@ std::string SourceLocation::describe() const {
 }
 
 InputError::InputError(SourceLocation where, const std::string& message)
-    : std::runtime_error(where.describe() + ": error: " + message), where_(std::move(where)), message_(message) {}
+    : std::runtime_error(where.describe() + ": error: " + message),
+      where_(std::move(where)),
+      message_(message) {}
 
 }  // namespace rt

@@ -1,5 +1,5 @@
-// Errors in user input (scene files, lesson files, command-line values). They always name where the problem is:
-// the file, and a line (text formats) or a JSON path, so that a user can go straight to it.
+// Errors in user input (scene files, lesson files, command-line values). They always name where the problem
+// is: the file, and a line (text formats) or a JSON path, so that a user can go straight to it.
 #pragma once
 
 #include <stdexcept>

@@ -10,8 +10,8 @@
 namespace rt {
 namespace {
 
-// Merges coincident vertices (within a tolerance relative to the scene size) so that elements of the same patch and of
-// abutting patches share them.
+// Merges coincident vertices (within a tolerance relative to the scene size) so that elements of the same
+// patch and of abutting patches share them.
 class VertexWelder {
  public:
   VertexWelder(std::vector<Vec3>& vertices, double cell) : vertices_(vertices), cell_(cell) {}
@@ -36,7 +36,8 @@ class VertexWelder {
  private:
   using Key = std::tuple<long long, long long, long long>;
   Key keyOf(const Vec3& p) const {
-    return {static_cast<long long>(std::floor(p.x() / cell_)), static_cast<long long>(std::floor(p.y() / cell_)),
+    return {static_cast<long long>(std::floor(p.x() / cell_)),
+            static_cast<long long>(std::floor(p.y() / cell_)),
             static_cast<long long>(std::floor(p.z() / cell_))};
   }
   std::vector<Vec3>& vertices_;
@@ -69,7 +70,8 @@ void splitQuad(const Polygon& q, int n, std::vector<Polygon>& out) {
 // Barycentric split of a triangle into n^2 similar triangles.
 void splitTriangle(const Polygon& t, int n, std::vector<Polygon>& out) {
   auto at = [&](int i, int j) {  // i along edge 0->1, j along edge 0->2
-    return Vec3(t[0] + (t[1] - t[0]) * (static_cast<double>(i) / n) + (t[2] - t[0]) * (static_cast<double>(j) / n));
+    return Vec3(t[0] + (t[1] - t[0]) * (static_cast<double>(i) / n) +
+                (t[2] - t[0]) * (static_cast<double>(j) / n));
   };
   for (int j = 0; j < n; ++j)
     for (int i = 0; i + j < n; ++i) {
@@ -127,7 +129,8 @@ std::uint64_t Mesh::geometryHash() const {
 Mesh buildMesh(const Scene& scene, const MeshOptions& options) {
   if (options.mode == MeshOptions::Mode::Count && options.count < 1)
     throw InputError({}, "--subdivide needs a count of at least 1, got " + std::to_string(options.count));
-  if (options.mode == MeshOptions::Mode::MaxEdge && !(options.maxEdge > 0.0 && std::isfinite(options.maxEdge)))
+  if (options.mode == MeshOptions::Mode::MaxEdge &&
+      !(options.maxEdge > 0.0 && std::isfinite(options.maxEdge)))
     throw InputError({}, "--max-edge needs a positive length");
 
   Mesh mesh;
@@ -145,7 +148,8 @@ Mesh buildMesh(const Scene& scene, const MeshOptions& options) {
     } else if (patch.vertices.size() == 3) {
       splitTriangle(patch.vertices, n, pieces);
     } else {
-      for (const Polygon& t : fanTriangulate(patch.vertices)) splitTriangle(t, divisionsFor(t, options), pieces);
+      for (const Polygon& t : fanTriangulate(patch.vertices))
+        splitTriangle(t, divisionsFor(t, options), pieces);
     }
     for (const Polygon& piece : pieces) {
       Element e;

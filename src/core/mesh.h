@@ -1,6 +1,7 @@
-// The computational mesh: elements obtained by subdividing patches. Elements are what form factors and solvers work on.
-// Every element remembers its parent patch; vertices are shared between elements of the same patch (and merged across
-// patches where they coincide) so that per-vertex radiosity can be interpolated for display.
+// The computational mesh: elements obtained by subdividing patches. Elements are what form factors and
+// solvers work on. Every element remembers its parent patch; vertices are shared between elements of the same
+// patch (and merged across patches where they coincide) so that per-vertex radiosity can be interpolated for
+// display.
 #pragma once
 
 #include <cstdint>
@@ -12,8 +13,9 @@
 namespace rt {
 
 struct Element {
-  std::vector<int> vertices;  // indices into Mesh::vertices, counter-clockwise seen from the front (3 or 4 of them)
-  int patch = -1;             // parent patch in the scene
+  std::vector<int>
+      vertices;    // indices into Mesh::vertices, counter-clockwise seen from the front (3 or 4 of them)
+  int patch = -1;  // parent patch in the scene
   Vec3 normal;
   Vec3 centroid;
   double area = 0.0;

@@ -1,5 +1,6 @@
-// Progress reporting and cancellation for long computations. The CLI prints a progress line from it, the app drives a
-// progress bar with a cancel button; computations poll cancelled() at coarse granularity (per row, per iteration).
+// Progress reporting and cancellation for long computations. The CLI prints a progress line from it, the app
+// drives a progress bar with a cancel button; computations poll cancelled() at coarse granularity (per row,
+// per iteration).
 #pragma once
 
 #include <atomic>

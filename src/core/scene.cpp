@@ -6,7 +6,8 @@
 namespace rt {
 
 bool Scene::hasEmitter() const {
-  return std::any_of(patches.begin(), patches.end(), [&](const Patch& p) { return materialOf(p).isEmitter(); });
+  return std::any_of(patches.begin(), patches.end(),
+                     [&](const Patch& p) { return materialOf(p).isEmitter(); });
 }
 
 double Scene::totalArea() const {

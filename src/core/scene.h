@@ -1,6 +1,6 @@
-// The scene model: planar convex one-sided polygons (patches) grouped into named surfaces that share a material.
-// Units: lengths in the scene's unit (metres unless the file says otherwise), emission and radiosity in W/m^2,
-// reflectance in [0,1) per RGB channel. See docs/scene-format.md and docs/conventions.md.
+// The scene model: planar convex one-sided polygons (patches) grouped into named surfaces that share a
+// material. Units: lengths in the scene's unit (metres unless the file says otherwise), emission and
+// radiosity in W/m^2, reflectance in [0,1) per RGB channel. See docs/scene-format.md and docs/conventions.md.
 #pragma once
 
 #include <optional>
@@ -20,15 +20,15 @@ struct Material {
 };
 
 struct Surface {
-  std::string name;  // e.g. "left_wall"; several patches may share a surface
-  int material = -1; // index into Scene::materials
+  std::string name;   // e.g. "left_wall"; several patches may share a surface
+  int material = -1;  // index into Scene::materials
 };
 
 struct Patch {
-  Polygon vertices;     // planar, convex, counter-clockwise seen from the front (the side it faces)
-  Vec3 normal;          // unit normal of the front side (right-hand rule of the vertex order)
+  Polygon vertices;  // planar, convex, counter-clockwise seen from the front (the side it faces)
+  Vec3 normal;       // unit normal of the front side (right-hand rule of the vertex order)
   double area = 0.0;
-  int surface = -1;     // index into Scene::surfaces
+  int surface = -1;       // index into Scene::surfaces
   SourceLocation origin;  // where it was defined, for messages
 };
 

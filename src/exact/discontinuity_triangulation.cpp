@@ -16,10 +16,12 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, CGAL::Default, CGAL::Exact_predicates_tag>;
 using Point = Cdt::Point;
 
-Point toPoint(const Vec2& p) { return Point(p.x(), p.y()); }
+Point toPoint(const Vec2& p) {
+  return Point(p.x(), p.y());
+}
 
-// Inserts a-b as a chain of constrained pieces no longer than `step`, so that long critical lines and boundary edges
-// do not force long thin triangles.
+// Inserts a-b as a chain of constrained pieces no longer than `step`, so that long critical lines and
+// boundary edges do not force long thin triangles.
 void insertChain(Cdt& cdt, const Vec2& a, const Vec2& b, double step) {
   const int pieces = step > 0 ? std::max(1, static_cast<int>(std::ceil((b - a).norm() / step))) : 1;
   Vec2 previous = a;
@@ -42,14 +44,17 @@ bool insideConvex(const std::vector<Vec2>& boundary, const Vec2& p, double eps) 
 }  // namespace
 
 rt::PlanarTriangulation triangulateWithConstraints(const rt::PlanarDomain& domain) {
-  if (domain.boundary.size() < 3) throw std::invalid_argument("constrained triangulation: boundary needs 3 points");
-  // Element size comes from Steiner points on a grid and from splitting the constraints, not from CGAL's Delaunay
-  // refinement (Mesh_2): with inexact constructions, refinement next to nearly parallel crossing critical lines can
-  // corrupt the triangulation, while plain insertion into the constrained triangulation is robust.
+  if (domain.boundary.size() < 3)
+    throw std::invalid_argument("constrained triangulation: boundary needs 3 points");
+  // Element size comes from Steiner points on a grid and from splitting the constraints, not from CGAL's
+  // Delaunay refinement (Mesh_2): with inexact constructions, refinement next to nearly parallel crossing
+  // critical lines can corrupt the triangulation, while plain insertion into the constrained triangulation is
+  // robust.
   const double step = domain.maxEdge > 0 ? 0.5 * domain.maxEdge : 0.0;
   Cdt cdt;
   const std::size_t n = domain.boundary.size();
-  for (std::size_t k = 0; k < n; ++k) insertChain(cdt, domain.boundary[k], domain.boundary[(k + 1) % n], step);
+  for (std::size_t k = 0; k < n; ++k)
+    insertChain(cdt, domain.boundary[k], domain.boundary[(k + 1) % n], step);
   for (const auto& [a, b] : domain.constraints)
     if ((a - b).norm() > 0) insertChain(cdt, a, b, step);
   Eigen::AlignedBox2d box;

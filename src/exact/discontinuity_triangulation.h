@@ -1,7 +1,8 @@
-// CGAL's constrained Delaunay triangulation for discontinuity meshing, behind a header without CGAL: the critical
-// lines become constrained edges (split into pieces of at most half the requested edge), a grid of Steiner points
-// at that spacing fills the interior, and the constrained Delaunay triangulation of it all is the receiver's mesh.
-// Exact predicates, inexact constructions: crossing critical lines are split at computed (rounded) intersections.
+// CGAL's constrained Delaunay triangulation for discontinuity meshing, behind a header without CGAL: the
+// critical lines become constrained edges (split into pieces of at most half the requested edge), a grid of
+// Steiner points at that spacing fills the interior, and the constrained Delaunay triangulation of it all is
+// the receiver's mesh. Exact predicates, inexact constructions: crossing critical lines are split at computed
+// (rounded) intersections.
 #pragma once
 
 #include "core/refine/constrained_triangulation.h"

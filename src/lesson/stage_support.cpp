@@ -17,7 +17,8 @@ void StageContext::fail(const std::string& key, const std::string& message) cons
   throw InputError(at(key), "step '" + step.title + "': " + message);
 }
 
-void StageContext::failUnavailable(const std::string& key, const std::string& name, const std::string& what) const {
+void StageContext::failUnavailable(const std::string& key, const std::string& name,
+                                   const std::string& what) const {
   const auto& known = knownMethods();
   if (std::find(known.begin(), known.end(), name) != known.end())
     throw MethodUnavailable(at(key), "step '" + step.title + "': form-factor method '" + name +

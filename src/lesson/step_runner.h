@@ -23,7 +23,8 @@ class MethodUnavailable : public InputError {
 
 struct RunOptions {
   // Small parameters for quick renders (the documentation test): subdivision <= 3, hemicube resolution <= 32,
-  // samples <= 8, sweep values <= 64, refinement kept small. Lists keep their entries, so placeholders still resolve.
+  // samples <= 8, sweep values <= 64, refinement kept small. Lists keep their entries, so placeholders still
+  // resolve.
   bool quick = false;
   std::string outputDir;  // where a matrix step writes its export (empty: the export is skipped)
 };

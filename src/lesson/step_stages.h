@@ -27,7 +27,8 @@ struct StageContext {
   SourceLocation at(const std::string& key) const;
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
   // A method name the registry rejected: MethodUnavailable for known names, a plain InputError otherwise.
-  [[noreturn]] void failUnavailable(const std::string& key, const std::string& name, const std::string& what) const;
+  [[noreturn]] void failUnavailable(const std::string& key, const std::string& name,
+                                    const std::string& what) const;
   // The form-factor method: `method` when written, otherwise the stage's own (hemicube, nusselt, raycast).
   std::string method() const;
   // F for a mesh with a method (cached), errors reported at the `method`/`methods` line.

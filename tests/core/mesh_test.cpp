@@ -58,7 +58,8 @@ TEST(Mesh, MaxEdgeBoundsEveryEdge) {
   o.mode = MeshOptions::Mode::MaxEdge;
   o.maxEdge = 0.3;
   const Mesh m = buildMesh(unitSquareScene(), o);
-  for (std::size_t e = 0; e < m.size(); ++e) EXPECT_LE(maxEdgeLength(m.polygon(static_cast<int>(e))), 0.3 + 1e-12);
+  for (std::size_t e = 0; e < m.size(); ++e)
+    EXPECT_LE(maxEdgeLength(m.polygon(static_cast<int>(e))), 0.3 + 1e-12);
 }
 
 TEST(Mesh, GeometryHashIgnoresMaterials) {

@@ -1,4 +1,5 @@
-// Where tests find their inputs: the repository (scenes, lessons, baselines), ../shared (reference data), the build.
+// Where tests find their inputs: the repository (scenes, lessons, baselines), ../shared (reference data), the
+// build.
 #pragma once
 
 #include <string>
@@ -9,7 +10,7 @@ std::string sourcePath(const std::string& relative);  // <repo>/relative
 std::string sharedPath(const std::string& relative);  // <repo>/../shared/relative
 std::string binaryPath(const std::string& relative);  // <build>/relative
 std::string cliPath();                                // the radiosity executable
-bool sharedAvailable();                               // false when ../shared is absent (tests then GTEST_SKIP)
+bool sharedAvailable();  // false when ../shared is absent (tests then GTEST_SKIP)
 // A fresh empty folder under the build tree for one test's outputs (build/<preset>/test-output/<name>-<pid>).
 std::string scratchDir(const std::string& name);
 // Runs a command through the shell; returns its exit code and captures stdout+stderr.

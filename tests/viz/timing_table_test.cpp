@@ -51,7 +51,8 @@ TEST(TimingTable, ErrorsNameTheFileAndLine) {
     EXPECT_EQ(e.where().line, 2);
     EXPECT_NE(e.message().find("fast"), std::string::npos);
   }
-  EXPECT_THROW(readTimingTable(writeTable("short.csv", "method,seconds,rms_error\nhemicube,0.1\n")), InputError);
+  EXPECT_THROW(readTimingTable(writeTable("short.csv", "method,seconds,rms_error\nhemicube,0.1\n")),
+               InputError);
   EXPECT_THROW(readTimingTable(writeTable("noerror.csv", "method,seconds\nhemicube,0.1\n")), InputError);
   EXPECT_THROW(readTimingTable(writeTable("empty.csv", "")), InputError);
   EXPECT_THROW(readTimingTable("/nonexistent/table.csv"), InputError);

@@ -1,6 +1,6 @@
-// Writing matrices and vectors for homework and other tools: CSV (17 significant digits, so values round-trip),
-// Matrix Market (coordinate real general; zeros omitted), NumPy .npy (little-endian float64, C order), LaTeX bmatrix
-// (small matrices only: a clear InputError otherwise).
+// Writing matrices and vectors for homework and other tools: CSV (17 significant digits, so values
+// round-trip), Matrix Market (coordinate real general; zeros omitted), NumPy .npy (little-endian float64, C
+// order), LaTeX bmatrix (small matrices only: a clear InputError otherwise).
 #pragma once
 
 #include <Eigen/Core>

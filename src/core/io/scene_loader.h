@@ -1,6 +1,7 @@
 // Loading scenes: the project's JSON format (docs/scene-format.md) and Wavefront OBJ/MTL (Kd = reflectance,
-// Ke = emission, one face = one patch). Every loader validates what it reads and throws InputError naming the file and
-// the line or JSON path; non-planar polygons are split into triangles with a warning in Scene::warnings.
+// Ke = emission, one face = one patch). Every loader validates what it reads and throws InputError naming the
+// file and the line or JSON path; non-planar polygons are split into triangles with a warning in
+// Scene::warnings.
 #pragma once
 
 #include <string>
@@ -9,7 +10,8 @@
 
 namespace rt {
 
-// Chooses the format by extension (.json, .obj). Throws InputError for unknown extensions and unreadable files.
+// Chooses the format by extension (.json, .obj). Throws InputError for unknown extensions and unreadable
+// files.
 Scene loadScene(const std::string& path);
 Scene loadSceneJson(const std::string& path);
 // From text (tests, lessons); `fileName` is only used in messages.
@@ -17,7 +19,8 @@ Scene parseSceneJson(const std::string& text, const std::string& fileName = "<js
 Scene loadSceneObj(const std::string& path);
 
 // Checks the invariants every loader guarantees (convex planar non-degenerate patches, finite coordinates,
-// reflectance in [0,1), emission >= 0 and finite, at least one emitter). Throws InputError naming the patch's origin.
+// reflectance in [0,1), emission >= 0 and finite, at least one emitter). Throws InputError naming the patch's
+// origin.
 void validateScene(const Scene& scene);
 
 }  // namespace rt
