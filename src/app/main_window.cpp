@@ -186,7 +186,7 @@ void MainWindow::buildUi() {
   compareSolver_->addItem(tr("(same solver)"));
   for (const auto& n : solverNames()) compareSolver_->addItem(QString::fromStdString(n));
   compareMethod_->addItem(tr("(same method)"));
-  for (const auto& n : formFactorMethodNames()) compareMethod_->addItem(QString::fromStdString(n));
+  addFormFactorMethodItems(compareMethod_);
   compareMesh_->addItem(tr("(same mesh)"));
   for (const auto& n : compareMeshChoices()) compareMesh_->addItem(QString::fromStdString(n));
   if (compareSolver_->findText("jacobi") >= 0) compareSolver_->setCurrentText("jacobi");

@@ -28,10 +28,23 @@ QStringList toQt(const std::vector<std::string>& names) {
 
 }  // namespace
 
+void addFormFactorMethodItems(QComboBox* box) {
+  // Each method says what it computes when the pointer rests on it.
+  for (const auto& name : formFactorMethodNames()) {
+    box->addItem(QString::fromStdString(name));
+    try {
+      box->setItemData(box->count() - 1, QString::fromStdString(makeFormFactorMethod(name)->description()),
+                       Qt::ToolTipRole);
+    } catch (const std::exception&) {
+      // A factory that fails is reported when the method is used, not here.
+    }
+  }
+}
+
 ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   auto* form = new QFormLayout(this);
   method_ = new QComboBox(this);
-  method_->addItems(toQt(formFactorMethodNames()));
+  addFormFactorMethodItems(method_);
   resolution_ = new QSpinBox(this);
   resolution_->setRange(4, 2048);
   samples_ = new QSpinBox(this);
@@ -60,6 +73,10 @@ ParameterPanel::ParameterPanel(QWidget* parent) : QWidget(parent) {
   light_->setSingleStep(0.25);
   light_->setDecimals(2);
   light_->setSuffix(QString::fromUtf8(" \u00d7"));
+  resolution_->setToolTip(tr("Hemicube: pixels along the edge of the top face"));
+  samples_->setToolTip(tr(
+      "Ray casting: sample pairs per element pair (1 to 1024). Monte Carlo: rays per element. Hybrid: rays "
+      "per 1 % of an occluded pair's form factor. Nusselt analog: segments per arc."));
   reset_ = new QPushButton(tr("Reset to the step's values"), this);
   hint_ = new QLabel(this);
   hint_->setWordWrap(true);

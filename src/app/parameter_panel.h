@@ -19,6 +19,9 @@ class QTimer;
 
 namespace rt::app {
 
+// Appends every registered form-factor method to `box`, each with its description as the item's tooltip.
+void addFormFactorMethodItems(QComboBox* box);
+
 class ParameterPanel : public QWidget {
   Q_OBJECT
  public:

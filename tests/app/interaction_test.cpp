@@ -6,8 +6,10 @@
 #include <vtkCamera.h>
 #include <vtkRenderer.h>
 #include <QApplication>
+#include <QComboBox>
 #include <QMenuBar>
 #include <QSettings>
+#include <QSpinBox>
 #include <QTest>
 #include <QTextBrowser>
 
@@ -223,4 +225,22 @@ TEST(Interaction, ARowOfFormFactorsComesWithItsColourBar) {
   EXPECT_TRUE(window->primaryView()->showsColourBar());  // values of F are read off the bar
   ASSERT_TRUE(window->openLesson("cornell-box", 3)) << window->lastError().toStdString();
   EXPECT_FALSE(window->primaryView()->showsColourBar());  // radiosity is the colour itself
+}
+
+// Every form-factor method in the parameter panel (and compare mode's list) says what it computes as its
+// tooltip; the samples box says what a sample is for each method.
+TEST(Interaction, FormFactorMethodsExplainThemselves) {
+  auto panel = std::make_unique<ParameterPanel>();
+  QComboBox* methods = nullptr;
+  for (QComboBox* box : panel->findChildren<QComboBox*>())
+    if (box->findText("hybrid") >= 0) methods = box;
+  ASSERT_NE(methods, nullptr);
+  for (int k = 0; k < methods->count(); ++k)
+    EXPECT_FALSE(methods->itemData(k, Qt::ToolTipRole).toString().isEmpty())
+        << methods->itemText(k).toStdString();
+  EXPECT_TRUE(methods->itemData(methods->findText("hybrid"), Qt::ToolTipRole).toString().contains("rays"));
+  bool samplesExplained = false;
+  for (QSpinBox* box : panel->findChildren<QSpinBox*>())
+    samplesExplained |= box->toolTip().contains("per 1 % of");
+  EXPECT_TRUE(samplesExplained);
 }
