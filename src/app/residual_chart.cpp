@@ -97,6 +97,9 @@ void ResidualChart::setRuns(const std::vector<QString>& names,
   xAxis_->setTickInterval(std::max(1, (longest + 7) / 8));
   yAxis_->setRange(std::pow(10, std::floor(std::log10(floor))), std::pow(10, std::ceil(std::log10(highest))));
   c->legend()->setVisible(residuals_.size() > 1);
+  // Empty axes alone would look like a solver that failed to start.
+  c->setTitle(residuals_.empty() ? tr("No iterations to show: this step solves directly or not at all")
+                                 : QString());
   setCurrent(longest - 1);
 }
 

@@ -66,6 +66,8 @@ void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera
   if (!mesh_) {
     actor_->VisibilityOff();
     highlightActor_->VisibilityOff();
+    if (emitterOutline_) renderer()->RemoveActor(emitterOutline_);
+    emitterOutline_ = nullptr;
     requestRender();
     return;
   }
@@ -152,6 +154,12 @@ void SceneView::repaint3d() {
     paint = viz::ScenePaint{};  // data that does not fit: plain grey
   }
   polyData_ = viz::makeElementPolyData(*mesh_, paint);
+  if (emitterOutline_) renderer()->RemoveActor(emitterOutline_);
+  emitterOutline_ = nullptr;
+  if (options_.colouring == viz::SceneColouring::Reflectance) {
+    emitterOutline_ = viz::makeEmitterOutlineActor(*mesh_, 2.5 * devicePixelRatioF());
+    if (emitterOutline_) renderer()->AddActor(emitterOutline_);
+  }
   if (colourBar_) renderer()->RemoveViewProp(colourBar_);
   colourBar_ = nullptr;
   if (paint.colourBar) {

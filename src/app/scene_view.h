@@ -79,6 +79,7 @@ class SceneView : public VtkWidget {
   vtkSmartPointer<vtkActor> highlightActor_;
   vtkSmartPointer<vtkTextActor> caption_;
   bool materialView_ = false;
+  vtkSmartPointer<vtkActor> emitterOutline_;      // material view: where the lights are
   vtkSmartPointer<vtkScalarBarActor> colourBar_;  // scalar colourings (a row of F, errors): values readable
   std::vector<int> highlighted_;
   bool showEdges_ = false;

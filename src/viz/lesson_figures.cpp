@@ -78,7 +78,8 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
           o.caption = r.runs.empty() ? "Radiosity" : "Radiosity (" + r.runs.back().label + ")";
       } else {
         o.colouring = SceneColouring::Reflectance;
-        o.caption = "Reflectance of the surfaces";
+        o.caption = r.mesh.emission.maxCoeff() > 0 ? "Reflectance of the surfaces (the light outlined)"
+                                                   : "Reflectance of the surfaces";
       }
       writeSceneFigure(r.mesh, r.camera, data, o, path);
       return o.caption;

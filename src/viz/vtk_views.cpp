@@ -17,6 +17,8 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
+#include <map>
+#include <utility>
 
 #include "viz/vtk_render.h"
 
@@ -25,6 +27,8 @@ namespace {
 
 // Okabe-Ito vermillion: the marker colour of a highlighted element (not in viridis or cividis).
 constexpr double kHighlight[3] = {0.835, 0.369, 0.0};
+// Okabe-Ito yellow: the outline of a light in material views.
+constexpr double kEmitterOutline[3] = {0.941, 0.894, 0.259};
 
 vtkSmartPointer<vtkActor> makeHighlightActor(const Mesh& mesh, int element, double lineWidth) {
   ScenePaint single;
@@ -48,6 +52,47 @@ vtkSmartPointer<vtkActor> makeHighlightActor(const Mesh& mesh, int element, doub
 }
 
 }  // namespace
+
+vtkSmartPointer<vtkActor> makeEmitterOutlineActor(const Mesh& mesh, double lineWidth) {
+  // Edges keyed by their two vertex indices: an edge two emitting elements share is inside the light.
+  std::map<std::pair<int, int>, std::pair<int, int>> edges;  // key -> (count, element)
+  for (std::size_t e = 0; e < mesh.size(); ++e) {
+    if (mesh.emission.row(static_cast<Eigen::Index>(e)).maxCoeff() <= 0) continue;
+    const auto& vs = mesh.elements[e].vertices;
+    for (std::size_t k = 0; k < vs.size(); ++k) {
+      const int a = vs[k], b = vs[(k + 1) % vs.size()];
+      auto& entry = edges[{std::min(a, b), std::max(a, b)}];
+      ++entry.first;
+      entry.second = static_cast<int>(e);
+    }
+  }
+  if (edges.empty()) return nullptr;
+  Vec3 lo = mesh.vertices.front(), hi = lo;
+  for (const Vec3& v : mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  const double lift = 1e-3 * (hi - lo).norm();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  for (const auto& [key, entry] : edges) {
+    if (entry.first != 1) continue;
+    const Vec3 offset = lift * mesh.elements[static_cast<std::size_t>(entry.second)].normal;
+    const Vec3 a = mesh.vertices[static_cast<std::size_t>(key.first)] + offset;
+    const Vec3 b = mesh.vertices[static_cast<std::size_t>(key.second)] + offset;
+    const vtkIdType ids[2] = {points->InsertNextPoint(a.x(), a.y(), a.z()),
+                              points->InsertNextPoint(b.x(), b.y(), b.z())};
+    lines->InsertNextCell(2, ids);
+  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  data->SetLines(lines);
+  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  mapper->SetInputData(data);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(kEmitterOutline[0], kEmitterOutline[1], kEmitterOutline[2]);
+  actor->GetProperty()->LightingOff();
+  actor->GetProperty()->SetLineWidth(static_cast<float>(lineWidth));
+  return actor;
+}
 
 vtkSmartPointer<vtkPolyData> makeElementPolyData(const Mesh& mesh, const ScenePaint& paint) {
   auto points = vtkSmartPointer<vtkPoints>::New();
@@ -113,6 +158,8 @@ vtkSmartPointer<vtkRenderer> makeSceneRenderer(const Mesh& mesh, const Camera& c
     actor->GetProperty()->SetLineWidth(static_cast<float>(std::max(1.0, 1.0 * scale)));
   }
   renderer->AddActor(actor);
+  if (options.colouring == SceneColouring::Reflectance)
+    if (auto outline = makeEmitterOutlineActor(mesh, std::max(2.0, 2.5 * scale))) renderer->AddActor(outline);
   if (paint.highlightElement >= 0 && static_cast<std::size_t>(paint.highlightElement) < mesh.size())
     renderer->AddActor(makeHighlightActor(mesh, paint.highlightElement, std::max(2.0, 3.0 * scale)));
 

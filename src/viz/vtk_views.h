@@ -8,6 +8,7 @@
 #include "viz/drawing.h"
 #include "viz/scene_view.h"
 
+class vtkActor;
 class vtkPolyData;
 class vtkRenderer;
 class vtkRenderWindow;
@@ -23,6 +24,11 @@ vtkSmartPointer<vtkPolyData> makeElementPolyData(const Mesh& mesh, const ScenePa
 vtkSmartPointer<vtkRenderer> makeSceneRenderer(const Mesh& mesh, const Camera& camera,
                                                const ScenePaint& paint, const SceneViewOptions& options,
                                                int windowHeight, const double viewport[4]);
+
+// The outline of the emitting elements (the edges no two of them share), lifted a hair off the surface, for
+// material views: a light reflects about as much as the ceiling around it and would not show otherwise. Null
+// when nothing emits.
+vtkSmartPointer<vtkActor> makeEmitterOutlineActor(const Mesh& mesh, double lineWidth);
 
 // Adds the full scene view (scene renderer, and a colour-bar renderer on the right for scalar views) to a
 // window.

@@ -7,6 +7,7 @@
 #include <QLabel>
 
 #include "app/figures_pane.h"
+#include "app/residual_chart.h"
 #include "app/scene_view.h"
 #include "app/screenshot.h"
 #include "app_test_support.h"
@@ -77,6 +78,8 @@ TEST(Screenshot, AStepWithoutASolutionShowsTheShadedMaterials) {
   ASSERT_FALSE(figures.empty());
   for (const QLabel* figure : figures)
     EXPECT_LE(figure->pixmap().width(), window->figuresPane()->viewport()->width());
+  // No solver ran: the convergence chart says so instead of showing empty axes.
+  EXPECT_FALSE(window->residualChart()->chart()->title().isEmpty());
   ASSERT_TRUE(window->openLesson("cornell-box", 3)) << window->lastError().toStdString();
   EXPECT_FALSE(window->primaryView()->materialView());
   EXPECT_EQ(window->primaryView()->viewOptions().colouring, rt::viz::SceneColouring::Radiosity);
