@@ -95,6 +95,32 @@ TEST(Hemicube, BackFacesBlockAndReceiveNothing) {
   }
 }
 
+// An occluder modelled as two back-to-back polygons in one plane (occluded-plates.json): seen from either
+// side the face towards the eye wins the depth test, in whichever order the two are drawn.
+TEST(Hemicube, BackToBackPolygonsShowTheirFrontFace) {
+  for (const bool frontFirst : {true, false}) {
+    Scene s = test::emptyScene();
+    test::addQuad(s, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0});  // source, facing up
+    const Vec3 a(0.25, 0.25, 0.5), b(0.75, 0.25, 0.5), c(0.75, 0.75, 0.5), d(0.25, 0.75, 0.5);
+    if (frontFirst) test::addQuad(s, a, d, c, b);  // facing down, to the source
+    test::addQuad(s, a, b, c, d);                  // facing up, away from the source
+    if (!frontFirst) test::addQuad(s, a, d, c, b);
+    const Mesh mesh = test::meshOf(s, 1);
+    const int front = frontFirst ? 1 : 2, back = frontFirst ? 2 : 1;
+    for (int resolution : {16, 64, 128}) {
+      const HemicubeFaces h = renderHemicube(mesh, 0, resolution);
+      for (const HemicubeFaceBuffer& face : h.faces)
+        for (int id : face.element) EXPECT_NE(id, kHemicubeSeesBackFace) << resolution;
+      std::vector<double> row(mesh.size(), 0.0);
+      accumulateHemicubeRow(h, row.data());
+      EXPECT_EQ(row[static_cast<std::size_t>(back)], 0.0);
+      EXPECT_NEAR(row[static_cast<std::size_t>(front)],
+                  pointToPolygonFormFactor({0.5, 0.5, 0}, {0, 0, 1}, mesh.polygon(front)), 2e-2)
+          << resolution;
+    }
+  }
+}
+
 TEST(Nusselt, OutlineAreaConvergesToLambertQuadratically) {
   const Polygon square = {{-0.3, -0.2, 1}, {-0.3, 0.6, 1.4}, {0.7, 0.6, 1.4}, {0.7, -0.2, 1}};
   const Vec3 point = Vec3::Zero(), normal(0, 0, 1);

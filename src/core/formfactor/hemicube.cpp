@@ -240,8 +240,12 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
       // X = x / sx - 1, Y = y / sy + upMin.
       const Vec3 mf(m.dot(face.across), m.dot(face.up), m.dot(face.forward));
       if (c == 0) continue;
-      const double kx = mf.x() / (c * sx), ky = mf.y() / (c * sy);
-      const double k0 = (mf.z() - mf.x() + mf.y() * face.upMin) / c;
+      // A back face is pushed a hair farther (1e-7 of its depth): where it coincides with a front face, as
+      // in an occluder modelled as two back-to-back polygons, the front face must win the depth test instead
+      // of the two taking pixels at random by rounding.
+      const double push = id == kHemicubeSeesBackFace ? 1 - 1e-7 : 1.0;
+      const double kx = push * mf.x() / (c * sx), ky = push * mf.y() / (c * sy);
+      const double k0 = push * (mf.z() - mf.x() + mf.y() * face.upMin) / c;
       // Orientation of the projected polygon, so that inside means all edge functions >= 0.
       double area2 = 0;
       for (int k = 0; k < n; ++k) {
