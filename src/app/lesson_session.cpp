@@ -94,8 +94,12 @@ PipelineResult LessonLibrary::runOne(const lesson::Lesson& lesson, const lesson:
   out.camera = stepResult->camera;
   out.F = stepResult->F;
   out.formFactorStats = stepResult->formFactorStats;
-  if (out.F) out.formFactorMethod = step.parameters.method;
+  if (out.F) out.formFactorMethod = stepResult->method.empty() ? step.parameters.method : stepResult->method;
   out.title = step.title;
+  // An exact step solves the room with its first approximate method's F (its error map is among the step's
+  // figures): the view says whose radiosity it shows, not the step's title over it.
+  if (step.stage == lesson::Stage::Exact && !stepResult->method.empty() && out.F)
+    out.title = "Radiosity with " + stepResult->method + " form factors";
   // What the 3D view shows: the solution, else the local-illumination estimate, else the materials (B then
   // holds the ambient estimate, for exports that need a radiosity).
   if (stepResult->B.rows() == static_cast<Eigen::Index>(stepResult->mesh.size())) {

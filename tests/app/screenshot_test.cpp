@@ -85,6 +85,17 @@ TEST(Screenshot, AStepWithoutASolutionShowsTheShadedMaterials) {
   EXPECT_EQ(window->primaryView()->viewOptions().colouring, rt::viz::SceneColouring::Radiosity);
 }
 
+// An exact step's view shows the radiosity solved with its first approximate method's form factors (the
+// hemicube's, whose eye point on the receiver sees only the occluder: a black receiver); the caption says so.
+TEST(Screenshot, AnExactStepSaysWhoseRadiosityItShows) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  if (!window->openLesson("exact-reference", 1)) GTEST_SKIP() << window->lastError().toStdString();
+  EXPECT_EQ(window->primaryView()->caption().toStdString(), "Radiosity with hemicube form factors");
+  ASSERT_NE(window->result(), nullptr);
+  EXPECT_EQ(window->result()->formFactorMethod, "hemicube");
+}
+
 // The 3D view of key steps against baselines (Mesa's software renderer draws the same pixels run after run;
 // the threshold absorbs small changes of shading).
 TEST(Screenshot, KeyLessonStepsMatchTheirBaselines) {
