@@ -39,7 +39,8 @@ void formFactorRow(const lesson::Step& step, const StepResult& r, const StepFigu
   SceneViewOptions o = sceneOptions(step, r, s);
   o.colouring = SceneColouring::Scalar;
   o.highlightElement = r.sourceElement;
-  o.legend.title = title;
+  // The bar's title is short (the strip beside the bar is narrow); the caption names the method.
+  o.legend.title = "F[" + std::to_string(r.sourceElement) + ", j]";
   o.caption = title;
   SceneViewData data;
   data.scalar = r.F->row(r.sourceElement).transpose();
