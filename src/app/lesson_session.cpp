@@ -132,7 +132,12 @@ PipelineResult LessonLibrary::runOne(const lesson::Lesson& lesson, const lesson:
     out.residual = out.history.back().residual;
     out.status = SolverStatus::Success;
   } else if (out.F && solves && stepResult->B.rows() > 0) {
-    solveWithHistory(out, step.parameters.solver, solverOptionsFromParameters(step.parameters), progress);
+    // A step that compares solvers replays the one it measures against its reference (the last listed), not
+    // the default solver the step never names.
+    std::string replay = step.parameters.solver;
+    if (!step.parameters.solvers.empty() && !step.fields.count("solver"))
+      replay = step.parameters.solvers.back();
+    solveWithHistory(out, replay, solverOptionsFromParameters(step.parameters), progress);
   }
   try {
     std::string text = "## " + step.title + "\n\n" + lesson::resolvedText(lesson, step, *stepResult);
@@ -162,7 +167,10 @@ PipelineResult LessonLibrary::runStep(int lessonIndex, int stepIndex,
         runRefinedPipeline(result.scene, compare.mesh, runner_->options().quick, progress));
     return result;
   }
-  if (!compare.solver.empty()) step.parameters.solver = compare.solver;
+  if (!compare.solver.empty()) {
+    step.parameters.solver = compare.solver;
+    step.fields["solver"] = lesson::Field{compare.solver, 0};  // the chosen solver, not the step's list
+  }
   if (!compare.method.empty()) step.parameters.method = compare.method;
   scaleStepMesh(step.parameters, compare.mesh);
   result.compared = std::make_shared<PipelineResult>(runOne(lesson, step, progress));

@@ -98,8 +98,7 @@ void ResidualChart::setRuns(const std::vector<QString>& names,
   yAxis_->setRange(std::pow(10, std::floor(std::log10(floor))), std::pow(10, std::ceil(std::log10(highest))));
   c->legend()->setVisible(residuals_.size() > 1);
   // Empty axes alone would look like a solver that failed to start.
-  c->setTitle(residuals_.empty() ? tr("No iterations to show: this step solves directly or not at all")
-                                 : QString());
+  c->setTitle(residuals_.empty() ? tr("No iteration history in this step") : QString());
   setCurrent(longest - 1);
 }
 

@@ -179,7 +179,9 @@ void sceneFigure(const Computed& c, const FigureArguments& a, CLI::App& command)
       const FormFactorMatrix Fref = refName == a.formFactors ? F : formFactors(c.mesh, refName, a);
       const RadiositySystem refSystem = RadiositySystem::fromMesh(c.mesh, Fref);
       runSolver("direct", refSystem, 0, 1e-12, data.reference);
-      o.caption = std::string(o.errorMeasure == viz::ErrorMeasure::Relative ? "relative " : "") +
+      o.caption = std::string(o.errorMeasure == viz::ErrorMeasure::Relative      ? "relative "
+                              : o.errorMeasure == viz::ErrorMeasure::OfBrightest ? "brightest-relative "
+                                                                                 : "") +
                   "error: " + solver +
                   (iterations > 0 ? ", " + std::to_string(iterations) + " iterations" : "") +
                   (refName == a.formFactors ? "" : ", " + a.formFactors + " F") + " vs direct" +
@@ -533,9 +535,10 @@ void addFigureCommand(CLI::App& app) {
       ->capture_default_str();
   command
       ->add_option("--error", a->errorMeasure,
-                   "scene --colour error: relative (|B - B_ref| / B_ref) or absolute (W/m^2)")
+                   "scene --colour error: relative (|B - B_ref| / B_ref), absolute (W/m^2) or brightest "
+                   "(|B - B_ref| / the brightest reflecting B_ref)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"relative", "absolute"}));
+      ->check(CLI::IsMember({"relative", "absolute", "brightest"}));
   command->add_option("--tone-map", a->toneMap, "linear or reinhard")
       ->capture_default_str()
       ->check(CLI::IsMember({"linear", "reinhard"}));

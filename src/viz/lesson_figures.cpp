@@ -169,10 +169,13 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
       }
       if (data.reference.rows() != data.B.rows())
         throw std::runtime_error(path + ": no reference to compare with");
+      // Measured as the lessons' texts quote it: against the brightest reflecting element, so that one dim
+      // element's large ratio does not set the whole colour bar.
       o.colouring = SceneColouring::Error;
-      o.caption = "|B - B_reference| / B_reference";
+      o.errorMeasure = ErrorMeasure::OfBrightest;
+      o.caption = "|B - B_reference| / brightest B_reference";
       writeSceneFigure(r.mesh, r.camera, data, o, path);
-      return "Difference from the reference solution, relative to it";
+      return "Difference from the reference solution, relative to its brightest reflecting element";
     }
   }
   return "";

@@ -53,7 +53,9 @@ std::string defaultTitle(SceneColouring colouring, ErrorMeasure measure) {
     case SceneColouring::UnshotPower:
       return "unshot\npower (W)";
     case SceneColouring::Error:
-      return measure == ErrorMeasure::Relative ? "|B - B_ref|\n/ B_ref" : "|B - B_ref|\n(W/m^2)";
+      return measure == ErrorMeasure::Relative      ? "|B - B_ref|\n/ B_ref"
+             : measure == ErrorMeasure::OfBrightest ? "|B - B_ref| /\nbrightest B_ref"
+                                                    : "|B - B_ref|\n(W/m^2)";
     default:
       return "value";
   }
@@ -112,10 +114,20 @@ Eigen::VectorXd relativeError(const RgbField& B, const RgbField& reference) {
   return difference.array() / scale.array().max(floor);
 }
 
+Eigen::VectorXd errorOfBrightest(const Mesh& mesh, const RgbField& B, const RgbField& reference) {
+  const Eigen::VectorXd difference = absoluteError(B, reference);
+  double brightest = 0;
+  for (Eigen::Index i = 0; i < reference.rows(); ++i)
+    if (i >= mesh.emission.rows() || mesh.emission.row(i).maxCoeff() <= 0)
+      brightest = std::max(brightest, reference.row(i).cwiseAbs().mean());
+  return brightest > 0 ? Eigen::VectorXd(difference / brightest) : difference;
+}
+
 ErrorMeasure errorMeasureFromName(const std::string& name) {
   if (name == "relative") return ErrorMeasure::Relative;
   if (name == "absolute") return ErrorMeasure::Absolute;
-  throw std::invalid_argument("unknown error measure '" + name + "' (relative, absolute)");
+  if (name == "brightest") return ErrorMeasure::OfBrightest;
+  throw std::invalid_argument("unknown error measure '" + name + "' (relative, absolute, brightest)");
 }
 
 ScenePaint paintScene(const Mesh& mesh, const SceneViewData& data, const SceneViewOptions& options) {
@@ -161,7 +173,9 @@ ScenePaint paintScene(const Mesh& mesh, const SceneViewData& data, const SceneVi
       requireRows(data.B, mesh, "the radiosity");
       requireRows(data.reference, mesh, "the reference radiosity");
       scalar = options.errorMeasure == ErrorMeasure::Relative ? relativeError(data.B, data.reference)
-                                                              : absoluteError(data.B, data.reference);
+               : options.errorMeasure == ErrorMeasure::OfBrightest
+                   ? errorOfBrightest(mesh, data.B, data.reference)
+                   : absoluteError(data.B, data.reference);
       break;
     case SceneColouring::Scalar:
       if (static_cast<std::size_t>(data.scalar.size()) != mesh.size())

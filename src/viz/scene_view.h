@@ -23,9 +23,12 @@ SceneColouring sceneColouringFromName(const std::string& name);
 std::string toString(SceneColouring colouring);
 
 // How the Error colouring measures the difference to the reference. Relative is the default: an absolute
-// error of 1 W/m^2 is large in a shadow and invisible next to the light, and the eye judges ratios.
-enum class ErrorMeasure { Relative, Absolute };
-// "relative", "absolute"; throws std::invalid_argument.
+// error of 1 W/m^2 is large in a shadow and invisible next to the light, and the eye judges ratios. But a
+// nearly unlit element's ratio can be 25 with a difference nobody sees, and then it alone sets the colour
+// bar: OfBrightest divides by the brightest reflecting element of the reference instead, the measure the
+// lessons quote ("19.6 % of the brightest reflecting element").
+enum class ErrorMeasure { Relative, Absolute, OfBrightest };
+// "relative", "absolute", "brightest"; throws std::invalid_argument.
 ErrorMeasure errorMeasureFromName(const std::string& name);
 
 // How a scalar field is mapped to colour and labelled on its colour bar. Non-finite limits: from the data.
@@ -77,6 +80,9 @@ Eigen::VectorXd absoluteError(const RgbField& B,
 // (an unlit element) would divide by zero: the denominator is at least 1e-3 x the area-free mean of the
 // reference over all elements, so such elements show a large but finite error.
 Eigen::VectorXd relativeError(const RgbField& B, const RgbField& reference);
+// Mean over channels of |B - B_ref| divided by the largest mean over channels of B_ref among the elements
+// that emit nothing (the light would set the scale otherwise).
+Eigen::VectorXd errorOfBrightest(const Mesh& mesh, const RgbField& B, const RgbField& reference);
 
 // Renders the view and writes PNG, or PDF/SVG embedding the rendered image. Throws std::runtime_error on
 // failure and std::invalid_argument when the data does not fit the mesh.
