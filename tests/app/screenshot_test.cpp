@@ -96,6 +96,17 @@ TEST(Screenshot, AnExactStepSaysWhoseRadiosityItShows) {
   EXPECT_EQ(window->result()->formFactorMethod, "hemicube");
 }
 
+// A step that compares solvers (direct against stochastic Jacobi) replays the one it compares, which its text
+// describes, not the default solver it never names.
+TEST(Screenshot, ACompareStepReplaysTheSolverItCompares) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  ASSERT_TRUE(window->openLesson("stochastic", 1)) << window->lastError().toStdString();
+  ASSERT_NE(window->result(), nullptr);
+  EXPECT_EQ(window->result()->solverName, "stochastic-jacobi");
+  EXPECT_NE(window->primaryView()->caption().toStdString().find("stochastic-jacobi"), std::string::npos);
+}
+
 // The 3D view of key steps against baselines (Mesa's software renderer draws the same pixels run after run;
 // the threshold absorbs small changes of shading).
 TEST(Screenshot, KeyLessonStepsMatchTheirBaselines) {

@@ -29,9 +29,26 @@ TEST(SceneError, AZeroReferenceGivesALargeFiniteError) {
   EXPECT_TRUE(std::isfinite(relative[0]));
 }
 
+// Against the brightest reflecting element: the light (element 0, the brightest of all) does not set the
+// scale, and a dim element's large ratio stays a small fraction.
+TEST(SceneError, ErrorOfBrightestDividesByTheBrightestReflector) {
+  Mesh mesh;
+  mesh.emission = RgbField::Zero(3, 3);
+  mesh.emission.row(0).setConstant(50);
+  RgbField reference(3, 3), B(3, 3);
+  reference << 1000, 1000, 1000, 20, 20, 20, 0.1, 0.1, 0.1;
+  B << 1000, 1000, 1000, 22, 20, 18, 2.1, 2.1, 2.1;
+  const Eigen::VectorXd brightest = errorOfBrightest(mesh, B, reference);
+  EXPECT_EQ(brightest[0], 0.0);
+  EXPECT_NEAR(brightest[1], (4.0 / 3) / 20, 1e-14);
+  EXPECT_NEAR(brightest[2], 2.0 / 20, 1e-14);      // 10 %, where the per-element ratio is 20
+  EXPECT_GT(relativeError(B, reference)[2], 5.0);  // the per-element ratio (floored at 1e-3 of the mean)
+}
+
 TEST(SceneError, MeasureNamesAndLegendTitles) {
   EXPECT_EQ(errorMeasureFromName("relative"), ErrorMeasure::Relative);
   EXPECT_EQ(errorMeasureFromName("absolute"), ErrorMeasure::Absolute);
+  EXPECT_EQ(errorMeasureFromName("brightest"), ErrorMeasure::OfBrightest);
   EXPECT_THROW(errorMeasureFromName("percent"), std::invalid_argument);
 
   Mesh mesh;
