@@ -9,6 +9,7 @@
 #include <QTabWidget>
 #include <QTextBrowser>
 #include <QThread>
+#include <algorithm>
 
 #include "app/builtin_scene.h"
 #include "app/contents_tree.h"
@@ -351,10 +352,21 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
     std::vector<std::pair<QString, Rgb>> surfaces;
     for (const Surface& s : r.scene->surfaces)
       surfaces.emplace_back(QString::fromStdString(s.name), r.scene->materials[s.material].reflectance);
-    if (step)
-      panel_->setStep(parameters_, step->controls, false, surfaces);
-    else
+    if (step) {
+      // A value the step does not let the reader change shows what the step used: a hemicube or exact step
+      // computes with its own form-factor method, a step comparing solvers replays one of them, whatever the
+      // defaults say.
+      lesson::StepParameters shown = parameters_;
+      const auto offered = [&](const char* key) {
+        return std::find(step->controls.begin(), step->controls.end(), key) != step->controls.end();
+      };
+      if (!offered("method") && !r.formFactorMethod.empty()) shown.method = r.formFactorMethod;
+      if (!offered("solver") && !r.solverName.empty() && r.solverName != "bounces")
+        shown.solver = r.solverName;
+      panel_->setStep(shown, step->controls, false, surfaces);
+    } else {
       panel_->setStep(parameters_, {}, true, surfaces);
+    }
   }
 
   if (!r.mesh || r.mesh->size() == 0) {

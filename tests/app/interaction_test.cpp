@@ -244,3 +244,17 @@ TEST(Interaction, FormFactorMethodsExplainThemselves) {
     samplesExplained |= box->toolTip().contains("per 1 % of");
   EXPECT_TRUE(samplesExplained);
 }
+
+// A form-factor method the step does not let the reader change is shown as the one the step used: the
+// hemicube lesson's occlusion step computes with the hemicube, not with the default the step never names.
+TEST(Interaction, TheParameterPanelShowsTheMethodTheStepUsed) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  ASSERT_TRUE(window->openStep(lessonIndex(*window, "hemicube"), 4)) << window->lastError().toStdString();
+  QComboBox* methods = nullptr;
+  for (QComboBox* box : window->parameterPanel()->findChildren<QComboBox*>())
+    if (box->findText("hybrid") >= 0) methods = box;
+  ASSERT_NE(methods, nullptr);
+  EXPECT_EQ(methods->currentText().toStdString(), "hemicube");
+  EXPECT_FALSE(methods->isEnabled());
+}
