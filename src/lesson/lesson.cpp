@@ -23,7 +23,7 @@ constexpr std::array<std::pair<Stage, const char*>, 14> kStages{{
     {Stage::Refine, "refine"},
 }};
 
-constexpr std::array<std::pair<View, const char*>, 11> kViews{{
+constexpr std::array<std::pair<View, const char*>, 12> kViews{{
     {View::Scene, "scene"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
@@ -32,6 +32,7 @@ constexpr std::array<std::pair<View, const char*>, 11> kViews{{
     {View::Matrix, "matrix"},
     {View::Convergence, "convergence"},
     {View::RuntimeError, "runtime-error"},
+    {View::SweepError, "sweep-error"},
     {View::Visibility, "visibility"},
     {View::Error, "error"},
     {View::Local, "local"},

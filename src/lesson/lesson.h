@@ -41,6 +41,7 @@ enum class View {
   Matrix,
   Convergence,
   RuntimeError,
+  SweepError,  // error against the sweep's knob (samples, resolution), log-log
   Visibility,
   Error,
   Local

@@ -375,6 +375,7 @@ class Parser {
       case View::Convergence:
         return s == Stage::Solve || s == Stage::Compare || s == Stage::Bounces;
       case View::RuntimeError:
+      case View::SweepError:
         return s == Stage::Benchmark;
       case View::Error:
         return s == Stage::Exact || s == Stage::Compare;

@@ -157,6 +157,24 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
       writeLineChart(series, o, path);
       return "Relative error of F against run time, reference: " + r.method;
     }
+    case View::SweepError: {
+      // Error against the knob itself: with a tiny scene the run times are microseconds of noise, while the
+      // error against the number of samples shows each method's rate (Monte Carlo's slope of one half).
+      std::vector<Series> series;
+      bool resolutions = false, samples = false;
+      for (const auto& point : r.benchmark) {
+        if (series.empty() || series.back().name != point.method) series.push_back({point.method, {}, {}});
+        series.back().x.push_back(std::max<double>(point.parameter, 1));
+        series.back().y.push_back(std::max(point.error, 1e-16));
+        (point.method == "hemicube" || point.method == "nusselt" ? resolutions : samples) = true;
+      }
+      const std::string knob = resolutions && samples ? "resolution or samples"
+                               : resolutions          ? "resolution"
+                                                      : "samples";
+      ChartOptions o{"Error against " + knob, knob, "relative error of F", true, true, s.width, s.height};
+      writeLineChart(series, o, path);
+      return "Relative error of F against the " + knob + ", reference: " + r.method;
+    }
     case View::Error: {
       SceneViewOptions o = sceneOptions(step, r, s);
       SceneViewData data;
