@@ -22,10 +22,12 @@ case "$what" in
       --max-edge 25 --smooth --image out/cornell-box.png --output out/cornell-box-B.csv
     xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/release/bin/radiosity lesson render cornell-box \
       --output out/lesson
+    # The lesson's last step, where the light has bounced to convergence (its first step is, by design, a black
+    # room around the light).
     xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/release/bin/radiosity-textbook --lesson cornell-box \
-      --step 1 --screenshot out/app-cornell-box.png
+      --step 4 --screenshot out/app-cornell-box.png
     echo "No display: the solved Cornell box is out/cornell-box.png, the lesson's figures and page are in out/lesson/,"
-    echo "and the app's window on the lesson is out/app-cornell-box.png"
+    echo "and the app's window on the lesson's last step is out/app-cornell-box.png"
     ;;
   test)
     cmake --preset dev >/dev/null
