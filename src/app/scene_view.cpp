@@ -116,9 +116,7 @@ void SceneView::setMaterialView(bool materials) {
   if (options_.colouring == viz::SceneColouring::Radiosity ||
       options_.colouring == viz::SceneColouring::Reflectance)
     options_.colouring = materials ? viz::SceneColouring::Reflectance : viz::SceneColouring::Radiosity;
-  applyLighting();
-  if (mesh_) repaint3d();
-  requestRender();
+  applyLighting();  // the colours follow with the next setScene or setMesh
 }
 
 void SceneView::applyLighting() {

@@ -35,7 +35,8 @@ class SceneView : public VtkWidget {
   // instead of by radiosity; an empty field returns to radiosity.
   void setScalarField(const Eigen::VectorXd& values, const std::string& title);
   // Steps without a solution show the materials instead, lit by a headlight so that the shapes read (a white
-  // block in front of a white wall would otherwise vanish), as the exported material figures do.
+  // block in front of a white wall would otherwise vanish), as the exported material figures do. Takes effect
+  // with the next setScene or setMesh (the caller always gives the step's mesh next: no repaint twice).
   void setMaterialView(bool materials);
   bool materialView() const { return materialView_; }
   const viz::SceneViewOptions& viewOptions() const { return options_; }

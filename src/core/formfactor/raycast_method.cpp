@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <memory>
 
-#include "core/formfactor/analytic.h"
 #include "core/formfactor/analytic_method.h"
 #include "core/formfactor/pair_matrix.h"
 #include "core/formfactor/raycast_pair.h"
@@ -27,12 +26,7 @@ class RaycastMethod : public FormFactorMethod {
     const PairVisibility visibility(mesh);
     const int samples = std::clamp(options.samples, 1, 1024);
     auto integrate = [&](int i, int j) {
-      const RaycastPairEstimate estimate = estimateRaycastPair(mesh, visibility, i, j, samples, options.seed);
-      PairResult result;
-      result.value = estimate.value;
-      result.rays = estimate.rays;
-      result.needsVisibility = estimate.needsVisibility;
-      return result;
+      return estimateRaycastPair(mesh, visibility, i, j, samples, options.seed);
     };
     FormFactorMatrix F =
         computeReciprocalMatrix(mesh, options, progress, stats, "form factors (raycast)",

@@ -9,9 +9,9 @@
 
 namespace rt {
 
-RaycastPairEstimate estimateRaycastPair(const Mesh& mesh, const PairVisibility& visibility, int i, int j,
-                                        int samples, std::uint64_t seed) {
-  RaycastPairEstimate result;
+PairResult estimateRaycastPair(const Mesh& mesh, const PairVisibility& visibility, int i, int j, int samples,
+                               std::uint64_t seed) {
+  PairResult result;
   const ElementPolygon a(mesh, i), b(mesh, j);
   const Vec3& normalI = mesh.elements[i].normal;
   const Vec3& normalJ = mesh.elements[j].normal;

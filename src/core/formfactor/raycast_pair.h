@@ -13,23 +13,18 @@
 // it takes.
 #pragma once
 
-#include <cstddef>
 #include <cstdint>
 
+#include "core/formfactor/pair_matrix.h"
 #include "core/mesh.h"
 
 namespace rt {
 
 class PairVisibility;
 
-struct RaycastPairEstimate {
-  double value = 0;              // F_ij, clamped at 0 (hidden samples close together can overshoot)
-  std::size_t rays = 0;          // rays cast
-  bool needsVisibility = false;  // false: the shaft test proved the pair unoccluded, no ray was cast
-};
-
-// N = samples (1..1024) sample pairs on i and j; deterministic for (seed, i, j).
-RaycastPairEstimate estimateRaycastPair(const Mesh& mesh, const PairVisibility& visibility, int i, int j,
-                                        int samples, std::uint64_t seed);
+// N = samples (1..1024) sample pairs on i and j; deterministic for (seed, i, j). The value is clamped at 0
+// (hidden samples close together can overshoot); needsVisibility false means no ray was cast.
+PairResult estimateRaycastPair(const Mesh& mesh, const PairVisibility& visibility, int i, int j, int samples,
+                               std::uint64_t seed);
 
 }  // namespace rt

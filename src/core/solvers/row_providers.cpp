@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "core/formfactor/analytic.h"
 #include "core/formfactor/hemicube.h"
 #include "core/formfactor/pair_matrix.h"
 #include "core/formfactor/raycast_pair.h"
-#include "core/formfactor/sampling.h"
 #include "core/formfactor/visibility.h"
 
 namespace rt {
@@ -31,14 +29,13 @@ FormFactorRowProvider raycastRows(const Mesh& mesh, const FormFactorOptions& opt
   return [&mesh, visibility, samples, seed](int i, Eigen::VectorXd& row) {
     row.setZero(static_cast<Eigen::Index>(mesh.size()));
     const double ai = mesh.elements[i].area;
+    auto estimate = [&](int a, int b) { return estimateRaycastPair(mesh, *visibility, a, b, samples, seed); };
     for (int j = 0; j < static_cast<int>(mesh.size()); ++j) {
       if (j == i || !elementsFaceEachOther(mesh, i, j)) continue;
-      // As in the matrix method: sampled on the smaller element, the other direction by reciprocity (the
-      // sampling error is not multiplied by the ratio of the areas).
-      const double aj = mesh.elements[j].area;
-      const bool onI = i < j ? ai <= aj * (1 + 1e-9) : ai * (1 + 1e-9) < aj;  // the matrix method's choice
-      row(j) = onI ? estimateRaycastPair(mesh, *visibility, i, j, samples, seed).value
-                   : estimateRaycastPair(mesh, *visibility, j, i, samples, seed).value * aj / ai;
+      // As in the matrix method: the pair (min, max) from its smaller element, the other direction by
+      // reciprocity (the sampling error is not multiplied by the ratio of the areas).
+      row(j) = i < j ? fromSmallerElement(mesh, i, j, estimate).value
+                     : fromSmallerElement(mesh, j, i, estimate).value * mesh.elements[j].area / ai;
     }
   };
 }
