@@ -1,6 +1,7 @@
 #include "app/compare_choice.h"
 
 #include "core/refine/refine.h"
+#include "lesson/step_settings.h"
 
 namespace rt::app {
 
@@ -30,17 +31,7 @@ MeshOptions scaledMesh(MeshOptions options, const std::string& choice) {
 }
 
 void scaleStepMesh(lesson::StepParameters& p, const std::string& choice) {
-  MeshOptions options;
-  if (p.subdivide) {
-    options.mode = MeshOptions::Mode::Count;
-    options.count = *p.subdivide;
-  } else if (p.maxEdge) {
-    options.mode = MeshOptions::Mode::MaxEdge;
-    options.maxEdge = *p.maxEdge;
-  }
-  options = scaledMesh(options, choice);
-  if (options.mode == MeshOptions::Mode::Count) p.subdivide = options.count, p.maxEdge.reset();
-  if (options.mode == MeshOptions::Mode::MaxEdge) p.maxEdge = options.maxEdge;
+  lesson::setMeshOptions(p, scaledMesh(lesson::meshOptionsFor(p), choice));
 }
 
 PipelineResult runRefinedPipeline(const std::shared_ptr<const Scene>& scene, const std::string& choice,

@@ -11,6 +11,7 @@ namespace rt::app {
 
 LessonLibrary::LessonLibrary(lesson::LessonFolders folders, lesson::RunOptions runOptions)
     : folders_(std::move(folders)) {
+  runOptions.recordHistory = true;  // the window replays a step's solver iteration by iteration
   runner_ = std::make_unique<lesson::StepRunner>(folders_.scenes, std::move(runOptions));
   reload();
 }
@@ -55,36 +56,6 @@ int LessonLibrary::formFactorComputations() const {
   return runner_->formFactorComputations();
 }
 
-SolverOptions solverOptionsFromParameters(const lesson::StepParameters& p) {
-  SolverOptions options;
-  if (p.iterations) options.maxIterations = *p.iterations;
-  if (p.tolerance) options.tolerance = *p.tolerance;
-  if (p.relaxation) options.relaxation = *p.relaxation;
-  if (p.seed) options.seed = *p.seed;
-  options.ambient = p.ambient;
-  return options;
-}
-
-PipelineSettings settingsFromParameters(const lesson::StepParameters& p) {
-  PipelineSettings s;
-  if (p.subdivide) {
-    s.mesh.mode = MeshOptions::Mode::Count;
-    s.mesh.count = *p.subdivide;
-  } else if (p.maxEdge) {
-    s.mesh.mode = MeshOptions::Mode::MaxEdge;
-    s.mesh.maxEdge = *p.maxEdge;
-  }
-  s.method = p.method;
-  if (p.resolution) s.formFactors.hemicubeResolution = *p.resolution;
-  if (p.samples) s.formFactors.samples = *p.samples;
-  if (p.seed) s.formFactors.seed = *p.seed;
-  s.solver = p.solver;
-  s.solverOptions = solverOptionsFromParameters(p);
-  s.reflectance = p.reflectance;
-  s.lightScale = p.lightScale;
-  return s;
-}
-
 PipelineResult LessonLibrary::runOne(const lesson::Lesson& lesson, const lesson::Step& step,
                                      Progress& progress) {
   auto stepResult = std::make_shared<lesson::StepResult>(runner_->run(lesson, step, progress));
@@ -110,11 +81,8 @@ PipelineResult LessonLibrary::runOne(const lesson::Lesson& lesson, const lesson:
     out.B = ambientEstimate(stepResult->mesh);
     out.materials = true;
   }
-  // Solving steps are replayed iteration by iteration: solve again with the history recorded (F is at hand,
-  // so this costs a solve, never a form-factor computation). A bounces step replays its partial sums, bounce
-  // by bounce.
-  const bool solves = step.stage == lesson::Stage::Solve || step.stage == lesson::Stage::Compare ||
-                      step.stage == lesson::Stage::Matrix;
+  // Solving steps are replayed iteration by iteration from the run the step runner recorded (the step is
+  // computed once); a bounces step replays its partial sums, bounce by bounce.
   if (step.stage == lesson::Stage::Bounces && !stepResult->bounceTerms.empty()) {
     std::optional<RadiositySystem> system;
     if (out.F) system = RadiositySystem::fromMesh(stepResult->mesh, *out.F);
@@ -131,13 +99,8 @@ PipelineResult LessonLibrary::runOne(const lesson::Lesson& lesson, const lesson:
     out.iterations = static_cast<int>(out.history.size());
     out.residual = out.history.back().residual;
     out.status = SolverStatus::Success;
-  } else if (out.F && solves && stepResult->B.rows() > 0) {
-    // A step that compares solvers replays the one it measures against its reference (the last listed), not
-    // the default solver the step never names.
-    std::string replay = step.parameters.solver;
-    if (!step.parameters.solvers.empty() && !step.fields.count("solver"))
-      replay = step.parameters.solvers.back();
-    solveWithHistory(out, replay, solverOptionsFromParameters(step.parameters), progress);
+  } else if (!stepResult->replay.solverName.empty()) {
+    takeSolve(out, std::move(stepResult->replay));
   }
   try {
     std::string text = "## " + step.title + "\n\n" + lesson::resolvedText(lesson, step, *stepResult);

@@ -53,8 +53,4 @@ class LessonLibrary {
   mutable std::mutex runMutex_;
 };
 
-// The pipeline settings equivalent to a step's parameters (for user scenes opened with the same controls).
-PipelineSettings settingsFromParameters(const lesson::StepParameters& parameters);
-SolverOptions solverOptionsFromParameters(const lesson::StepParameters& parameters);
-
 }  // namespace rt::app

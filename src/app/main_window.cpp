@@ -32,11 +32,11 @@
 #include "app/matrix_view.h"
 #include "app/parameter_panel.h"
 #include "app/progress_strip.h"
-#include "app/registration.h"
 #include "app/residual_chart.h"
 #include "app/scene_view.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/solvers/solver.h"
+#include "plugins/optional_methods.h"
 
 namespace rt::app {
 

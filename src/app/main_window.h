@@ -137,6 +137,8 @@ class MainWindow : public QMainWindow {
   bool newStepPending_ = false;
   Scene scene_;
   std::shared_ptr<const PipelineResult> result_;
+  // The reader's own scene: its pipeline keeps form factors between runs (a change of material re-solves).
+  std::shared_ptr<Pipeline> scenePipeline_ = std::make_shared<Pipeline>();
   QString lastError_;
   bool compare_ = false;
   bool presenter_ = false;

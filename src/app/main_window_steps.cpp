@@ -25,6 +25,7 @@
 #include "core/io/scene_loader.h"
 #include "core/solvers/solver.h"
 #include "lesson/step_result.h"
+#include "lesson/step_settings.h"
 
 namespace rt::app {
 namespace {
@@ -206,10 +207,10 @@ void MainWindow::requestComputation() {
     };
   } else if (mode_ == Mode::Scene) {
     const Scene scene = scene_;
-    const PipelineSettings settings = settingsFromParameters(parameters_);
-    std::shared_ptr<const PipelineResult> previous = result_;
-    job = [scene, settings, previous, compare, choice](Progress& progress) {
-      PipelineResult result = runPipeline(scene, settings, progress, previous.get());
+    const PipelineSettings settings = lesson::settingsFor(parameters_, parameters_.method);
+    std::shared_ptr<Pipeline> pipeline = scenePipeline_;
+    job = [scene, settings, pipeline, compare, choice](Progress& progress) {
+      PipelineResult result = runScenePipeline(*pipeline, scene, settings, progress);
       if (!compare) return result;
       if (!choice.changesSomething()) {
         result.compared = std::make_shared<PipelineResult>(result);
@@ -224,7 +225,7 @@ void MainWindow::requestComputation() {
       if (!choice.solver.empty()) other.solver = choice.solver;
       if (!choice.method.empty()) other.method = choice.method;
       other.mesh = scaledMesh(other.mesh, choice.mesh);
-      result.compared = std::make_shared<PipelineResult>(runPipeline(scene, other, progress, &result));
+      result.compared = std::make_shared<PipelineResult>(runScenePipeline(*pipeline, scene, other, progress));
       return result;
     };
   } else {

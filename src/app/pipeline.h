@@ -1,7 +1,7 @@
-// The general pipeline the app runs for a scene: apply the reader's overrides (reflectance, light), mesh,
-// form factors, solve with the history recorded for replay. It only glues core calls together, and it reuses
-// the previous form-factor matrix whenever the geometry and the form-factor settings are unchanged: changing
-// a reflectance or the light re-solves without recomputing F. No Qt: it runs on a worker thread.
+// What the app's window shows of a computation: the core pipeline's output (scene, mesh, F, solution and its
+// iterations, see core/pipeline/pipeline.h) plus what a lesson step adds (title, text, the step's result) and
+// compare mode's second result. A view model only: the computing is done by rt::Pipeline, for lesson steps
+// through the step runner.
 #pragma once
 
 #include <map>
@@ -9,28 +9,14 @@
 #include <string>
 #include <vector>
 
-#include "core/formfactor/formfactor_method.h"
-#include "core/progress.h"
-#include "core/scene.h"
-#include "core/solvers/solver.h"
+#include "core/pipeline/pipeline.h"
 
 namespace rt::app {
-
-struct PipelineSettings {
-  MeshOptions mesh;
-  std::string method = "analytic";  // form-factor method
-  FormFactorOptions formFactors;
-  std::string solver;  // empty: chooseSolver(n)
-  SolverOptions solverOptions;
-  std::map<std::string, Rgb> reflectance;  // surface name -> reflectance
-  double lightScale = 1.0;                 // multiplies every emission
-};
 
 struct PipelineResult {
   std::shared_ptr<const Scene> scene;  // with the overrides applied
   std::shared_ptr<const Mesh> mesh;
   std::shared_ptr<const FormFactorMatrix> F;  // null when no form-factor method was available
-  std::string formFactorKey;                  // what F depends on: geometry, method and its options
   std::string formFactorMethod;               // the method that computed F (empty without F)
   FormFactorStats formFactorStats;
   bool formFactorsReused = false;
@@ -55,20 +41,12 @@ struct PipelineResult {
   bool valid() const { return mesh != nullptr; }
 };
 
-// Applies the reflectance overrides (unknown surface names throw InputError) and the light scale.
-Scene applyOverrides(const Scene& scene, const PipelineSettings& settings);
+// The window's view of a solve (solver name, B, its iterations, status, residual).
+void takeSolve(PipelineResult& result, SolveOutcome solve);
 
-// Direct light plus the classic ambient term: B_i = E_i + rho_i * ambient, ambient = (sum E A / sum A) / (1 -
-// rho_avg). Shown when no form-factor method or solver is available, so that the view is never empty.
-RgbField ambientEstimate(const Mesh& mesh);
-
-// Solves result.mesh with result.F, recording the history for replay; fills B, history, status, iterations,
-// residual and solverName (falls back to the ambient estimate, with a note, when the solver is unknown).
-void solveWithHistory(PipelineResult& result, const std::string& solverName, SolverOptions options,
-                      Progress& progress);
-
-// May throw Cancelled (then nothing of `previous` is touched) and InputError.
-PipelineResult runPipeline(const Scene& scene, const PipelineSettings& settings, Progress& progress,
-                           const PipelineResult* previous = nullptr);
+// A user's scene through the core pipeline (`pipeline` keeps the form factors between runs: a change of
+// reflectance or light re-solves without recomputing F). May throw Cancelled and InputError.
+PipelineResult runScenePipeline(Pipeline& pipeline, const Scene& scene, const PipelineSettings& settings,
+                                Progress& progress);
 
 }  // namespace rt::app

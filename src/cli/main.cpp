@@ -5,13 +5,13 @@
 #include <iostream>
 
 #include "cli/commands.h"
-#include "cli/registration.h"
+#include "plugins/optional_methods.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"radiosity: the Radiosity Textbook's command line (form factors, solvers, figures, lessons)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "radiosity 0.1.0");
-  rt::cli::registerOptionalMethods();
+  rt::registerOptionalMethods();
   rt::cli::addFormFactorsCommand(app);
   rt::cli::addSolveCommand(app);
   rt::cli::addMatrixCommand(app);

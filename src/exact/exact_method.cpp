@@ -17,6 +17,14 @@ namespace {
 class ExactMethod : public FormFactorMethod {
  public:
   std::string name() const override { return "exact"; }
+  AccuracyKnob knob() const override {
+    return {AccuracyKnob::Field::Tolerance,
+            "tolerance",
+            "requested relative tolerance of each form factor",
+            1e-12,
+            0.1,
+            1e-9};
+  }
   std::string description() const override {
     return "exact reference: visibility by exact 2D Booleans (CGAL), Lambert's formula, adaptive cubature to "
            "--tolerance";

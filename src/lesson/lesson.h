@@ -97,6 +97,8 @@ struct StepParameters {
   std::string refine = "adaptive";        // refine stage: uniform | adaptive | discontinuity | hierarchical
   std::optional<double> refineTolerance;  // adaptive: gradient tolerance; hierarchical: link tolerance
   std::string exportMatrix;  // matrix stage: file name (csv, mtx, npy, tex) written beside the figures
+  std::string matrix = "F";  // matrix stage: the matrix shown, F, rhoF or K = I - rho F
+  std::string from;          // the element or surface a hemicube/Nusselt/rays view is seen from
 };
 
 struct Step {
@@ -111,7 +113,6 @@ struct Step {
   std::vector<View> views;
   CameraOverride camera;
   std::vector<std::string> highlights;  // surface names or element ids ("12")
-  std::string from;                     // the element or surface a hemicube/Nusselt/rays view is seen from
   std::string figure;                   // base name of the step's figure files
   std::vector<std::string> controls;    // parameter keys the app may let the reader change
   std::map<std::string, Field> fields;  // every key as written, with its line (for late errors)

@@ -128,7 +128,7 @@ void checkAgainstScenes(const Lesson& lesson, const std::string& scenesDir) {
       }
     };
     for (const auto& h : step.highlights) checkTarget(h, "highlight");
-    if (!step.from.empty()) checkTarget(step.from, "from");
+    if (!step.parameters.from.empty()) checkTarget(step.parameters.from, "from");
   }
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/input_error.h"
 #include "lesson/placeholders.h"
+#include "lesson/step_keys.h"
 #include "lesson/value_parsing.h"
 
 namespace rt::lesson {
@@ -189,91 +190,23 @@ class Parser {
     fail(static_cast<int>(at), "the ```step block is not closed by ```");
   }
 
+  // Parameters go through the table of step keys (step_keys.h); the keys that describe the step itself are
+  // read here.
   void applyField(Step& step, const std::string& key, const std::string& value, const SourceLocation& where) {
-    StepParameters& p = step.parameters;
-    auto name = [&](const std::vector<std::string>& known, const std::string& what) {
-      if (!contains(known, value))
-        fail(where.line, "unknown " + what + " '" + value + "' (known: " + joined(known) + ")");
-      return value;
-    };
-    auto names = [&](const std::vector<std::string>& known, const std::string& what) {
-      auto list = parseList(value);
-      for (const auto& n : list)
-        if (!contains(known, n))
-          fail(where.line, "unknown " + what + " '" + n + "' (known: " + joined(known) + ")");
-      return list;
-    };
-    if (key == "scene")
+    const StepKey* row = findStepKey(key);
+    if (key == "scene") {
       step.scene = value;
-    else if (key == "stage") {
+    } else if (key == "stage") {
       auto s = stageFromString(value);
       if (!s) fail(where.line, "unknown stage '" + value + "' (known: " + joined(stageNames()) + ")");
       step.stage = *s;
-    } else if (key == "method")
-      p.method = name(knownMethods(), "form-factor method");
-    else if (key == "methods")
-      p.methods = names(knownMethods(), "form-factor method");
-    else if (key == "reference")
-      p.reference = name(knownMethods(), "form-factor method");
-    else if (key == "resolution")
-      p.resolution = parseInt(value, where, key, 2, 4096);
-    else if (key == "samples")
-      p.samples = parseInt(value, where, key, 1, 1000000);
-    else if (key == "seed")
-      p.seed = static_cast<std::uint64_t>(parseInt(value, where, key, 0, 2000000000));
-    else if (key == "subdivide")
-      p.subdivide = parseInt(value, where, key, 1, 64);
-    else if (key == "max-edge")
-      p.maxEdge = parseDouble(value, where, key, 1e-9, 1e9);
-    else if (key == "subdivisions")
-      p.subdivisions = parseIntList(value, where, key, 1, 64);
-    else if (key == "sweep")
-      p.sweep = parseIntList(value, where, key, 1, 1000000);
-    else if (key == "solver")
-      p.solver = name(knownSolvers(), "solver");
-    else if (key == "solvers")
-      p.solvers = names(knownSolvers(), "solver");
-    else if (key == "iterations")
-      p.iterations = parseInt(value, where, key, 1, 1000000);
-    else if (key == "tolerance")
-      p.tolerance = parseDouble(value, where, key, 1e-15, 0.5);
-    else if (key == "relaxation")
-      p.relaxation = parseDouble(value, where, key, 0.05, 1.99);
-    else if (key == "ambient")
-      p.ambient = parseBool(value, where, key);
-    else if (key == "bounces")
-      p.bounces = parseInt(value, where, key, 0, 1000);
-    else if (key == "ambient-light")
-      p.ambientLight = parseDouble(value, where, key, 0, 1e9);
-    else if (key == "light-scale")
-      p.lightScale = parseDouble(value, where, key, 0, 1e9);
-    else if (key == "exposure")
-      p.exposure = parseDouble(value, where, key, 0, 1e9);
-    else if (key == "tone-map") {
-      if (value != "linear" && value != "reinhard")
-        fail(where.line, "tone-map is 'linear' or 'reinhard', not '" + value + "'");
-      p.toneMap = value;
-    } else if (key == "gamma")
-      p.gamma = parseBool(value, where, key);
-    else if (key == "smooth")
-      p.smooth = parseBool(value, where, key);
-    else if (key == "edges")
-      p.edges = parseBool(value, where, key);
-    else if (key == "refine") {
-      if (value != "uniform" && value != "adaptive" && value != "discontinuity" && value != "hierarchical")
-        fail(where.line, "refine is uniform, adaptive, discontinuity or hierarchical, not '" + value + "'");
-      p.refine = value;
-    } else if (key == "refine-tolerance")
-      p.refineTolerance = parseDouble(value, where, key, 1e-6, 10);
-    else if (key == "export") {
+    } else if (key == "export") {
       const auto dot = value.rfind('.');
       const std::string ext = dot == std::string::npos ? "" : value.substr(dot);
       if (ext != ".csv" && ext != ".mtx" && ext != ".npy" && ext != ".tex")
         fail(where.line, "export names a file ending in .csv, .mtx, .npy or .tex, not '" + value + "'");
       if (value.find('/') != std::string::npos) fail(where.line, "export is a file name, not a path");
-      p.exportMatrix = value;
-    } else if (startsWith(key, "reflectance.")) {
-      p.reflectance[key.substr(12)] = parseRgb(value, where, key, 0.0, 0.999999);
+      step.parameters.exportMatrix = value;
     } else if (key == "views") {
       for (const auto& v : parseList(value)) {
         auto view = viewFromString(v);
@@ -282,19 +215,17 @@ class Parser {
           fail(where.line, "view '" + v + "' is listed twice");
         step.views.push_back(*view);
       }
-    } else if (key == "camera.position")
+    } else if (key == "camera.position") {
       step.camera.position = parseVec3(value, where, key);
-    else if (key == "camera.target")
+    } else if (key == "camera.target") {
       step.camera.target = parseVec3(value, where, key);
-    else if (key == "camera.up")
+    } else if (key == "camera.up") {
       step.camera.up = parseVec3(value, where, key);
-    else if (key == "camera.fov")
-      step.camera.fovYDegrees = parseDouble(value, where, key, 1, 170);
-    else if (key == "highlight")
+    } else if (key == "camera.fov") {
+      step.camera.fovYDegrees = parseDouble(value, where, key, row->min, row->max);
+    } else if (key == "highlight") {
       step.highlights = parseList(value);
-    else if (key == "from")
-      step.from = value;
-    else if (key == "figure") {
+    } else if (key == "figure") {
       const bool ok = std::all_of(value.begin(), value.end(), [](char c) {
         return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
       });
@@ -304,12 +235,18 @@ class Parser {
       step.figure = value;
     } else if (key == "controls") {
       for (const auto& c : parseList(value)) {
-        const bool known = contains(stepKeys(), c) || c == "reflectance" || startsWith(c, "reflectance.");
-        if (!known || c == "scene" || c == "stage" || c == "views" || c == "figure" || c == "controls")
+        const StepKey* control = findStepKey(c);
+        if (!control || !control->control) {
+          std::vector<std::string> names;
+          for (const StepKey& k : stepKeyTable())
+            if (k.control) names.push_back(k.name);
           fail(where.line,
-               "'" + c + "' cannot be a control (controls name parameters such as resolution, solver)");
+               "'" + c + "' cannot be a control (controls: " + joined(names) + ", reflectance.<surface>)");
+        }
         step.controls.push_back(c);
       }
+    } else {
+      applyStepValue(step.parameters, *row, key, value, where);
     }
   }
 
@@ -410,25 +347,12 @@ class Parser {
 }  // namespace
 
 const std::vector<std::string>& stepKeys() {
-  static const std::vector<std::string> keys{"scene",           "stage",
-                                             "method",          "methods",
-                                             "reference",       "resolution",
-                                             "samples",         "seed",
-                                             "subdivide",       "max-edge",
-                                             "subdivisions",    "sweep",
-                                             "solver",          "solvers",
-                                             "iterations",      "tolerance",
-                                             "relaxation",      "ambient",
-                                             "bounces",         "ambient-light",
-                                             "light-scale",     "exposure",
-                                             "tone-map",        "gamma",
-                                             "smooth",          "edges",
-                                             "export",          "views",
-                                             "camera.position", "camera.target",
-                                             "camera.up",       "camera.fov",
-                                             "highlight",       "from",
-                                             "figure",          "controls",
-                                             "refine",          "refine-tolerance"};
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> names;
+    for (const StepKey& k : stepKeyTable())
+      if (k.name != "reflectance") names.push_back(k.name);
+    return names;
+  }();
   return keys;
 }
 

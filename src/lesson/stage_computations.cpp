@@ -16,7 +16,7 @@ namespace {
 std::shared_ptr<const FormFactorMatrix> mainFormFactors(StageContext& c) {
   StepResult& r = c.result;
   r.method = c.method();
-  r.F = c.formFactors(r.mesh, c.meshKey, r.method, "method", r.formFactorStats);
+  r.F = c.formFactors(r.mesh, r.method, "method", r.formFactorStats);
   return r.F;
 }
 
@@ -95,6 +95,19 @@ void computeMatrix(StageContext& c) {
   if (K.rows() <= 300) {
     if (const auto cond = conditionNumber(K)) r.values["condition"] = *cond;
   }
+  r.values["K.diagonal.min"] = K.diagonal().minCoeff();
+  r.values["K.diagonal.max"] = K.diagonal().maxCoeff();
+  Eigen::MatrixXd offDiagonal = K.cwiseAbs();
+  offDiagonal.diagonal().setZero();
+  r.values["K.offdiagonal.max"] = offDiagonal.maxCoeff();
+  const std::string& shown = c.parameters.matrix;
+  r.shownMatrix = std::make_shared<const Eigen::MatrixXd>(
+      shown == "K"      ? K
+      : shown == "rhoF" ? Eigen::MatrixXd(Eigen::MatrixXd::Identity(K.rows(), K.cols()) - K)
+                        : Eigen::MatrixXd(*F));
+  // The solution beside the matrix: the 3D view shows it and a reader can replay the solver.
+  r.runs.push_back(
+      runSolver(c, c.parameters.solver, RadiositySystem::fromMesh(mesh, *F), r.B, c.parameters.solver, true));
   if (!c.parameters.exportMatrix.empty() && !c.runner.options().outputDir.empty()) {
     const std::string path =
         (std::filesystem::path(c.runner.options().outputDir) / c.parameters.exportMatrix).string();
@@ -111,7 +124,7 @@ void computeSolve(StageContext& c) {
   const auto F = mainFormFactors(c);
   addFormFactorValues(r, *F);
   const RadiositySystem system = RadiositySystem::fromMesh(r.mesh, *F);
-  r.runs.push_back(runSolver(c, c.parameters.solver, system, r.B, c.parameters.solver));
+  r.runs.push_back(runSolver(c, c.parameters.solver, system, r.B, c.parameters.solver, true));
   for (const char* key : {"iterations", "residual", "seconds", "converged"})
     r.values[key] = r.values[std::string(key) + "." + c.parameters.solver];
   const Rgb emitted = emittedPower(system), absorbed = absorbedPower(system, r.B),
@@ -130,7 +143,7 @@ void computeCompare(StageContext& c) {
     // The first solver is the reference the others are measured against (the error view shows the last one).
     for (const auto& s : p.solvers) {
       RgbField B;
-      r.runs.push_back(runSolver(c, s, system, B, s));
+      r.runs.push_back(runSolver(c, s, system, B, s, true));
       addSurfaceValues(r, "B", B, "." + s);
       if (r.reference.rows() == 0)
         r.reference = B;
@@ -143,10 +156,10 @@ void computeCompare(StageContext& c) {
   }
   for (const auto& m : p.methods) {
     FormFactorStats stats;
-    const auto F = c.formFactors(r.mesh, c.meshKey, m, "methods", stats);
+    const auto F = c.formFactors(r.mesh, m, "methods", stats);
     const RadiositySystem system = RadiositySystem::fromMesh(r.mesh, *F);
     RgbField B;
-    runSolver(c, p.solver, system, B, m);
+    runSolver(c, p.solver, system, B, m, !r.F);
     addFormFactorValues(r, *F, "." + m);
     addSurfaceValues(r, "B", B, "." + m);
     r.values["seconds.formfactors." + m] = stats.seconds;
@@ -166,7 +179,7 @@ void computeCompare(StageContext& c) {
     o.count = n;
     Mesh mesh = buildMesh(r.scene, o);
     FormFactorStats stats;
-    const auto F = c.formFactors(mesh, "count" + std::to_string(n), c.method(), "subdivisions", stats);
+    const auto F = c.formFactors(mesh, c.method(), "subdivisions", stats);
     const RadiositySystem system = RadiositySystem::fromMesh(mesh, *F);
     RgbField B;
     const std::string label = "sub" + std::to_string(n);
@@ -227,7 +240,7 @@ void computeExact(StageContext& c) {
   StepResult& r = c.result;
   const StepParameters& p = c.parameters;
   FormFactorStats referenceStats;
-  r.referenceF = c.formFactors(r.mesh, c.meshKey, p.reference, "reference", referenceStats);
+  r.referenceF = c.formFactors(r.mesh, p.reference, "reference", referenceStats);
   const FormFactorMatrix& Fref = *r.referenceF;
   addFormFactorValues(r, Fref, ".reference");
   RgbField Bref;
@@ -237,7 +250,7 @@ void computeExact(StageContext& c) {
       p.methods.empty() ? std::vector<std::string>{c.method()} : p.methods;
   for (const auto& m : methods) {
     FormFactorStats stats;
-    const auto F = c.formFactors(r.mesh, c.meshKey, m, p.methods.empty() ? "method" : "methods", stats);
+    const auto F = c.formFactors(r.mesh, m, p.methods.empty() ? "method" : "methods", stats);
     const FormFactorMatrix diff = *F - Fref;
     r.values["error." + m] = diff.cwiseAbs().maxCoeff();
     r.values["rms." + m] = std::sqrt(diff.squaredNorm() / static_cast<double>(diff.size()));
@@ -261,7 +274,7 @@ void computeBenchmark(StageContext& c) {
   StepResult& r = c.result;
   const StepParameters& p = c.parameters;
   FormFactorStats referenceStats;
-  r.referenceF = c.formFactors(r.mesh, c.meshKey, p.reference, "reference", referenceStats);
+  r.referenceF = c.formFactors(r.mesh, p.reference, "reference", referenceStats);
   const double referenceNorm = r.referenceF->norm();
   for (const auto& m : p.methods) {
     for (std::size_t k = 0; k < p.sweep.size(); ++k) {
@@ -269,7 +282,7 @@ void computeBenchmark(StageContext& c) {
       const auto start = std::chrono::steady_clock::now();
       std::shared_ptr<const FormFactorMatrix> F;
       try {
-        F = c.runner.formFactors(r.mesh, c.meshKey, m, c.optionsFor(m, p.sweep[k]), stats, c.progress);
+        F = c.runner.formFactors(r.mesh, m, c.optionsFor(m, p.sweep[k]), stats, c.progress);
       } catch (const std::invalid_argument& e) {
         c.failUnavailable("methods", m, e.what());
       }

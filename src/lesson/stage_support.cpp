@@ -4,6 +4,7 @@
 
 #include "core/solvers/solver.h"
 #include "lesson/lesson_parser.h"
+#include "lesson/step_settings.h"
 #include "lesson/step_stages.h"
 
 namespace rt::lesson::detail {
@@ -41,16 +42,7 @@ std::string StageContext::method() const {
 }
 
 FormFactorOptions StageContext::optionsFor(const std::string& name, int sweepValue) const {
-  FormFactorOptions o;
-  if (parameters.resolution) o.hemicubeResolution = *parameters.resolution;
-  if (parameters.samples) o.samples = *parameters.samples;
-  if (parameters.seed) o.seed = *parameters.seed;
-  if (sweepValue > 0) {
-    if (name == "hemicube" || name == "nusselt")
-      o.hemicubeResolution = sweepValue;
-    else
-      o.samples = sweepValue;
-  }
+  FormFactorOptions o = formFactorOptionsFor(parameters, name, sweepValue);
   if (runner.options().quick) {
     o.hemicubeResolution = std::min(o.hemicubeResolution, 32);
     o.samples = std::min(o.samples, 8);
@@ -58,55 +50,50 @@ FormFactorOptions StageContext::optionsFor(const std::string& name, int sweepVal
   return o;
 }
 
-std::shared_ptr<const FormFactorMatrix> StageContext::formFactors(const Mesh& mesh, const std::string& key,
-                                                                  const std::string& name,
+std::string StageContext::replayedSolver() const {
+  if (!parameters.solvers.empty() && !step.fields.count("solver")) return parameters.solvers.back();
+  return parameters.solver;
+}
+
+std::shared_ptr<const FormFactorMatrix> StageContext::formFactors(const Mesh& mesh, const std::string& name,
                                                                   const std::string& fieldKey,
                                                                   FormFactorStats& stats) {
   try {
-    return runner.formFactors(mesh, key, name, optionsFor(name, 0), stats, progress);
+    return runner.formFactors(mesh, name, optionsFor(name, 0), stats, progress);
   } catch (const std::invalid_argument& e) {
     failUnavailable(fieldKey, name, e.what());
   }
 }
 
 SolverRun runSolver(StageContext& c, const std::string& name, const RadiositySystem& system, RgbField& B,
-                    const std::string& label) {
-  std::unique_ptr<Solver> solver;
+                    const std::string& label, bool replayable) {
+  StepResult& r = c.result;
+  const bool record = replayable && c.runner.options().recordHistory && name == c.replayedSolver() &&
+                      r.replay.history.empty();
+  SolveOutcome outcome;
   try {
-    solver = makeSolver(name);
+    outcome = solveRadiosity(system, name, solverOptionsFor(c.parameters), record, c.progress);
   } catch (const std::invalid_argument& e) {
     c.fail(c.step.fields.count("solvers") ? "solvers" : "solver", e.what());
   }
-  const StepParameters& p = c.parameters;
-  SolverOptions o;
-  if (p.tolerance) o.tolerance = *p.tolerance;
-  if (p.iterations) o.maxIterations = *p.iterations;
-  if (p.relaxation) o.relaxation = *p.relaxation;
-  if (p.seed) o.seed = *p.seed;
-  o.ambient = p.ambient;
-  o.recordHistory = false;
-  solver->setOptions(o);
+  B = outcome.B;
   SolverRun run;
   run.label = label;
-  solver->setObserver([&run](const IterationRecord& r) {
-    run.iteration.push_back(r.iteration);
-    run.residuals.push_back(r.residual);
-    run.elapsed.push_back(r.seconds);
-  });
-  solver->setProgress(&c.progress);
-  const auto start = std::chrono::steady_clock::now();
-  solver->compute(system);
-  B = solver->solve();
-  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  run.iterations = solver->iterations();
-  run.residual = solver->error();
-  run.status = toString(solver->info());
-  StepResult& r = c.result;
+  for (const IterationPoint& rec : outcome.trace) {
+    run.iteration.push_back(rec.iteration);
+    run.residuals.push_back(rec.residual);
+    run.elapsed.push_back(rec.seconds);
+  }
+  run.seconds = outcome.seconds;
+  run.iterations = outcome.iterations;
+  run.residual = outcome.error;
+  run.status = toString(outcome.status);
   const std::string suffix = label.empty() ? "" : "." + label;
   r.values["iterations" + suffix] = run.iterations;
   r.values["residual" + suffix] = run.residual;
   r.values["seconds" + suffix] = run.seconds;
-  r.values["converged" + suffix] = solver->info() == SolverStatus::Success ? 1.0 : 0.0;
+  r.values["converged" + suffix] = outcome.status == SolverStatus::Success ? 1.0 : 0.0;
+  if (record) r.replay = std::move(outcome);
   return run;
 }
 

@@ -10,6 +10,7 @@
 
 #include "core/formfactor/formfactor_method.h"
 #include "core/mesh.h"
+#include "core/pipeline/pipeline.h"
 #include "core/scene.h"
 
 namespace rt::lesson {
@@ -57,6 +58,11 @@ struct StepResult {
   int sourceElement = 0;         // the element hemicube / Nusselt / rays / formfactor views look from
   std::vector<int> highlighted;  // element indices
   std::string exportedMatrix;    // path of the exported matrix, when the step asked for one
+  // Matrix stage: the matrix the matrix view shows (StepParameters::matrix: F, rho F or K = I - rho F, with
+  // the green channel's rho), so that the figure and the numbers quoted beside it come from the same data.
+  std::shared_ptr<const Eigen::MatrixXd> shownMatrix;
+  // The solver run a reader replays iteration by iteration (RunOptions::recordHistory): its B per iteration.
+  SolveOutcome replay;
 
   std::map<std::string, double> values;  // named numbers, see value()
 

@@ -6,7 +6,9 @@
 
 #include "core/formfactor/formfactor_matrix.h"
 #include "core/io/scene_loader.h"
+#include "core/pipeline/scene_overrides.h"
 #include "lesson/placeholders.h"
+#include "lesson/step_settings.h"
 #include "lesson/step_stages.h"
 
 namespace rt::lesson {
@@ -14,24 +16,6 @@ namespace {
 
 bool isNumber(const std::string& s) {
   return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
-
-// Material overrides: a surface with its own reflectance gets its own copy of the material, so that surfaces
-// sharing the material keep theirs.
-void applyOverrides(Scene& scene, const StepParameters& p, const detail::StageContext& c) {
-  for (const auto& [surfaceName, rho] : p.reflectance) {
-    auto it = std::find_if(scene.surfaces.begin(), scene.surfaces.end(),
-                           [&](const Surface& s) { return s.name == surfaceName; });
-    if (it == scene.surfaces.end())
-      c.fail("reflectance." + surfaceName, "the scene has no surface '" + surfaceName + "'");
-    Material m = scene.materials[it->material];
-    m.name += "/" + surfaceName;
-    m.reflectance = rho;
-    scene.materials.push_back(m);
-    it->material = static_cast<int>(scene.materials.size()) - 1;
-  }
-  if (p.lightScale != 1.0)
-    for (auto& m : scene.materials) m.emission *= p.lightScale;
 }
 
 std::vector<int> elementsOf(const StepResult& r, const std::string& target, const detail::StageContext& c,
@@ -74,27 +58,17 @@ const Scene& StepRunner::scene(const std::string& relativePath) {
   return it->second;
 }
 
-std::shared_ptr<const FormFactorMatrix> StepRunner::formFactors(const Mesh& mesh, const std::string& meshKey,
-                                                                const std::string& method,
+std::shared_ptr<const FormFactorMatrix> StepRunner::formFactors(const Mesh& mesh, const std::string& method,
                                                                 const FormFactorOptions& options,
                                                                 FormFactorStats& stats, Progress& progress) {
-  std::ostringstream key;
-  key << mesh.geometryHash() << "|" << meshKey << "|" << method << "|" << options.hemicubeResolution << "|"
-      << options.samples << "|" << options.seed << "|" << options.tolerance;
-  if (auto it = cache_.find(key.str()); it != cache_.end()) {
-    stats = it->second.stats;
-    return it->second.F;
-  }
-  auto algorithm = makeFormFactorMethod(method);
-  auto F = std::make_shared<FormFactorMatrix>(algorithm->compute(mesh, options, progress, stats));
-  ++computations_;
-  cache_[key.str()] = {F, stats};
-  return F;
+  auto cached = pipeline_.formFactors(mesh, method, options, progress);
+  stats = cached->stats;
+  return {cached, &cached->F};
 }
 
 StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& progress) {
   StepResult result;
-  detail::StageContext c{lesson, step, step.parameters, *this, progress, result, {}, "", {}};
+  detail::StageContext c{lesson, step, step.parameters, *this, progress, result, {}, {}};
   if (options_.quick) quickCaps(c.parameters);
   if (step.stage == Stage::Text) return result;
 
@@ -103,19 +77,13 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
   } catch (const InputError& e) {
     c.fail("scene", std::string("the scene does not load: ") + e.what());
   }
-  applyOverrides(result.scene, c.parameters, c);
   const StepParameters& p = c.parameters;
-  if (p.subdivide) {
-    c.meshOptions.mode = MeshOptions::Mode::Count;
-    c.meshOptions.count = *p.subdivide;
-    c.meshKey = "count" + std::to_string(*p.subdivide);
-  } else if (p.maxEdge) {
-    c.meshOptions.mode = MeshOptions::Mode::MaxEdge;
-    c.meshOptions.maxEdge = *p.maxEdge;
-    c.meshKey = "edge" + std::to_string(*p.maxEdge);
-  } else {
-    c.meshKey = "none";
-  }
+  for (const auto& [surface, rho] : p.reflectance)
+    if (std::none_of(result.scene.surfaces.begin(), result.scene.surfaces.end(),
+                     [&](const Surface& s) { return s.name == surface; }))
+      c.fail("reflectance." + surface, "the scene has no surface '" + surface + "'");
+  result.scene = applyOverrides(result.scene, p.reflectance, p.lightScale);
+  c.meshOptions = meshOptionsFor(p);
   result.mesh = buildMesh(result.scene, c.meshOptions);
   c.formFactorOptions = c.optionsFor(c.method(), 0);
 
@@ -128,7 +96,8 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
 
   for (const auto& h : step.highlights)
     for (int e : elementsOf(result, h, c, "highlight")) result.highlighted.push_back(e);
-  if (!step.from.empty()) result.sourceElement = elementsOf(result, step.from, c, "from").front();
+  if (!c.parameters.from.empty())
+    result.sourceElement = elementsOf(result, c.parameters.from, c, "from").front();
 
   result.values["elements"] = static_cast<double>(result.mesh.size());
   result.values["patches"] = static_cast<double>(result.scene.patches.size());
@@ -155,7 +124,7 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
     case Stage::Nusselt:
     case Stage::Rays: {
       result.method = c.method();
-      result.F = c.formFactors(result.mesh, c.meshKey, result.method, "method", result.formFactorStats);
+      result.F = c.formFactors(result.mesh, result.method, "method", result.formFactorStats);
       detail::addFormFactorValues(result, *result.F);
       break;
     }

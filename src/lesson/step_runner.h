@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "core/input_error.h"
+#include "core/pipeline/pipeline.h"
 #include "core/progress.h"
 #include "lesson/lesson.h"
 #include "lesson/step_result.h"
@@ -27,6 +28,8 @@ struct RunOptions {
   // resolve.
   bool quick = false;
   std::string outputDir;  // where a matrix step writes its export (empty: the export is skipped)
+  // Keep every iteration of the run a reader replays (StepResult::replay): the app steps through them.
+  bool recordHistory = false;
 };
 
 class StepRunner {
@@ -38,12 +41,13 @@ class StepRunner {
   StepResult run(const Lesson& lesson, const Step& step, Progress& progress = noProgress());
 
   // How many times F was actually computed (the rest came from the cache).
-  int formFactorComputations() const { return computations_; }
+  int formFactorComputations() const { return pipeline_.formFactorComputations(); }
   const RunOptions& options() const { return options_; }
+  Pipeline& pipeline() { return pipeline_; }
 
-  // The form factors for a mesh (cached). `key` names the mesh options; the geometry hash is added to it.
-  std::shared_ptr<const FormFactorMatrix> formFactors(const Mesh& mesh, const std::string& meshKey,
-                                                      const std::string& method,
+  // The form factors for a mesh, through the pipeline's cache. Throws std::invalid_argument for a method
+  // this build does not have.
+  std::shared_ptr<const FormFactorMatrix> formFactors(const Mesh& mesh, const std::string& method,
                                                       const FormFactorOptions& options,
                                                       FormFactorStats& stats, Progress& progress);
 
@@ -53,12 +57,7 @@ class StepRunner {
   std::string scenesDir_;
   RunOptions options_;
   std::map<std::string, Scene> scenes_;
-  struct Cached {
-    std::shared_ptr<const FormFactorMatrix> F;
-    FormFactorStats stats;
-  };
-  std::map<std::string, Cached> cache_;
-  int computations_ = 0;
+  Pipeline pipeline_{16};
 };
 
 // The text of a step with its placeholders filled in from the result (InputError at the placeholder's line

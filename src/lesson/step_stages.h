@@ -21,7 +21,6 @@ struct StageContext {
   Progress& progress;
   StepResult& result;
   MeshOptions meshOptions;
-  std::string meshKey;
   FormFactorOptions formFactorOptions;
 
   SourceLocation at(const std::string& key) const;
@@ -32,15 +31,20 @@ struct StageContext {
   // The form-factor method: `method` when written, otherwise the stage's own (hemicube, nusselt, raycast).
   std::string method() const;
   // F for a mesh with a method (cached), errors reported at the `method`/`methods` line.
-  std::shared_ptr<const FormFactorMatrix> formFactors(const Mesh& mesh, const std::string& meshKey,
-                                                      const std::string& method, const std::string& key,
-                                                      FormFactorStats& stats);
+  std::shared_ptr<const FormFactorMatrix> formFactors(const Mesh& mesh, const std::string& method,
+                                                      const std::string& key, FormFactorStats& stats);
+  // The options of `method` for this step (lesson/step_settings.h), capped in quick mode; a sweep value > 0
+  // sets the method's own accuracy knob.
   FormFactorOptions optionsFor(const std::string& method, int sweepValue) const;
+  // The solver whose run a reader replays iteration by iteration: the step's solver, or in a step comparing
+  // solvers the last one listed (the one measured against the first).
+  std::string replayedSolver() const;
 };
 
-// Runs one solver on a system; B receives the solution.
+// Runs one solver on a system; B receives the solution. The run of replayedSolver() on the step's main system
+// (`replayable`) keeps its iterations in result.replay when the runner records history.
 SolverRun runSolver(StageContext& c, const std::string& name, const RadiositySystem& system, RgbField& B,
-                    const std::string& label);
+                    const std::string& label, bool replayable = false);
 
 // Named values: per-surface means of a field (B.<surface>, with .r .g .b), surface-to-surface form factors.
 void addSurfaceValues(StepResult& r, const std::string& prefix, const RgbField& field,

@@ -121,11 +121,26 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
       return "What " + from + " sees, by the " + r.method + " method";
     case View::Matrix: {
       if (!r.F) throw std::runtime_error(path + ": the step computed no form factors");
+      // A matrix step says which matrix it shows (F, rho F or K); other steps show F.
+      const std::string kind = r.shownMatrix ? step.parameters.matrix : "F";
       MatrixViewOptions o;
       o.size = {s.width, s.height, 96.0};
-      o.title = "Form factors F_ij (" + r.method + ")";
       for (const auto& e : r.mesh.elements) o.groups.push_back(e.patch);
       o.selectedRow = r.sourceElement;
+      if (kind == "K") {
+        o.title = "K = I - rho F, green channel (" + r.method + ")";
+        o.valueLabel = "K_ij";
+        writeMatrixFigure(*r.shownMatrix, o, path);
+        return "The system matrix K = I - rho F: ones on the diagonal, -rho_i F_ij elsewhere";
+      }
+      if (kind == "rhoF") {
+        o.title = "rho_i F_ij, green channel (" + r.method + ")";
+        o.valueLabel = "rho_i F_ij";
+        writeMatrixFigure(*r.shownMatrix, o, path);
+        return "rho F: the share of element j's radiosity that element i reflects; its spectral radius sets "
+               "how fast the iterations converge";
+      }
+      o.title = "Form factors F_ij (" + r.method + ")";
       writeMatrixFigure(Eigen::MatrixXd(*r.F), o, path);
       return "The form-factor matrix: row i is what element i sends to each element j";
     }

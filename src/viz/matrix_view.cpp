@@ -58,6 +58,12 @@ Drawing matrixDrawing(const Eigen::MatrixXd& matrix, const MatrixViewOptions& op
       hi = std::max(hi, shown);
     }
   if (!std::isfinite(lo)) lo = hi = options.logScale ? 1.0 : 0.0;
+  // A nearly constant matrix stays nearly one colour: the scale spans at least a decade (log) or reaches zero
+  // (linear), so that 0.1998 and 0.2000 do not land at opposite ends of the map.
+  if (options.logScale)
+    lo = std::min(lo, hi / 10);
+  else if (hi - lo < 0.1 * std::max(std::abs(lo), std::abs(hi)))
+    lo = std::min(lo, 0.0), hi = std::max(hi, 0.0);
   if (std::isfinite(options.min)) lo = options.min;
   if (std::isfinite(options.max)) hi = options.max;
   if (options.logScale) {

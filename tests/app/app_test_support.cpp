@@ -2,8 +2,10 @@
 
 #include <QApplication>
 #include <QMutex>
+#include <QTest>
 #include <algorithm>
 #include <cstdlib>
+#include <stdexcept>
 
 #include "app/lesson_session.h"
 #include "support/test_paths.h"
@@ -55,6 +57,20 @@ std::unique_ptr<MainWindow> makeWindow(bool threaded, bool quick) {
   window->show();
   QApplication::processEvents();
   return window;
+}
+
+void typeInto(QWidget* editor, const QString& text) {
+  if (!editor) throw std::runtime_error("typeInto: no editor");
+  editor->setFocus();
+  QTest::mouseClick(editor, Qt::LeftButton);
+  QTest::keyClick(editor, Qt::Key_A, Qt::ControlModifier);
+  QTest::keyClicks(editor, text);
+  QTest::keyClick(editor, Qt::Key_Return);
+  waitForApply();
+}
+
+void waitForApply() {
+  QTest::qWait(450);  // the panel applies 350 ms after the last edit
 }
 
 QRect areaOf(QWidget* window, QWidget* widget) {

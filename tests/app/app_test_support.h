@@ -21,6 +21,13 @@ QStringList takeWarnings();
 // A window over <repo>/lessons and <repo>/scenes, computing on the calling thread unless `threaded`.
 std::unique_ptr<MainWindow> makeWindow(bool threaded = false, bool quick = true);
 
+// As a reader edits a field: click into `editor` (a spin box or text field), select all, type `text`, press
+// Enter, then wait out the panel's pause so that the change is applied (computations run on the test's
+// thread).
+void typeInto(QWidget* editor, const QString& text);
+// Waits until the parameter panel's pause has passed and its change was applied.
+void waitForApply();
+
 // The rectangle of `widget` inside the window's grab.
 QRect areaOf(QWidget* window, QWidget* widget);
 

@@ -20,6 +20,15 @@ class AnalyticMethod : public FormFactorMethod {
  public:
   explicit AnalyticMethod(bool visibility) : visibility_(visibility) {}
   std::string name() const override { return visibility_ ? "analytic-visibility" : "analytic"; }
+  AccuracyKnob knob() const override {
+    if (!visibility_) return {};
+    return {AccuracyKnob::Field::Samples,
+            "samples",
+            "stratified point pairs per possibly occluded pair",
+            1,
+            1024,
+            16};
+  }
   std::string description() const override {
     return visibility_
                ? "exact contour integral per pair; ray-cast visible fraction where the shaft test finds "

@@ -61,3 +61,46 @@ std::vector<std::string> formFactorMethodNames() {
 }
 
 }  // namespace rt
+
+namespace rt {
+
+FormFactorOptions AccuracyKnob::applied(FormFactorOptions options, double value) const {
+  switch (field) {
+    case Field::Resolution:
+      options.hemicubeResolution = static_cast<int>(value);
+      break;
+    case Field::Samples:
+      options.samples = static_cast<int>(value);
+      break;
+    case Field::Tolerance:
+      options.tolerance = value;
+      break;
+    case Field::None:
+      break;
+  }
+  return options;
+}
+
+double AccuracyKnob::valueIn(const FormFactorOptions& options) const {
+  switch (field) {
+    case Field::Resolution:
+      return options.hemicubeResolution;
+    case Field::Samples:
+      return options.samples;
+    case Field::Tolerance:
+      return options.tolerance;
+    case Field::None:
+      break;
+  }
+  return 0;
+}
+
+AccuracyKnob accuracyKnobOf(const std::string& method) {
+  try {
+    return makeFormFactorMethod(method)->knob();
+  } catch (const std::invalid_argument&) {
+    return {};
+  }
+}
+
+}  // namespace rt

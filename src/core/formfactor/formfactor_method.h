@@ -36,11 +36,28 @@ struct FormFactorStats {
   std::string summary() const;  // one line
 };
 
+// The one option that buys a method accuracy for time, declared by the method itself, so that bench sweeps,
+// lessons, the app and the CLI set the field the method actually reads (the Nusselt analog reads `samples`,
+// the hemicube `hemicubeResolution`).
+struct AccuracyKnob {
+  enum class Field { None, Resolution, Samples, Tolerance };
+  Field field = Field::None;
+  std::string name;     // the step key and CLI option: "resolution", "samples", "tolerance"; empty for none
+  std::string meaning;  // what the number counts, for tooltips and docs
+  double min = 0, max = 0, defaultValue = 0;
+
+  // `options` with the knob set to `value` (unchanged for a method without a knob).
+  FormFactorOptions applied(FormFactorOptions options, double value) const;
+  // The knob's current value in `options` (0 for a method without a knob).
+  double valueIn(const FormFactorOptions& options) const;
+};
+
 class FormFactorMethod {
  public:
   virtual ~FormFactorMethod() = default;
   virtual std::string name() const = 0;
   virtual std::string description() const = 0;
+  virtual AccuracyKnob knob() const { return {}; }
   // The full n x n matrix for the mesh's elements. May throw Cancelled.
   virtual FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
                                    FormFactorStats& stats) const = 0;
@@ -54,5 +71,7 @@ void registerFormFactorMethod(const std::string& name, FormFactorMethodFactory f
 std::unique_ptr<FormFactorMethod> makeFormFactorMethod(
     const std::string& name);  // throws std::invalid_argument
 std::vector<std::string> formFactorMethodNames();
+// The knob of a registered method (AccuracyKnob{} for an unknown name).
+AccuracyKnob accuracyKnobOf(const std::string& method);
 
 }  // namespace rt

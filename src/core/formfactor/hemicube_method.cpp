@@ -15,6 +15,14 @@ namespace {
 class HemicubeMethod : public FormFactorMethod {
  public:
   std::string name() const override { return "hemicube"; }
+  AccuracyKnob knob() const override {
+    return {AccuracyKnob::Field::Resolution,
+            "resolution",
+            "pixels along the edge of the hemicube's top face",
+            2,
+            4096,
+            128};
+  }
   std::string description() const override {
     return "z-buffered hemicube at each element's centroid (Cohen & Greenberg 1985)";
   }

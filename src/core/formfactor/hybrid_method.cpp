@@ -47,6 +47,14 @@ std::vector<double> elementRadii(const Mesh& mesh) {
 class HybridMethod : public FormFactorMethod {
  public:
   std::string name() const override { return "hybrid"; }
+  AccuracyKnob knob() const override {
+    return {AccuracyKnob::Field::Samples,
+            "samples",
+            "rays per 1 % of an occluded pair's form factor",
+            1,
+            100000,
+            16};
+  }
   std::string description() const override {
     return "exact unoccluded F for near pairs, centroid rules for far ones; occluded pairs less a ray-cast "
            "estimate of what is hidden, rays in proportion to the form factor";

@@ -15,6 +15,14 @@ namespace {
 class NusseltMethod : public FormFactorMethod {
  public:
   std::string name() const override { return "nusselt"; }
+  AccuracyKnob knob() const override {
+    return {AccuracyKnob::Field::Samples,
+            "samples",
+            "segments per projected arc of the Nusselt outline",
+            4,
+            65536,
+            16};
+  }
   std::string description() const override {
     return "Nusselt analog from each centroid: hemisphere projection, area on the base disk (unoccluded)";
   }

@@ -17,6 +17,9 @@ namespace {
 class RaycastMethod : public FormFactorMethod {
  public:
   std::string name() const override { return "raycast"; }
+  AccuracyKnob knob() const override {
+    return {AccuracyKnob::Field::Samples, "samples", "stratified sample pairs per element pair", 1, 1024, 16};
+  }
   std::string description() const override {
     return "N stratified sample pairs per element pair: Lambert point-to-element less the kernel of the "
            "sample pairs a ray finds hidden";
@@ -46,6 +49,14 @@ class RaycastMethod : public FormFactorMethod {
 class MonteCarloMethod : public FormFactorMethod {
  public:
   std::string name() const override { return "montecarlo"; }
+  AccuracyKnob knob() const override {
+    return {AccuracyKnob::Field::Samples,
+            "samples",
+            "cosine-distributed rays leaving each element",
+            1,
+            1000000,
+            16};
+  }
   std::string description() const override {
     return "cosine-distributed rays from uniform points on each element; N_ij / N_i estimates F_ij";
   }

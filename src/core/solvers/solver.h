@@ -85,6 +85,7 @@ class Solver {
   SolverOptions options_;
   IterationObserver observer_;
   Progress* progress_ = nullptr;
+  double progressShown_ = 0;  // the largest fraction reported: a progress bar never moves backwards
   const RadiositySystem* system_ = nullptr;
   SolverStatus status_ = SolverStatus::InvalidInput;
   int iterations_ = 0;

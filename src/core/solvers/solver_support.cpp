@@ -52,7 +52,8 @@ void AlgorithmSolver::onRecord(IterationRecord r) {
     const double byError = (r.residual > 0 && options_.tolerance > 0 && options_.tolerance < 1)
                                ? std::log(r.residual) / std::log(options_.tolerance)
                                : 0.0;
-    progress_->report(std::clamp(std::max(byCount, byError), 0.0, 1.0), "solve (" + name_ + ")");
+    progressShown_ = std::max(progressShown_, std::clamp(std::max(byCount, byError), 0.0, 1.0));
+    progress_->report(progressShown_, "solve (" + name_ + ")");
   }
   record(std::move(r));
 }

@@ -1,0 +1,87 @@
+#include "core/pipeline/pipeline.h"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+#include "core/pipeline/scene_overrides.h"
+
+namespace rt {
+
+Pipeline::Pipeline(std::size_t cachedMatrices) : cache_(cachedMatrices) {}
+
+std::shared_ptr<const CachedFormFactors> Pipeline::formFactors(const Mesh& mesh, const std::string& method,
+                                                               const FormFactorOptions& options,
+                                                               Progress& progress, bool* reused) {
+  progress.report(0.0, "form factors (" + method + ")");
+  return cache_.get(method, mesh, options, progress, reused);
+}
+
+SolveOutcome solveRadiosity(const RadiositySystem& system, const std::string& requested,
+                            SolverOptions options, bool recordHistory, Progress& progress) {
+  SolveOutcome out;
+  out.solverName = requested.empty() ? chooseSolver(system.size()) : requested;
+  std::unique_ptr<Solver> solver = makeSolver(out.solverName);
+  options.recordHistory = recordHistory;
+  solver->setOptions(options);
+  // The solver reports its own progress (by iterations and by residual, never backwards).
+  solver->setProgress(&progress);
+  solver->setObserver([&out](const IterationRecord& r) {
+    out.trace.push_back({r.iteration, r.residual, r.seconds});
+  });
+  progress.report(0.0, "solve (" + out.solverName + ")");
+  const auto start = std::chrono::steady_clock::now();
+  solver->compute(system);
+  out.B = solver->solve();
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (recordHistory) out.history = solver->history();
+  out.status = solver->info();
+  out.iterations = solver->iterations();
+  out.error = solver->error();
+  out.residual = system.relativeResidual(out.B);
+  return out;
+}
+
+RgbField ambientEstimate(const Mesh& mesh) {
+  const Eigen::VectorXd areas = mesh.areas();
+  const double total = areas.sum();
+  RgbField B = mesh.emission;
+  if (total <= 0) return B;
+  for (int c = 0; c < 3; ++c) {
+    const double emitted = mesh.emission.col(c).dot(areas) / total;
+    const double rhoAverage = mesh.reflectance.col(c).dot(areas) / total;
+    const double ambient = emitted / std::max(1e-6, 1.0 - rhoAverage);
+    B.col(c) += mesh.reflectance.col(c) * ambient;
+  }
+  return B;
+}
+
+PipelineOutput Pipeline::run(const Scene& input, const PipelineSettings& settings, Progress& progress) {
+  PipelineOutput out;
+  auto scene = std::make_shared<Scene>(applyOverrides(input, settings.reflectance, settings.lightScale));
+  out.scene = scene;
+  progress.report(0.0, "mesh");
+  auto mesh = std::make_shared<Mesh>(buildMesh(*scene, settings.mesh));
+  out.mesh = mesh;
+  if (progress.cancelled()) throw Cancelled();
+  try {
+    auto cached = formFactors(*mesh, settings.method, settings.formFactors, progress, &out.formFactorsReused);
+    out.F = std::shared_ptr<const FormFactorMatrix>(cached, &cached->F);
+    out.formFactorStats = cached->stats;
+    out.formFactorMethod = settings.method;
+  } catch (const std::invalid_argument& e) {
+    out.note = std::string(e.what()) + ": showing direct light plus an ambient estimate";
+    out.solve.B = ambientEstimate(*mesh);
+    return out;
+  }
+  try {
+    out.solve = solveRadiosity(RadiositySystem::fromMesh(*mesh, *out.F), settings.solver,
+                               settings.solverOptions, settings.recordHistory, progress);
+  } catch (const std::invalid_argument& e) {
+    out.note = std::string(e.what()) + ": showing direct light plus an ambient estimate";
+    out.solve.B = ambientEstimate(*mesh);
+  }
+  return out;
+}
+
+}  // namespace rt

@@ -1,0 +1,79 @@
+// The one pipeline from settings to a solution: apply the overrides, mesh, form factors (one cache, one key:
+// geometry, method and its options, so that RGB and material-only changes never recompute F), solve with the
+// iteration history when asked. The lessons' step runner, the app and the CLI each hold a Pipeline and call
+// it; stages that need more (bounces, benchmarks, refinement) call its pieces.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/formfactor/formfactor_cache.h"
+#include "core/pipeline/pipeline_settings.h"
+#include "core/progress.h"
+#include "core/scene.h"
+#include "core/solvers/radiosity_system.h"
+
+namespace rt {
+
+// One point of a convergence curve (kept for every run; the full B of each iteration only on request).
+struct IterationPoint {
+  int iteration = 0;
+  double residual = 0;
+  double seconds = 0;
+};
+
+struct SolveOutcome {
+  std::string solverName;
+  RgbField B;
+  std::vector<IterationRecord> history;  // every iteration's B; empty unless recordHistory
+  std::vector<IterationPoint> trace;     // the convergence curve
+  SolverStatus status = SolverStatus::InvalidInput;
+  int iterations = 0;
+  double error = 0;     // the solver's own final error (its stopping measure)
+  double residual = 0;  // relative residual ||K B - E|| / ||E|| of the returned B
+  double seconds = 0;
+};
+
+struct PipelineOutput {
+  std::shared_ptr<const Scene> scene;  // with the overrides applied
+  std::shared_ptr<const Mesh> mesh;
+  std::shared_ptr<const FormFactorMatrix> F;  // null when the method is not in this build
+  std::string formFactorMethod;               // the method that computed F (empty without F)
+  FormFactorStats formFactorStats;
+  bool formFactorsReused = false;
+  SolveOutcome solve;
+  std::string note;  // why the result is an approximation, when it is one
+};
+
+class Pipeline {
+ public:
+  explicit Pipeline(std::size_t cachedMatrices = 4);
+
+  // May throw Cancelled and InputError. A form-factor method missing from this build leaves F null, and B
+  // the ambient estimate, with a note.
+  PipelineOutput run(const Scene& scene, const PipelineSettings& settings, Progress& progress = noProgress());
+
+  // F of `method` for this mesh, from the cache when the same geometry, method and options were computed
+  // before. Throws std::invalid_argument for a method this build does not have.
+  std::shared_ptr<const CachedFormFactors> formFactors(const Mesh& mesh, const std::string& method,
+                                                       const FormFactorOptions& options, Progress& progress,
+                                                       bool* reused = nullptr);
+
+  // How many times F was actually computed (the rest came from the cache).
+  int formFactorComputations() const { return static_cast<int>(cache_.misses()); }
+
+ private:
+  FormFactorCache cache_;
+};
+
+// Solves the system by `solverName` (empty: chooseSolver(n)). Throws std::invalid_argument for an unknown
+// solver, Cancelled when progress asks.
+SolveOutcome solveRadiosity(const RadiositySystem& system, const std::string& solverName,
+                            SolverOptions options, bool recordHistory, Progress& progress);
+
+// Direct light plus the classic ambient term: B_i = E_i + rho_i * ambient, ambient = (sum E A / sum A) / (1 -
+// rho_avg). Shown when no form-factor method or solver is available, so that the view is never empty.
+RgbField ambientEstimate(const Mesh& mesh);
+
+}  // namespace rt

@@ -1,0 +1,66 @@
+#include "lesson/step_settings.h"
+
+namespace rt::lesson {
+
+MeshOptions meshOptionsFor(const StepParameters& p) {
+  MeshOptions o;
+  if (p.subdivide) {
+    o.mode = MeshOptions::Mode::Count;
+    o.count = *p.subdivide;
+  } else if (p.maxEdge) {
+    o.mode = MeshOptions::Mode::MaxEdge;
+    o.maxEdge = *p.maxEdge;
+  }
+  return o;
+}
+
+void setMeshOptions(StepParameters& p, const MeshOptions& options) {
+  switch (options.mode) {
+    case MeshOptions::Mode::Count:
+      p.subdivide = options.count;
+      p.maxEdge.reset();
+      break;
+    case MeshOptions::Mode::MaxEdge:
+      p.maxEdge = options.maxEdge;
+      p.subdivide.reset();
+      break;
+    case MeshOptions::Mode::None:
+      p.subdivide.reset();
+      p.maxEdge.reset();
+      break;
+  }
+}
+
+FormFactorOptions formFactorOptionsFor(const StepParameters& p, const std::string& method,
+                                       double sweepValue) {
+  FormFactorOptions o;
+  if (p.resolution) o.hemicubeResolution = *p.resolution;
+  if (p.samples) o.samples = *p.samples;
+  if (p.seed) o.seed = *p.seed;
+  if (sweepValue > 0) o = accuracyKnobOf(method).applied(o, sweepValue);
+  return o;
+}
+
+SolverOptions solverOptionsFor(const StepParameters& p) {
+  SolverOptions o;
+  if (p.tolerance) o.tolerance = *p.tolerance;
+  if (p.iterations) o.maxIterations = *p.iterations;
+  if (p.relaxation) o.relaxation = *p.relaxation;
+  if (p.seed) o.seed = *p.seed;
+  o.ambient = p.ambient;
+  return o;
+}
+
+PipelineSettings settingsFor(const StepParameters& p, const std::string& method) {
+  PipelineSettings s;
+  s.mesh = meshOptionsFor(p);
+  s.method = method;
+  s.formFactors = formFactorOptionsFor(p, method);
+  s.solver = p.solver;
+  s.solverOptions = solverOptionsFor(p);
+  s.reflectance = p.reflectance;
+  s.lightScale = p.lightScale;
+  return s;
+}
+
+}  // namespace rt::lesson
