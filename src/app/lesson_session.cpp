@@ -51,6 +51,11 @@ int LessonLibrary::welcomeIndex() const {
   return lessons_.empty() ? -1 : 0;
 }
 
+int LessonLibrary::stepRuns() const {
+  std::lock_guard lock(runMutex_);
+  return runner_->stepRuns();
+}
+
 int LessonLibrary::formFactorComputations() const {
   std::lock_guard lock(runMutex_);
   return runner_->formFactorComputations();

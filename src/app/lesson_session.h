@@ -42,6 +42,8 @@ class LessonLibrary {
   std::shared_ptr<const lesson::StepResult> computeStep(int lessonIndex, int stepIndex, Progress& progress);
   // How often form factors were computed (the rest came from the cache).
   int formFactorComputations() const;
+  // How many times a step was run by the step runner (a step opened once is run once).
+  int stepRuns() const;
 
  private:
   PipelineResult runOne(const lesson::Lesson& lesson, const lesson::Step& step, Progress& progress);

@@ -123,7 +123,7 @@ class MainWindow : public QMainWindow {
   void setBusy(bool busy);
   void updateNavigation();
   void rememberPosition();
-  void applyStepDisplay(const lesson::Step* step);
+  void applyStepDisplay(const lesson::Step* step);  // from parameters_
   QString exportFileDialog(const QString& title, const QString& filters);
 
   AppOptions options_;

@@ -253,10 +253,11 @@ bool MainWindow::waitUntilIdle(int timeoutMs) {
   return true;
 }
 
+// The display keys as the reader has them now (the step's values until the reader changes one).
 void MainWindow::applyStepDisplay(const lesson::Step* step) {
   viz::SceneViewOptions options = primaryView_->viewOptions();
-  if (step) {
-    const lesson::StepParameters& p = step->parameters;
+  if (step || mode_ == Mode::Scene) {
+    const lesson::StepParameters& p = parameters_;
     options.image.exposure = p.exposure;
     options.image.toneMap = p.toneMap == "reinhard" ? viz::ToneMap::Reinhard : viz::ToneMap::LinearClamp;
     options.image.srgbGamma = p.gamma;
@@ -298,7 +299,7 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   } else {
     secondaryView_->setScene(nullptr, {}, r.camera, false);  // it must not keep a mesh that is about to go
   }
-  if (newStep) applyStepDisplay(step);
+  applyStepDisplay(step);
   // Steps about form factors (no solution to show) colour the scene by the row of F of their source element.
   const bool formFactorStage =
       step && stepResult && r.F && stepResult->B.rows() == 0 &&
@@ -341,7 +342,10 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   if (step && stepResult) {
     try {
       const auto& lesson = library_->lessons()[static_cast<std::size_t>(lesson_)];
-      if (figures_->showStep(lesson, *step, *stepResult) > 0 && newStep) tabs_->setCurrentWidget(figures_);
+      // The figures are drawn with the reader's parameters (a matrix kind, a display key), as the step ran.
+      lesson::Step shown = *step;
+      shown.parameters = parameters_;
+      if (figures_->showStep(lesson, shown, *stepResult) > 0 && newStep) tabs_->setCurrentWidget(figures_);
     } catch (const std::exception& e) {
       showError(tr("The step's figures could not be drawn: %1").arg(e.what()));
     }

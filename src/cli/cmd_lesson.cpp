@@ -9,6 +9,8 @@
 #include "core/input_error.h"
 #include "lesson/book.h"
 #include "lesson/lesson_loader.h"
+#include "lesson/step_keys.h"
+#include "lesson/step_numbers.h"
 #include "lesson/step_runner.h"
 #ifdef RT_HAVE_VIZ
 #include "viz/lesson_figures.h"
@@ -116,6 +118,11 @@ void render(const LessonArguments& a, const std::string& output, bool quick, con
     options.outputDir = (std::filesystem::path(output) / l.id).string();
     lesson::StepRunner runner(folders.scenes, options);
     lesson::RenderedLesson page = renderedHeader(l);
+    // The numbers behind every step, for checking against the app and for answer keys.
+    std::filesystem::create_directories(options.outputDir);
+    std::ofstream numbers(std::filesystem::path(options.outputDir) / "numbers.json");
+    numbers << "[\n";
+    bool firstNumbers = true;
     for (const auto& step : l.steps) {
       progress.report(static_cast<double>(step.index) / static_cast<double>(l.steps.size()), l.id);
       lesson::StepResult result;
@@ -128,6 +135,9 @@ void render(const LessonArguments& a, const std::string& output, bool quick, con
         for (const auto& f : step.figureFiles()) skipped << l.id << "/" << f << "\n";
         continue;
       }
+      numbers << (firstNumbers ? "" : ",\n") << "{\"step\": " << step.index
+              << ", \"numbers\": " << lesson::stepNumbersJson(result) << "}";
+      firstNumbers = false;
       lesson::RenderedStep s{step.title, lesson::resolvedText(l, step, result), {}};
       try {
 #ifdef RT_HAVE_VIZ
@@ -141,6 +151,7 @@ void render(const LessonArguments& a, const std::string& output, bool quick, con
       }
       page.steps.push_back(std::move(s));
     }
+    numbers << "\n]\n";
     rendered.push_back(std::move(page));
   }
   progress.finish();
@@ -165,6 +176,11 @@ void addLessonCommand(CLI::App& app) {
   auto* listCommand = command->add_subcommand("list", "The lessons in book order: order, id, title");
   listCommand->add_option("--root", listArgs->root, "Folder holding lessons/ and scenes/");
   listCommand->callback([listArgs] { list(*listArgs); });
+
+  auto* keysCommand = command->add_subcommand(
+      "keys",
+      "The table of step keys (type, range, default, control, stages) as Markdown, as the docs show it");
+  keysCommand->callback([] { std::cout << lesson::stepKeyTableMarkdown(); });
 
   auto checkArgs = std::make_shared<LessonArguments>();
   auto run = std::make_shared<bool>(false);

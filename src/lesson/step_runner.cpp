@@ -67,6 +67,7 @@ std::shared_ptr<const FormFactorMatrix> StepRunner::formFactors(const Mesh& mesh
 }
 
 StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& progress) {
+  ++stepRuns_;
   StepResult result;
   detail::StageContext c{lesson, step, step.parameters, *this, progress, result, {}, {}};
   if (options_.quick) quickCaps(c.parameters);

@@ -42,6 +42,8 @@ class StepRunner {
 
   // How many times F was actually computed (the rest came from the cache).
   int formFactorComputations() const { return pipeline_.formFactorComputations(); }
+  // How many steps were run (each opening of a step in the app is one).
+  int stepRuns() const { return stepRuns_; }
   const RunOptions& options() const { return options_; }
   Pipeline& pipeline() { return pipeline_; }
 
@@ -58,6 +60,7 @@ class StepRunner {
   RunOptions options_;
   std::map<std::string, Scene> scenes_;
   Pipeline pipeline_{16};
+  int stepRuns_ = 0;
 };
 
 // The text of a step with its placeholders filled in from the result (InputError at the placeholder's line

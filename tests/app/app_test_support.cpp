@@ -71,6 +71,7 @@ void typeInto(QWidget* editor, const QString& text) {
 
 void waitForApply() {
   QTest::qWait(450);  // the panel applies 350 ms after the last edit
+  QTest::qWait(50);   // and the views repaint
 }
 
 QRect areaOf(QWidget* window, QWidget* widget) {
