@@ -27,10 +27,15 @@ double entryOfTwoByTwoCsv(const std::string& path, int row, int column) {
   return NAN;
 }
 
+// Whether the CLI's list of form-factor methods (the --method line of its help) names `method`.
 bool methodAvailable(const std::string& method) {
   std::string help;
   runCommand(cliPath() + " formfactors --help", &help);
-  return help.find(method) != std::string::npos;
+  const auto line = help.find("Form-factor method:");
+  if (line == std::string::npos) return false;
+  const std::string methods = help.substr(line, help.find('\n', line) - line);
+  return methods.find(" " + method + ",") != std::string::npos ||
+         methods.find(" " + method + "\n") != std::string::npos || methods.ends_with(" " + method);
 }
 
 TEST(FormFactorsCommand, PrintsSummaryAndDiagnosticsAndWritesTheMatrix) {
