@@ -11,6 +11,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/setting_options.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/solvers/direct_solver.h"
 #include "core/solvers/solver.h"
@@ -186,7 +187,8 @@ void addBenchSolversCommand(CLI::App& bench) {
                                        "iterations -> DIR/solvers.csv and charts");
   command->add_option("--scene", a->scene, "Scene file")->capture_default_str()->check(CLI::ExistingFile);
   a->mesh.add(*command);
-  command->add_option("--formfactors", a->formFactors, "Form-factor method")->capture_default_str();
+  auto* method = addSettingOption(*command, "method", a->formFactors)->default_str(a->formFactors);
+  addDeprecatedAlias(*command, "--formfactors", method);
   command->add_option("--output", a->output, "Output folder")->capture_default_str();
   command->add_option("--tolerance", a->tolerance, "Tolerance of the deterministic solvers")
       ->capture_default_str();

@@ -8,6 +8,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/setting_options.h"
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/formfactor/hemicube.h"
@@ -36,14 +37,15 @@ struct FigureArguments {
   int width = 1200, height = 900;
   double dpi = 96;
   MeshArguments mesh;
-  std::string formFactors = "analytic", referenceFormFactors, solver;
+  std::string formFactors = kDefaultFormFactorMethod, referenceFormFactors, solver;
   int resolution = 128, samples = 16, maxIterations = 0;
   // scene view
   std::string colour = "radiosity", toneMap = "linear", colourMap = "viridis", errorMeasure = "relative";
   double exposure = 0;
   bool smooth = false, edges = false, noGamma = false, logScale = false, noColourBar = false;
   // element choice and the other views
-  int element = -1, target = -1, row = -1, column = -1, channel = 1;
+  int element = -1, target = -1, row = -1, column = -1;
+  std::string channel = "g";
   std::string matrix = "F", part = "auto", xAxis = "iteration";
   std::vector<std::string> solvers;
   std::string input;  // runtime-error: a timing table measured earlier
@@ -169,7 +171,7 @@ void sceneFigure(const Computed& c, const FigureArguments& a, CLI::App& command)
     } else if (o.colouring == viz::SceneColouring::Error) {
       // Against the direct solution with the reference form factors: defaults show the error of 3 Jacobi
       // sweeps.
-      const bool defaults = command.count("--solver") == 0 && command.count("--max-iterations") == 0 &&
+      const bool defaults = command.count("--solver") == 0 && command.count("--iterations") == 0 &&
                             command.count("--reference-formfactors") == 0;
       const std::string solver =
           defaults ? "jacobi" : (a.solver.empty() ? chooseSolver(c.mesh.size()) : a.solver);
@@ -229,7 +231,7 @@ void matrixFigure(const Computed& c, const FigureArguments& a) {
     o.title = "F (" + a.formFactors + ") - F (" + a.referenceFormFactors + ")";
     o.valueLabel = "dF_ij";
   } else if (a.matrix == "K") {
-    const int channel = std::clamp(a.channel, 0, 2);
+    const int channel = channelIndex(a.channel);
     shown = Eigen::MatrixXd::Identity(F.rows(), F.cols()) -
             c.mesh.reflectance.col(channel).asDiagonal() * Eigen::MatrixXd(F);
     o.title = std::string("System matrix K = I - diag(rho) F (") + "RGB"[channel] + ")";
@@ -516,17 +518,21 @@ void addFigureCommand(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(24.0, 1200.0));
   a->mesh.add(*command);
-  command->add_option("--formfactors", a->formFactors, "Form-factor method")->capture_default_str();
+  addDeprecatedAlias(
+      *command, "--formfactors",
+      addSettingOption(*command, "method", a->formFactors)->default_str(kDefaultFormFactorMethod));
   command->add_option(
       "--reference-formfactors", a->referenceFormFactors,
       "formfactor/matrix: show the difference to this method; scene --colour error: the reference");
-  command->add_option("--solver", a->solver, "Solver (default: chosen by size)");
+  addSettingOption(*command, "solver", a->solver)->default_str("chosen by the scene's size");
   command
       ->add_option("--solvers", a->solvers,
                    "convergence, runtime-error: solvers to compare (comma-separated)")
       ->delimiter(',');
-  command->add_option("--max-iterations", a->maxIterations, "Iteration cap of the solvers (0: view default)");
-  command->add_option("--resolution", a->resolution, "Hemicube resolution")->capture_default_str();
+  addDeprecatedAlias(
+      *command, "--max-iterations",
+      addSettingOption(*command, "iterations", a->maxIterations)->default_str("the view's own"));
+  addSettingOption(*command, "resolution", a->resolution);
   command->add_option("--samples", a->samples, "Ray samples (rays view, ray-cast methods)")
       ->capture_default_str();
   command
@@ -539,9 +545,7 @@ void addFigureCommand(CLI::App& app) {
                    "(|B - B_ref| / the brightest reflecting B_ref)")
       ->capture_default_str()
       ->check(CLI::IsMember({"relative", "absolute", "brightest"}));
-  command->add_option("--tone-map", a->toneMap, "linear or reinhard")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"linear", "reinhard"}));
+  addSettingOption(*command, "tone-map", a->toneMap);
   command->add_option("--exposure", a->exposure, "Exposure multiplier (0 = automatic)")
       ->capture_default_str();
   command->add_flag("--smooth", a->smooth, "Per-vertex interpolated shading");
@@ -555,7 +559,8 @@ void addFigureCommand(CLI::App& app) {
   command->add_option("--matrix", a->matrix, "matrix: F or K")
       ->capture_default_str()
       ->check(CLI::IsMember({"F", "K"}));
-  command->add_option("--channel", a->channel, "matrix K: 0 red, 1 green, 2 blue")->capture_default_str();
+  command->add_option("--channel", a->channel, "matrix K: the colour channel, r, g or b")
+      ->capture_default_str();
   command->add_option("--row", a->row, "matrix: highlighted row");
   command->add_option("--column", a->column, "matrix: highlighted column");
   command

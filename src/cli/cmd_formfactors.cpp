@@ -10,6 +10,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/setting_options.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/input_error.h"
 #include "core/io/matrix_export.h"
@@ -20,7 +21,7 @@ namespace {
 
 struct FormFactorsArguments {
   std::string scene;
-  std::string method = "analytic";
+  std::string method = kDefaultFormFactorMethod;
   MeshArguments mesh;
   FormFactorOptions options;
   bool enforceReciprocity = false;
@@ -92,7 +93,9 @@ void addFormFactorsCommand(CLI::App& app) {
   command->add_option("scene", arguments->scene, "Scene file (.json or .obj)")->required();
   std::string methods;
   for (const std::string& name : formFactorMethodNames()) methods += (methods.empty() ? "" : ", ") + name;
-  command->add_option("--method", arguments->method, "Form-factor method: " + methods)->capture_default_str();
+  addSettingOption(*command, "method", arguments->method)
+      ->default_str(kDefaultFormFactorMethod)
+      ->description("Form-factor method: " + methods);
   arguments->mesh.add(*command);
   command
       ->add_option("--resolution", arguments->options.hemicubeResolution,

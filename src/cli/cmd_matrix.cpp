@@ -6,6 +6,7 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/setting_options.h"
 #include "core/assembly.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/io/matrix_export.h"
@@ -16,16 +17,13 @@ namespace {
 
 struct MatrixArguments {
   std::string scene;
-  std::string formFactors = "analytic";
+  std::string formFactors = kDefaultFormFactorMethod;
+  FormFactorOptions formFactorOptions;
   std::string output;
   std::string what = "K";
   std::string channel = "r";
   MeshArguments mesh;
 };
-
-int channelIndex(const std::string& c) {
-  return c == "r" ? 0 : c == "g" ? 1 : 2;
-}
 
 void run(const MatrixArguments& a) {
   const Scene scene = loadSceneReportingWarnings(a.scene);
@@ -41,7 +39,7 @@ void run(const MatrixArguments& a) {
                          "; use .csv, .mtx or .npy instead (or a coarser mesh, e.g. --no-subdivide)");
   }
   ProgressLine progress;
-  const FormFactorMatrix F = computeFormFactorsReporting(mesh, a.formFactors, FormFactorOptions{}, progress);
+  const FormFactorMatrix F = computeFormFactorsReporting(mesh, a.formFactors, a.formFactorOptions, progress);
 
   const RadiositySystem system = RadiositySystem::fromMesh(mesh, F);
   const int c = channelIndex(a.channel);
@@ -49,7 +47,7 @@ void run(const MatrixArguments& a) {
 
   const SpectralRadiusEstimate radius = spectralRadius(F, rho);
   std::printf("elements: %d\n", n);
-  std::printf("channel: %s\n", a.channel.c_str());
+  std::printf("channel: %c\n", "rgb"[c]);
   std::printf("fill of F: %.4f (%s storage for K)\n", fillFraction(F),
               fillFraction(F) < kSparseFillThreshold ? "sparse" : "dense");
   std::printf("spectral radius of rho F: %.10g%s\n", radius.value,
@@ -88,9 +86,9 @@ void addMatrixCommand(CLI::App& app) {
       "Export F, K = I - diag(rho) F, rho, E or B (csv, mtx, npy, tex); print spectral radius and condition");
   command->add_option("scene", a->scene, "Scene file (.json or .obj)")->required()->check(CLI::ExistingFile);
   a->mesh.add(*command);
-  command
-      ->add_option("--formfactors", a->formFactors, "Form-factor method (see `radiosity formfactors --help`)")
-      ->capture_default_str();
+  addDeprecatedAlias(
+      *command, "--formfactors",
+      addSettingOption(*command, "method", a->formFactors)->default_str(kDefaultFormFactorMethod));
   command
       ->add_option(
           "--output", a->output,
@@ -100,9 +98,11 @@ void addMatrixCommand(CLI::App& app) {
   command->add_option("--what", a->what, "F, K (one channel), rho or E (n x 3), B (n x 3, direct solution)")
       ->capture_default_str()
       ->check(CLI::IsMember({"F", "K", "rho", "E", "B"}));
-  command->add_option("--channel", a->channel, "Colour channel of K and of the spectral radius")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"r", "g", "b"}));
+  addSettingOption(*command, "resolution", a->formFactorOptions.hemicubeResolution);
+  addSettingOption(*command, "samples", a->formFactorOptions.samples);
+  addSettingOption(*command, "seed", a->formFactorOptions.seed);
+  command->add_option("--channel", a->channel, "Colour channel of K and of the spectral radius: r, g or b")
+      ->capture_default_str();
   command->callback([a] { run(*a); });
 }
 

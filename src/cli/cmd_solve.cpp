@@ -8,11 +8,15 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/output_paths.h"
+#include "cli/setting_options.h"
 #include "core/formfactor/formfactor_method.h"
+#include "core/pipeline/pipeline.h"
 #include "core/refine/refine.h"
 #include "core/solvers/row_providers.h"
 #include "core/solvers/shooting_solvers.h"
 #include "core/solvers/solver.h"
+#include "lesson/lesson_parser.h"
 #ifdef RT_HAVE_VIZ
 #include "viz/scene_image.h"
 #endif
@@ -22,9 +26,8 @@ namespace {
 
 struct SolveArguments {
   std::string scene;
-  std::string solver;  // empty: chosen by size
-  std::string formFactors =
-      "analytic-visibility";  // exact unoccluded F, ray-cast visibility where a shaft is blocked
+  std::string solver;                                  // empty: chosen by size
+  std::string formFactors = kDefaultFormFactorMethod;  // handles occluders
   double tolerance = 1e-6;
   int maxIterations = 1000;
   std::uint64_t seed = 1;
@@ -42,6 +45,7 @@ struct SolveArguments {
   // Shooting without the n x n matrix: each shooter's row of F is computed when it shoots.
   bool noMatrix = false;
   bool formFactorsGiven = false;
+  std::string legacyFormFactors;  // --formfactors, the old spelling of --method
   MeshArguments mesh;
   // Refining meshers (docs/meshing.md): empty = the uniform mesh of MeshArguments.
   std::string refineMode;
@@ -97,13 +101,13 @@ void runRefined(const SolveArguments& a, const Scene& scene) {
 }
 
 // Status check and outputs shared by both ways of solving.
-void finish(const SolveArguments& a, const Scene& scene, const Mesh& mesh, const Solver& solver,
+void finish(const SolveArguments& a, const Scene& scene, const Mesh& mesh, SolverStatus status, double error,
             const RgbField& B) {
-  if (solver.info() == SolverStatus::NoConvergence)
-    std::cerr << "warning: not converged: the iteration cap (--max-iterations " << a.maxIterations
-              << ") was reached with relative residual " << solver.error() << "\n";
-  if (solver.info() != SolverStatus::Success && solver.info() != SolverStatus::NoConvergence)
-    throw std::runtime_error("the solver failed: " + toString(solver.info()));
+  if (status == SolverStatus::NoConvergence)
+    std::cerr << "warning: not converged: the iteration cap (--iterations " << a.maxIterations
+              << ") was reached with relative residual " << error << "\n";
+  if (status != SolverStatus::Success && status != SolverStatus::NoConvergence)
+    throw std::runtime_error("the solver failed: " + toString(status));
   if (!a.output.empty()) {
     writeRadiosityCsv(scene, mesh, B, a.output);
     std::cerr << "radiosity written to " << a.output << "\n";
@@ -111,41 +115,34 @@ void finish(const SolveArguments& a, const Scene& scene, const Mesh& mesh, const
   if (!a.image.empty()) writeImage(a, scene, mesh, B);
 }
 
-// The solver the arguments name, with its options and a verbose or progress-line observer.
-std::unique_ptr<Solver> makeConfiguredSolver(const SolveArguments& a, const std::string& solverName,
-                                             ProgressLine& progress) {
-  auto solver = makeSolver(solverName);
+SolverOptions solverOptions(const SolveArguments& a) {
   SolverOptions options;
   options.tolerance = a.tolerance;
   options.maxIterations = a.maxIterations;
   options.seed = a.seed;
   options.ambient = a.ambient;
   options.recordHistory = false;
-  solver->setOptions(options);
-  solver->setProgress(&progress);
-  solver->setObserver([&a, &progress, solverName](const IterationRecord& r) {
-    if (a.verbose) {
-      std::fprintf(stderr, "iteration %d: residual %.6e, unshot power %.6e%s\n", r.iteration, r.residual,
-                   r.unshotPower, r.shooter >= 0 ? (", shooter " + std::to_string(r.shooter)).c_str() : "");
-    } else if (a.maxIterations > 0) {
-      progress.report(std::min(1.0, static_cast<double>(r.iteration) / a.maxIterations),
-                      "solve (" + solverName + ")");
-    }
-  });
-  return solver;
+  return options;
+}
+
+// --verbose: one line per iteration.
+void printIteration(const IterationRecord& r) {
+  std::fprintf(stderr, "iteration %d: residual %.6e, unshot power %.6e%s\n", r.iteration, r.residual,
+               r.unshotPower, r.shooter >= 0 ? (", shooter " + std::to_string(r.shooter)).c_str() : "");
 }
 
 // --no-matrix: the shooting solvers ask for the shooter's row of F when it shoots; nothing n x n is stored.
 const char* noMatrixProblem(const std::string& solverName, const std::string& formFactors) {
   if (solverName != "southwell" && solverName != "progressive")
-    return "--no-matrix needs a shooting method: --method southwell or --method progressive";
+    return "--no-matrix needs a shooting solver: --solver southwell or --solver progressive";
   const auto methods = rowProviderMethods();
   if (std::find(methods.begin(), methods.end(), formFactors) == methods.end())
-    return "--no-matrix computes rows at the shooter: --formfactors hemicube or --formfactors raycast";
+    return "--no-matrix computes rows at the shooter: --method hemicube or --method raycast";
   return nullptr;
 }
 
 void run(const SolveArguments& a) {
+  checkOutputPaths({a.output, a.image});  // before the expensive part, not after it
   const Scene scene = loadSceneReportingWarnings(a.scene);
   if (!a.refineMode.empty()) return runRefined(a, scene);
   const std::string solverName = !a.solver.empty() ? a.solver
@@ -162,21 +159,17 @@ void run(const SolveArguments& a) {
   ffOptions.hemicubeResolution = a.resolution;
   ffOptions.samples = a.samples;
   ffOptions.seed = a.seed;
-  FormFactorMatrix F;
-  RadiositySystem system;
+  const std::string name = solverName.empty() ? chooseSolver(mesh.size()) : solverName;
   if (a.noMatrix) {
+    RadiositySystem system;
     system.reflectance = mesh.reflectance;
     system.emission = mesh.emission;
     system.areas = mesh.areas();
     std::cerr << "form factors (" << formFactors << "): one row per shot, no matrix stored\n";
-  } else {
-    F = computeFormFactorsReporting(mesh, formFactors, ffOptions, progress);
-    system = RadiositySystem::fromMesh(mesh, F);
-  }
-
-  const std::string name = solverName.empty() ? chooseSolver(mesh.size()) : solverName;
-  auto solver = makeConfiguredSolver(a, name, progress);
-  if (a.noMatrix) {
+    auto solver = makeSolver(name);
+    solver->setOptions(solverOptions(a));
+    solver->setProgress(&progress);
+    if (a.verbose) solver->setObserver(printIteration);
     std::size_t rows = 0;
     const FormFactorRowProvider provider = makeRowProvider(formFactors, mesh, ffOptions);
     dynamic_cast<ShootingSolver&>(*solver).setRowProvider([&rows, provider](int i, Eigen::VectorXd& row) {
@@ -188,14 +181,23 @@ void run(const SolveArguments& a) {
     std::cerr << "solve (" << name << ", rows on demand): " << toString(solver->info()) << " after "
               << solver->iterations() << " shots, " << rows << " rows computed, unshot residual "
               << solver->error() << "\n";
-    finish(a, scene, mesh, *solver, B);
+    finish(a, scene, mesh, solver->info(), solver->error(), B);
     return;
   }
-  const RgbField B = solver->compute(system).solve();
+  // The pipeline's form factors and solve, as the lessons and the app compute them.
+  Pipeline pipeline;
+  const auto cached = pipeline.formFactors(mesh, formFactors, ffOptions, progress);
   progress.finish();
-  std::cerr << "solve (" << name << "): " << toString(solver->info()) << " after " << solver->iterations()
-            << " iterations, relative residual " << system.relativeResidual(B) << "\n";
-  finish(a, scene, mesh, *solver, B);
+  std::cerr << formFactors << ": " << cached->stats.summary() << "\n";
+  const SolveOutcome outcome =
+      solveRadiosity(RadiositySystem::fromMesh(mesh, cached->F), name, solverOptions(a), false, progress,
+                     a.verbose ? std::function<void(const IterationRecord&)>(printIteration)
+                               : std::function<void(const IterationRecord&)>());
+  progress.finish();
+  std::cerr << "solve (" << name << "): " << toString(outcome.status) << " after " << outcome.iterations
+            << " " << (outcome.iterations == 1 ? "iteration" : "iterations") << ", relative residual "
+            << outcome.residual << "\n";
+  finish(a, scene, mesh, outcome.status, outcome.error, outcome.B);
 }
 
 }  // namespace
@@ -205,24 +207,28 @@ void addSolveCommand(CLI::App& app) {
   auto* command =
       app.add_subcommand("solve", "Solve the radiosity system of a scene; write B.csv and/or an image");
   command->add_option("scene", a->scene, "Scene file (.json or .obj)")->required()->check(CLI::ExistingFile);
-  command->add_option(
-      "--method", a->solver,
-      "Solver: direct, jacobi, gauss-seidel, southwell, progressive, bounces, stochastic-jacobi, "
-      "random-walk (default: direct for small scenes, gauss-seidel otherwise)");
-  auto* formFactors = command
-                          ->add_option("--formfactors", a->formFactors,
-                                       "Form-factor method (see `radiosity formfactors --help`)")
-                          ->capture_default_str();
-  command->add_option("--tolerance", a->tolerance, "Relative residual (or unshot power) to stop at")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  command->add_option("--max-iterations", a->maxIterations, "Iteration cap")->capture_default_str();
-  command->add_option("--seed", a->seed, "Seed of the stochastic methods")->capture_default_str();
-  command->add_option("--resolution", a->resolution, "Hemicube resolution")->capture_default_str();
+  addSettingOption(*command, "solver", a->solver)
+      ->default_str("direct for small scenes, gauss-seidel otherwise");
+  auto* formFactors =
+      addSettingOption(*command, "method", a->formFactors)->default_str(kDefaultFormFactorMethod);
+  // It used to name the solver: a solver's name is still taken (with a note), anything else is checked below.
+  formFactors->get_validator(kTableCheck)->active(false);
+  // The old spelling of the form-factor method, kept apart: old command lines put the solver in --method.
   command
-      ->add_option("--samples", a->samples,
-                   "Ray-cast samples per pair / Monte Carlo rays per element / hybrid rays per 1 % of F")
-      ->capture_default_str();
+      ->add_option_function<std::string>(
+          "--formfactors",
+          [a](const std::string& value) {
+            std::cerr << "radiosity: --formfactors is deprecated, use --method\n";
+            a->legacyFormFactors = value;
+          },
+          "Deprecated spelling of --method")
+      ->group("");
+  addSettingOption(*command, "tolerance", a->tolerance);
+  addDeprecatedAlias(*command, "--max-iterations",
+                     addSettingOption(*command, "iterations", a->maxIterations));
+  addSettingOption(*command, "seed", a->seed);
+  addSettingOption(*command, "resolution", a->resolution);
+  addSettingOption(*command, "samples", a->samples);
   command->add_flag("--ambient", a->ambient, "progressive: show B plus the ambient term");
   command->add_flag("--no-matrix", a->noMatrix,
                     "southwell/progressive: compute each shooter's row of F when it shoots (--formfactors "
@@ -234,14 +240,10 @@ void addSolveCommand(CLI::App& app) {
                       "Render the solved scene from its camera to a PNG (needs an X server)");
   command->add_option("--width", a->width, "Image width")->capture_default_str();
   command->add_option("--height", a->height, "Image height")->capture_default_str();
-  command->add_option("--exposure", a->exposure, "Exposure multiplier (0 = automatic)")
-      ->capture_default_str();
-  command->add_option("--tonemap", a->toneMap, "linear or reinhard")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"linear", "reinhard"}));
-  command->add_flag("--smooth", a->smooth,
-                    "Interpolate radiosity at vertices (Gouraud) instead of flat elements");
-  command->add_flag("--edges", a->edges, "Draw the mesh edges");
+  addSettingOption(*command, "exposure", a->exposure);
+  addDeprecatedAlias(*command, "--tonemap", addSettingOption(*command, "tone-map", a->toneMap));
+  addSettingFlag(*command, "smooth", a->smooth);
+  addSettingFlag(*command, "edges", a->edges);
   command->add_option("--mesh", a->refineMode, "Refining mesher instead of a uniform mesh (docs/meshing.md)")
       ->check(CLI::IsMember({"uniform", "adaptive", "discontinuity", "hierarchical"}));
   command->add_option("--initial-edge", a->refine.initialMaxEdge,
@@ -259,6 +261,22 @@ void addSolveCommand(CLI::App& app) {
   command->add_flag("--verbose", a->verbose, "One line per iteration instead of a progress line");
   command->callback([a, formFactors] {
     a->formFactorsGiven = formFactors->count() > 0;
+    // `solve --method` used to name the solver: a solver's name there still works, with a note.
+    const auto& methods = lesson::knownMethods();
+    if (!isSolverName(a->formFactors) &&
+        std::find(methods.begin(), methods.end(), a->formFactors) == methods.end())
+      throw CLI::ValidationError("--method", "unknown form-factor method '" + a->formFactors + "'");
+    if (isSolverName(a->formFactors)) {
+      std::cerr << "radiosity: --method names the form-factor method now; use --solver " << a->formFactors
+                << "\n";
+      a->solver = a->formFactors;
+      a->formFactors = kDefaultFormFactorMethod;
+      a->formFactorsGiven = false;
+    }
+    if (!a->legacyFormFactors.empty()) {
+      a->formFactors = a->legacyFormFactors;
+      a->formFactorsGiven = true;
+    }
     run(*a);
   });
 }

@@ -84,7 +84,8 @@ TEST(Interaction, ReplayShowsEachRecordedIteration) {
   player->setSpeed(100);
   player->setCurrent(0);
   player->play();
-  QTest::qWait(200);
+  // The clock ticks on the event loop: give it time on a busy machine.
+  for (int waited = 0; waited < 5000 && player->current() == 0; waited += 50) QTest::qWait(50);
   player->pause();
   EXPECT_GT(player->current(), 0);
 }

@@ -18,7 +18,8 @@ std::shared_ptr<const CachedFormFactors> Pipeline::formFactors(const Mesh& mesh,
 }
 
 SolveOutcome solveRadiosity(const RadiositySystem& system, const std::string& requested,
-                            SolverOptions options, bool recordHistory, Progress& progress) {
+                            SolverOptions options, bool recordHistory, Progress& progress,
+                            const std::function<void(const IterationRecord&)>& observer) {
   SolveOutcome out;
   out.solverName = requested.empty() ? chooseSolver(system.size()) : requested;
   std::unique_ptr<Solver> solver = makeSolver(out.solverName);
@@ -26,8 +27,9 @@ SolveOutcome solveRadiosity(const RadiositySystem& system, const std::string& re
   solver->setOptions(options);
   // The solver reports its own progress (by iterations and by residual, never backwards).
   solver->setProgress(&progress);
-  solver->setObserver([&out](const IterationRecord& r) {
+  solver->setObserver([&out, &observer](const IterationRecord& r) {
     out.trace.push_back({r.iteration, r.residual, r.seconds});
+    if (observer) observer(r);
   });
   progress.report(0.0, "solve (" + out.solverName + ")");
   const auto start = std::chrono::steady_clock::now();

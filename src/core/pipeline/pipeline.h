@@ -4,6 +4,7 @@
 // it; stages that need more (bounces, benchmarks, refinement) call its pieces.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -67,10 +68,11 @@ class Pipeline {
   FormFactorCache cache_;
 };
 
-// Solves the system by `solverName` (empty: chooseSolver(n)). Throws std::invalid_argument for an unknown
-// solver, Cancelled when progress asks.
+// Solves the system by `solverName` (empty: chooseSolver(n)); `observer`, when given, sees every iteration
+// (the CLI's --verbose). Throws std::invalid_argument for an unknown solver, Cancelled when progress asks.
 SolveOutcome solveRadiosity(const RadiositySystem& system, const std::string& solverName,
-                            SolverOptions options, bool recordHistory, Progress& progress);
+                            SolverOptions options, bool recordHistory, Progress& progress,
+                            const std::function<void(const IterationRecord&)>& observer = {});
 
 // Direct light plus the classic ambient term: B_i = E_i + rho_i * ambient, ambient = (sum E A / sum A) / (1 -
 // rho_avg). Shown when no form-factor method or solver is available, so that the view is never empty.
