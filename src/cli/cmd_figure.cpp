@@ -37,7 +37,7 @@ struct FigureArguments {
   int width = 1200, height = 900;
   double dpi = 96;
   MeshArguments mesh;
-  std::string formFactors = kDefaultFormFactorMethod, referenceFormFactors, solver;
+  std::string formFactors = defaultFormFactorMethod(), referenceFormFactors, solver;
   int resolution = 128, samples = 16, maxIterations = 0;
   // scene view
   std::string colour = "radiosity", toneMap = "linear", colourMap = "viridis", errorMeasure = "relative";
@@ -520,7 +520,7 @@ void addFigureCommand(CLI::App& app) {
   a->mesh.add(*command);
   addDeprecatedAlias(
       *command, "--formfactors",
-      addSettingOption(*command, "method", a->formFactors)->default_str(kDefaultFormFactorMethod));
+      addSettingOption(*command, "method", a->formFactors)->default_str(defaultFormFactorMethod()));
   command->add_option(
       "--reference-formfactors", a->referenceFormFactors,
       "formfactor/matrix: show the difference to this method; scene --colour error: the reference");

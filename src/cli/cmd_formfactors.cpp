@@ -21,7 +21,7 @@ namespace {
 
 struct FormFactorsArguments {
   std::string scene;
-  std::string method = kDefaultFormFactorMethod;
+  std::string method = defaultFormFactorMethod();
   MeshArguments mesh;
   FormFactorOptions options;
   bool enforceReciprocity = false;
@@ -94,7 +94,7 @@ void addFormFactorsCommand(CLI::App& app) {
   std::string methods;
   for (const std::string& name : formFactorMethodNames()) methods += (methods.empty() ? "" : ", ") + name;
   addSettingOption(*command, "method", arguments->method)
-      ->default_str(kDefaultFormFactorMethod)
+      ->default_str(defaultFormFactorMethod())
       ->description("Form-factor method: " + methods);
   arguments->mesh.add(*command);
   command

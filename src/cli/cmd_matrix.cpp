@@ -17,7 +17,7 @@ namespace {
 
 struct MatrixArguments {
   std::string scene;
-  std::string formFactors = kDefaultFormFactorMethod;
+  std::string formFactors = defaultFormFactorMethod();
   FormFactorOptions formFactorOptions;
   std::string output;
   std::string what = "K";
@@ -88,7 +88,7 @@ void addMatrixCommand(CLI::App& app) {
   a->mesh.add(*command);
   addDeprecatedAlias(
       *command, "--formfactors",
-      addSettingOption(*command, "method", a->formFactors)->default_str(kDefaultFormFactorMethod));
+      addSettingOption(*command, "method", a->formFactors)->default_str(defaultFormFactorMethod()));
   command
       ->add_option(
           "--output", a->output,

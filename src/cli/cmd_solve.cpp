@@ -26,8 +26,8 @@ namespace {
 
 struct SolveArguments {
   std::string scene;
-  std::string solver;                                  // empty: chosen by size
-  std::string formFactors = kDefaultFormFactorMethod;  // handles occluders
+  std::string solver;                                   // empty: chosen by size
+  std::string formFactors = defaultFormFactorMethod();  // handles occluders
   double tolerance = 1e-6;
   int maxIterations = 1000;
   std::uint64_t seed = 1;
@@ -210,7 +210,7 @@ void addSolveCommand(CLI::App& app) {
   addSettingOption(*command, "solver", a->solver)
       ->default_str("direct for small scenes, gauss-seidel otherwise");
   auto* formFactors =
-      addSettingOption(*command, "method", a->formFactors)->default_str(kDefaultFormFactorMethod);
+      addSettingOption(*command, "method", a->formFactors)->default_str(defaultFormFactorMethod());
   // It used to name the solver: a solver's name is still taken (with a note), anything else is checked below.
   formFactors->get_validator(kTableCheck)->active(false);
   // The old spelling of the form-factor method, kept apart: old command lines put the solver in --method.
@@ -270,7 +270,7 @@ void addSolveCommand(CLI::App& app) {
       std::cerr << "radiosity: --method names the form-factor method now; use --solver " << a->formFactors
                 << "\n";
       a->solver = a->formFactors;
-      a->formFactors = kDefaultFormFactorMethod;
+      a->formFactors = defaultFormFactorMethod();
       a->formFactorsGiven = false;
     }
     if (!a->legacyFormFactors.empty()) {

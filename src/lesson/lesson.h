@@ -68,11 +68,11 @@ struct CameraOverride {
 
 // The parameters of a step. Unset optionals mean "the method's or solver's default".
 struct StepParameters {
-  std::string method = "analytic";   // form-factor method
-  std::vector<std::string> methods;  // compare / benchmark / exact: several methods
-  std::string reference;             // exact / benchmark: the method errors are measured against
-  std::optional<int> resolution;     // hemicube resolution
-  std::optional<int> samples;        // raycast / montecarlo samples
+  std::string method = "analytic-visibility";  // form-factor method (handles occluders)
+  std::vector<std::string> methods;            // compare / benchmark / exact: several methods
+  std::string reference;                       // exact / benchmark: the method errors are measured against
+  std::optional<int> resolution;               // hemicube resolution
+  std::optional<int> samples;                  // raycast / montecarlo samples
   std::optional<std::uint64_t> seed;
   std::optional<int> subdivide;   // N x N per patch
   std::optional<double> maxEdge;  // or: split until no edge is longer than this

@@ -52,7 +52,7 @@ std::vector<StepKey> makeTable() {
   add({.name = "method",
        .type = KeyType::Choice,
        .choices = &knownMethods,
-       .defaultText = "analytic",
+       .defaultText = "analytic-visibility",
        .label = "Form factors",
        .tooltip = "The form-factor method. Stages named after a method (hemicube, nusselt, rays) use theirs "
                   "unless the step names another.",
