@@ -259,7 +259,7 @@ void MainWindow::applyStepDisplay(const lesson::Step* step) {
   if (step || mode_ == Mode::Scene) {
     const lesson::StepParameters& p = parameters_;
     options.image.exposure = p.exposure;
-    options.image.toneMap = p.toneMap == "reinhard" ? viz::ToneMap::Reinhard : viz::ToneMap::LinearClamp;
+    options.image.toneMap = viz::toneMapFromName(p.toneMap);
     options.image.srgbGamma = p.gamma;
     options.image.smooth = p.smooth;
     options.image.showEdges = p.edges;

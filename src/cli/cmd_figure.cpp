@@ -16,6 +16,7 @@
 #include "core/solvers/solver.h"
 #ifdef RT_HAVE_VIZ
 #include "viz/chart.h"
+#include "viz/exact_visibility.h"
 #include "viz/hemicube_view.h"
 #include "viz/matrix_view.h"
 #include "viz/meshing_view.h"
@@ -24,9 +25,6 @@
 #include "viz/scene_view.h"
 #include "viz/timing_table.h"
 #include "viz/visibility_view.h"
-#endif
-#if defined(RT_HAVE_VIZ) && defined(RT_HAVE_EXACT)
-#include "exact/exact_reference.h"
 #endif
 
 namespace rt::cli {
@@ -120,7 +118,7 @@ viz::SceneViewOptions sceneOptions(const FigureArguments& a) {
   o.image.width = a.width;
   o.image.height = a.height;
   o.image.exposure = a.exposure;
-  o.image.toneMap = a.toneMap == "reinhard" ? viz::ToneMap::Reinhard : viz::ToneMap::LinearClamp;
+  o.image.toneMap = viz::toneMapFromName(a.toneMap);
   o.image.srgbGamma = !a.noGamma;
   o.image.smooth = a.smooth;
   o.image.showEdges = a.edges;
@@ -319,48 +317,15 @@ void raysFigure(const Computed& c, const FigureArguments& a, CLI::App& command) 
 }
 
 void visibilityFigure(const Computed& c, const FigureArguments& a) {
-#ifdef RT_HAVE_EXACT
-  // Default: the element that sees the emitter closest to half blocked is the interesting one; the rays
-  // view's choice is reused through the same rule on the element centroids.
+  // Default: the element that sees the emitter closest to half blocked is the telling one.
   const int j = a.target >= 0 ? a.target : firstEmitter(c.mesh);
-  int i = a.element;
-  if (i < 0) {
-    double best = 2;
-    i = bestViewer(c.mesh, j);
-    for (std::size_t e = 0; e < c.mesh.size(); ++e) {
-      if (static_cast<int>(e) == j) continue;
-      const exact::VisibleRegion region =
-          exact::visibleRegion(c.mesh, static_cast<int>(e), c.mesh.elements[e].centroid, j);
-      if (!region.facing || region.unoccludedFormFactor <= 0) continue;
-      const double blocked = std::abs(region.formFactor / region.unoccludedFormFactor - 0.5);
-      if (blocked < best) {
-        best = blocked;
-        i = static_cast<int>(e);
-      }
-    }
-  }
-  const exact::VisibleRegion region = exact::visibleRegion(c.mesh, i, c.mesh.elements[i].centroid, j);
-  viz::VisibilityRegions regions;
-  regions.source = i;
-  regions.receiver = j;
-  regions.point = region.point;
-  regions.receiverOutline = region.clippedReceiver;
-  regions.shadows = region.occluderProjections;
-  regions.shadowOwners = region.projectionOwners;
-  for (const exact::PolygonWithHoles& p : region.visible) regions.visible.emplace_back(p.outer, p.holes);
-  regions.formFactor = region.formFactor;
-  regions.unoccludedFormFactor = region.unoccludedFormFactor;
+  const int i = a.element >= 0 ? a.element : viz::halfBlockedViewer(c.mesh, j, bestViewer(c.mesh, j));
+  const viz::VisibilityRegions regions = viz::exactVisibilityRegions(c.mesh, i, j);
   viz::VisibilityViewOptions o;
   o.size = {a.width, a.height, a.dpi};
-  std::cerr << "visibility: F = " << region.formFactor << " of " << region.unoccludedFormFactor
+  std::cerr << "visibility: F = " << regions.formFactor << " of " << regions.unoccludedFormFactor
             << " unoccluded\n";
   viz::writeVisibilityFigure(regions, o, a.output);
-#else
-  (void)c;
-  (void)a;
-  throw std::runtime_error(
-      "the visibility view needs the exact reference (configure with RT_BUILD_EXACT=ON)");
-#endif
 }
 
 void linksFigure(const Computed& c, const FigureArguments& a) {

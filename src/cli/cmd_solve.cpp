@@ -18,6 +18,7 @@
 #include "core/solvers/solver.h"
 #include "lesson/lesson_parser.h"
 #ifdef RT_HAVE_VIZ
+#include "viz/display_pipeline.h"
 #include "viz/scene_image.h"
 #endif
 
@@ -74,7 +75,7 @@ void writeImage(const SolveArguments& a, const Scene& scene, const Mesh& mesh, c
   image.width = a.width;
   image.height = a.height;
   image.exposure = a.exposure;
-  image.toneMap = a.toneMap == "reinhard" ? viz::ToneMap::Reinhard : viz::ToneMap::LinearClamp;
+  image.toneMap = viz::toneMapFromName(a.toneMap);
   image.smooth = a.smooth;
   image.showEdges = a.edges;
   viz::renderRadiosityImage(mesh, B, scene.cameraOrDefault(), image, a.image);

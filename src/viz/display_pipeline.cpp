@@ -1,5 +1,7 @@
 #include "viz/display_pipeline.h"
 
+#include <stdexcept>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -12,6 +14,12 @@ std::uint8_t quantise(double unit) {
 }
 
 }  // namespace
+
+ToneMap toneMapFromName(const std::string& name) {
+  if (name == "reinhard") return ToneMap::Reinhard;
+  if (name == "linear") return ToneMap::LinearClamp;
+  throw std::invalid_argument("unknown tone map '" + name + "' (known: linear, reinhard)");
+}
 
 double autoExposure(const RgbField& B, ToneMap toneMap, const RgbField* emission) {
   std::vector<double> brightness;

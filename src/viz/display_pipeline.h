@@ -3,6 +3,8 @@
 // 3D view).
 #pragma once
 
+#include <string>
+
 #include <array>
 #include <cstdint>
 
@@ -23,6 +25,9 @@ struct DisplaySettings {
 // per-element maximum channel, emitters excluded when something else is lit) to display white (linear clamp)
 // or to 2/3 of it (Reinhard). Emitters are usually orders of magnitude brighter than everything they light;
 // letting them set the exposure would show a black room.
+// The tone map a lesson or an option names ("linear" or "reinhard"; step_keys.cpp lists them).
+ToneMap toneMapFromName(const std::string& name);
+
 double autoExposure(const RgbField& B, ToneMap toneMap, const RgbField* emission = nullptr);
 // Resolves ImageOptions::exposure (0 = automatic).
 DisplaySettings displaySettingsFor(const ImageOptions& options, const RgbField& B,

@@ -5,6 +5,7 @@
 
 #include "core/formfactor/hemicube.h"
 #include "viz/chart.h"
+#include "viz/exact_visibility.h"
 #include "viz/hemicube_view.h"
 #include "viz/matrix_view.h"
 #include "viz/nusselt_view.h"
@@ -24,7 +25,7 @@ SceneViewOptions sceneOptions(const lesson::Step& step, const StepResult& r, con
   o.image.width = s.width;
   o.image.height = s.height;
   o.image.exposure = p.exposure;
-  o.image.toneMap = p.toneMap == "reinhard" ? ToneMap::Reinhard : ToneMap::LinearClamp;
+  o.image.toneMap = toneMapFromName(p.toneMap);
   o.image.srgbGamma = p.gamma;
   o.image.smooth = p.smooth;
   o.image.showEdges = p.edges;
@@ -116,9 +117,15 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
       writeRaysFigure(r.mesh, r.camera, sample, o, path);
       return "Visibility rays from " + from + " to element " + std::to_string(to);
     }
-    case View::Visibility:
-      formFactorRow(step, r, s, "F from " + from + " (" + r.method + ")", path);
-      return "What " + from + " sees, by the " + r.method + " method";
+    case View::Visibility: {
+      // The same view as `radiosity figure --view visibility`: the exact visible part of the target.
+      const int to = targetElement(r);
+      VisibilityViewOptions o;
+      o.size = {s.width, s.height, 96.0};
+      writeVisibilityFigure(exactVisibilityRegions(r.mesh, r.sourceElement, to), o, path);
+      return "What the centre of " + from + " sees of element " + std::to_string(to) +
+             ": its visible part, exactly (the shadows of the occluders cut away)";
+    }
     case View::Matrix: {
       if (!r.F) throw std::runtime_error(path + ": the step computed no form factors");
       // A matrix step says which matrix it shows (F, rho F or K); other steps show F.

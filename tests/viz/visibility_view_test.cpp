@@ -1,7 +1,11 @@
 // The exact-visibility view: drawn from plain regions; through the CLI when the exact reference is built in.
 #include <gtest/gtest.h>
 
+#include "lesson/lesson_parser.h"
+#include "lesson/step_runner.h"
 #include "support/test_paths.h"
+#include "viz/exact_visibility.h"
+#include "viz/lesson_figures.h"
 #include "viz/visibility_view.h"
 #include "viz/viz_test_support.h"
 
@@ -54,6 +58,31 @@ TEST(VisibilityView, ThroughTheCliWhenTheExactReferenceIsBuilt) {
     GTEST_SKIP() << "built without the exact reference";
   ASSERT_EQ(code, 0) << log;
   EXPECT_GT(vizt::pngStats(out).stddev, 15.0);
+}
+
+// A lesson's `visibility` view is the command line's: the exact visible part of the target, the same figure.
+TEST(VisibilityView, ALessonStepDrawsWhatTheCommandLineDraws) {
+  if (!exactVisibilityAvailable()) GTEST_SKIP() << "built without the exact reference";
+  const std::string dir = test::scratchDir("visibility_lesson");
+  const std::string text =
+      "---\ntitle: V\norder: 1\n---\n\n## Seen from the source\n\n```step\nscene: occluded-plates.json\n"
+      "stage: formfactors\nfrom: 0\nhighlight: 1\nviews: visibility\nfigure: seen\n```\n\nText.\n";
+  const lesson::Lesson l = lesson::parseLesson(text, "v", "v.md");
+  lesson::StepRunner runner(test::sourcePath("scenes"));
+  const lesson::StepResult r = runner.run(l, l.steps[0]);
+  const auto figures = renderStepFigures(l, l.steps[0], r, dir, {480, 360});
+  ASSERT_EQ(figures.size(), 1u);
+  std::string log;
+  ASSERT_EQ(test::runCommand(
+                test::cliPath() + " figure " + test::sourcePath("scenes/occluded-plates.json") +
+                    " --no-subdivide --view visibility --element 0 --target 1 --width 480 --height 360 "
+                    "--output " +
+                    dir + "/cli.png",
+                &log),
+            0)
+      << log;
+  EXPECT_GT(vizt::pngStats(dir + "/seen.png").stddev, 15.0);
+  EXPECT_LT(vizt::pngDifference(dir + "/seen.png", dir + "/cli.png"), 0.5);
 }
 
 }  // namespace
