@@ -41,14 +41,11 @@ struct Sweep {
   std::vector<int> values;
 };
 
+// The swept value sets the knob the method declares (FormFactorMethod::knob()).
 FormFactorOptions optionsFor(const std::string& method, int value, std::uint64_t seed) {
   FormFactorOptions o;
   o.seed = seed;
-  if (method == "hemicube")
-    o.hemicubeResolution = value;
-  else
-    o.samples = value;
-  return o;
+  return accuracyKnobOf(method).applied(o, value);
 }
 
 // Least-squares slope of log(y) against log(x) (points with y > 0 only).

@@ -181,6 +181,10 @@ void addLessonCommand(CLI::App& app) {
       "keys",
       "The table of step keys (type, range, default, control, stages) as Markdown, as the docs show it");
   keysCommand->callback([] { std::cout << lesson::stepKeyTableMarkdown(); });
+  auto* stagesCommand = command->add_subcommand(
+      "stages",
+      "The table of stages (what each computes, the views it can show) as Markdown, as the docs show it");
+  stagesCommand->callback([] { std::cout << lesson::stageTableMarkdown(); });
 
   auto checkArgs = std::make_shared<LessonArguments>();
   auto run = std::make_shared<bool>(false);

@@ -1,27 +1,11 @@
 #include "lesson/lesson.h"
 
+#include <algorithm>
 #include <array>
 #include <utility>
 
 namespace rt::lesson {
 namespace {
-
-constexpr std::array<std::pair<Stage, const char*>, 14> kStages{{
-    {Stage::Text, "text"},
-    {Stage::Scene, "scene"},
-    {Stage::Local, "local"},
-    {Stage::FormFactors, "formfactors"},
-    {Stage::Hemicube, "hemicube"},
-    {Stage::Nusselt, "nusselt"},
-    {Stage::Rays, "rays"},
-    {Stage::Exact, "exact"},
-    {Stage::Matrix, "matrix"},
-    {Stage::Solve, "solve"},
-    {Stage::Compare, "compare"},
-    {Stage::Bounces, "bounces"},
-    {Stage::Benchmark, "benchmark"},
-    {Stage::Refine, "refine"},
-}};
 
 constexpr std::array<std::pair<View, const char*>, 12> kViews{{
     {View::Scene, "scene"},
@@ -40,10 +24,80 @@ constexpr std::array<std::pair<View, const char*>, 12> kViews{{
 
 }  // namespace
 
+// The one table of stages: what each computes and the views it can show. The parser checks a step's views
+// against it, the docs print it (`radiosity lesson keys`), the app and the book read it.
+const std::vector<StageInfo>& stageTable() {
+  using V = View;
+  static const std::vector<StageInfo> table{
+      {Stage::Text, "text", "nothing", {}},
+      {Stage::Scene, "scene", "the mesh", {V::Scene}},
+      {Stage::Local,
+       "local",
+       "direct light + ambient term, and the radiosity solution",
+       {V::Scene, V::Local, V::FormFactor, V::Matrix}},
+      {Stage::FormFactors, "formfactors", "F", {V::Scene, V::FormFactor, V::Matrix, V::Visibility}},
+      {Stage::Hemicube,
+       "hemicube",
+       "F by the hemicube",
+       {V::Scene, V::FormFactor, V::Matrix, V::Hemicube, V::Visibility}},
+      {Stage::Nusselt,
+       "nusselt",
+       "F by the Nusselt analog",
+       {V::Scene, V::FormFactor, V::Matrix, V::Nusselt}},
+      {Stage::Rays,
+       "rays",
+       "F by ray casting or Monte Carlo",
+       {V::Scene, V::FormFactor, V::Matrix, V::Rays, V::Visibility}},
+      {Stage::Exact,
+       "exact",
+       "F by `methods` and by `reference`, both solved",
+       {V::Scene, V::FormFactor, V::Matrix, V::Visibility, V::Error}},
+      {Stage::Matrix,
+       "matrix",
+       "F, K, spectral radius, dominance, condition, export, and B with `solver`",
+       {V::Scene, V::FormFactor, V::Matrix}},
+      {Stage::Solve, "solve", "F and B with `solver`", {V::Scene, V::FormFactor, V::Matrix, V::Convergence}},
+      {Stage::Compare,
+       "compare",
+       "several `solvers`, `methods` or `subdivisions`",
+       {V::Scene, V::FormFactor, V::Matrix, V::Convergence, V::Error}},
+      {Stage::Bounces,
+       "bounces",
+       "B after 0..`bounces` bounces, and the exact B",
+       {V::Scene, V::FormFactor, V::Matrix, V::Convergence}},
+      {Stage::Benchmark,
+       "benchmark",
+       "run time and error of `methods` over `sweep`",
+       {V::Scene, V::FormFactor, V::Matrix, V::RuntimeError, V::SweepError}},
+      {Stage::Refine, "refine", "an adaptive, discontinuity or hierarchical mesh and its B", {V::Scene}},
+  };
+  return table;
+}
+
+const StageInfo& stageInfo(Stage stage) {
+  for (const StageInfo& info : stageTable())
+    if (info.stage == stage) return info;
+  return stageTable().front();
+}
+
+bool stageOffersView(Stage stage, View view) {
+  const auto& views = stageInfo(stage).views;
+  return std::find(views.begin(), views.end(), view) != views.end();
+}
+
+std::string stageTableMarkdown() {
+  std::string out = "| stage | computes | views |\n|---|---|---|\n";
+  for (const StageInfo& info : stageTable()) {
+    std::string views;
+    for (View v : info.views) views += (views.empty() ? "`" : ", `") + toString(v) + "`";
+    out += "| `" + std::string(info.name) + "` | " + info.computes + " | " +
+           (views.empty() ? "none" : views) + " |\n";
+  }
+  return out;
+}
+
 std::string toString(Stage stage) {
-  for (const auto& [s, name] : kStages)
-    if (s == stage) return name;
-  return "?";
+  return stageInfo(stage).name;
 }
 
 std::string toString(View view) {
@@ -53,8 +107,8 @@ std::string toString(View view) {
 }
 
 std::optional<Stage> stageFromString(const std::string& name) {
-  for (const auto& [s, n] : kStages)
-    if (name == n) return s;
+  for (const StageInfo& info : stageTable())
+    if (name == info.name) return info.stage;
   return std::nullopt;
 }
 
@@ -66,7 +120,7 @@ std::optional<View> viewFromString(const std::string& name) {
 
 std::vector<std::string> stageNames() {
   std::vector<std::string> names;
-  for (const auto& entry : kStages) names.emplace_back(entry.second);
+  for (const StageInfo& info : stageTable()) names.emplace_back(info.name);
   return names;
 }
 

@@ -47,6 +47,19 @@ enum class View {
   Local
 };
 
+// A row of the table of stages: its name, what it computes and the views it can show.
+struct StageInfo {
+  Stage stage;
+  const char* name;
+  const char* computes;
+  std::vector<View> views;
+};
+const std::vector<StageInfo>& stageTable();
+const StageInfo& stageInfo(Stage stage);
+bool stageOffersView(Stage stage, View view);
+// The table as Markdown (docs/lesson-format.md holds it; a test keeps the two equal).
+std::string stageTableMarkdown();
+
 std::string toString(Stage stage);
 std::string toString(View view);
 std::optional<Stage> stageFromString(const std::string& name);

@@ -272,7 +272,7 @@ class Parser {
     if (step.views.empty() && !step.figure.empty()) fail(lineOf("figure"), "a figure needs 'views' to show");
     if (p.subdivide && p.maxEdge) fail(lineOf("max-edge"), "give either 'subdivide' or 'max-edge', not both");
     for (View v : step.views) {
-      if (!viewFits(v, step.stage))
+      if (!stageOffersView(step.stage, v))
         fail(lineOf("views"),
              "view '" + toString(v) + "' cannot be shown by stage '" + toString(step.stage) + "'");
     }
@@ -289,35 +289,6 @@ class Parser {
       fail(lineOf("export"), "'export' belongs to a matrix step");
     for (const auto& c : step.controls)
       if (c == "method" && step.stage == Stage::Text) fail(lineOf("controls"), "a text step has no controls");
-  }
-
-  static bool viewFits(View v, Stage s) {
-    const bool computesF = s != Stage::Text && s != Stage::Scene && s != Stage::Refine;
-    switch (v) {
-      case View::Scene:
-        return s != Stage::Text;
-      case View::Local:
-        return s == Stage::Local;
-      case View::FormFactor:
-      case View::Matrix:
-        return computesF;
-      case View::Hemicube:
-        return s == Stage::Hemicube;
-      case View::Nusselt:
-        return s == Stage::Nusselt;
-      case View::Rays:
-        return s == Stage::Rays;
-      case View::Visibility:
-        return s == Stage::FormFactors || s == Stage::Rays || s == Stage::Hemicube || s == Stage::Exact;
-      case View::Convergence:
-        return s == Stage::Solve || s == Stage::Compare || s == Stage::Bounces;
-      case View::RuntimeError:
-      case View::SweepError:
-        return s == Stage::Benchmark;
-      case View::Error:
-        return s == Stage::Exact || s == Stage::Compare;
-    }
-    return false;
   }
 
   void checkFigureNames() {

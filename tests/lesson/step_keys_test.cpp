@@ -42,6 +42,19 @@ TEST(StepKeys, TheDocsShowTheTableAsItIs) {
       << stepKeyTableMarkdown();
 }
 
+TEST(StepKeys, TheDocsShowTheTableOfStagesAsItIs) {
+  std::ifstream in(rt::test::sourcePath("docs/lesson-format.md"));
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find(stageTableMarkdown()), std::string::npos)
+      << "docs/lesson-format.md does not hold the current table; `radiosity lesson stages` prints it:\n"
+      << stageTableMarkdown();
+  // Every stage is in the table, and a view a stage does not offer is refused by the parser.
+  for (const std::string& name : stageNames()) EXPECT_TRUE(stageFromString(name)) << name;
+  EXPECT_TRUE(stageOffersView(Stage::Hemicube, View::Hemicube));
+  EXPECT_FALSE(stageOffersView(Stage::Solve, View::Hemicube));
+}
+
 TEST(StepKeys, ValuesGoThroughTheTableWithTheirRanges) {
   StepParameters p;
   applyStepValue(p, *findStepKey("resolution"), "resolution", "64", {"x.md", 3});

@@ -30,6 +30,27 @@ TEST(MatrixView, SmallMatrixHasOneCellAndOneNumberPerEntry) {
   EXPECT_GE(d.count(Drawing::Kind::Polygon), 16u);
 }
 
+// A nearly constant matrix stays nearly one colour: the unit cube's 0.1998 and 0.2000 must not look like the
+// two ends of the map (log and linear scales alike).
+TEST(MatrixView, ANearlyConstantMatrixIsNotStretchedOverTheColourMap) {
+  Eigen::MatrixXd m = Eigen::MatrixXd::Constant(2, 2, 0.2000);
+  m(0, 1) = 0.1998;
+  for (bool log : {true, false}) {
+    MatrixViewOptions o;
+    o.logScale = log;
+    const Drawing d = matrixDrawing(m, o);
+    // The first four filled polygons are the cells (row 0 left to right, then row 1).
+    std::vector<Rgb8> cells;
+    for (const auto& s : d.shapes)
+      if (s.kind == Drawing::Kind::Polygon && s.filled && cells.size() < 4) cells.push_back(s.fill);
+    ASSERT_EQ(cells.size(), 4u);
+    int largest = 0;
+    for (int ch = 0; ch < 3; ++ch)
+      largest = std::max(largest, std::abs(int(cells[0][ch]) - int(cells[1][ch])));
+    EXPECT_LT(largest, 12) << (log ? "log" : "linear") << " scale: 0.2000 and 0.1998 look far apart";
+  }
+}
+
 TEST(MatrixView, LargeMatrixIsShownAsBlocksWithoutNumbers) {
   MatrixViewOptions o;
   o.maxCells = 50;
