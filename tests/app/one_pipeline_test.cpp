@@ -3,6 +3,7 @@
 // iterations comes from that run, not from a second solve).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -10,8 +11,11 @@
 
 #include "app/lesson_session.h"
 #include "app_test_support.h"
+#include "core/formfactor/formfactor_method.h"
+#include "core/refine/constrained_triangulation.h"
 #include "lesson/step_numbers.h"
 #include "lesson/step_result.h"
+#include "lesson/step_settings.h"
 #include "support/test_paths.h"
 
 using namespace rt::app;
@@ -84,4 +88,25 @@ TEST(OnePipeline, TheAppRunsAStepOnceAndReplaysThatRun) {
   ASSERT_GT(r->history.size(), 1u);
   // The last replayed iteration is the solution shown.
   EXPECT_TRUE(r->history.back().B.isApprox(r->B, 1e-12));
+}
+
+// The app registers what the command line registers: the exact method and CGAL's constrained triangulation
+// for discontinuity meshing (the app used to mesh discontinuity steps with the fallback cuts).
+TEST(OnePipeline, TheAppHasTheOptionalMethodsTheCommandLineHas) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  const auto methods = rt::formFactorMethodNames();
+  EXPECT_NE(std::find(methods.begin(), methods.end(), "exact"), methods.end());
+  EXPECT_NE(rt::constrainedTriangulatorName().find("CGAL"), std::string::npos)
+      << rt::constrainedTriangulatorName();
+}
+
+// A sweep sets the knob each method declares: the Nusselt analog's segments, the hemicube's resolution.
+TEST(OnePipeline, ASweepSetsTheKnobTheMethodReads) {
+  const rt::lesson::StepParameters p;
+  EXPECT_EQ(rt::lesson::formFactorOptionsFor(p, "nusselt", 32).samples, 32);
+  EXPECT_EQ(rt::lesson::formFactorOptionsFor(p, "hemicube", 32).hemicubeResolution, 32);
+  EXPECT_EQ(rt::lesson::formFactorOptionsFor(p, "raycast", 32).samples, 32);
+  EXPECT_DOUBLE_EQ(rt::accuracyKnobOf("exact").applied({}, 1e-4).tolerance,
+                   rt::accuracyKnobOf("exact").field == rt::AccuracyKnob::Field::Tolerance ? 1e-4 : 1e-9);
 }
