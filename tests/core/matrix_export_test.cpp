@@ -142,7 +142,33 @@ TEST(MatrixExport, LatexSmallMatrix) {
   m << 1, -0.5, 0.25, 1;
   const std::string path = test::scratchDir("matrix_export_tex") + "/m.tex";
   writeMatrix(m, path);
-  EXPECT_EQ(readAll(path), "\\begin{bmatrix}\n  1 & -0.5 \\\\\n  0.25 & 1\n\\end{bmatrix}\n");
+  EXPECT_EQ(readAll(path),
+            "% needs \\usepackage{amsmath}\n\\begin{bmatrix}\n  1 & -0.5 \\\\\n  0.25 & 1\n\\end{bmatrix}\n");
+}
+
+// Any size the export allows compiles: more than 10 columns set MaxMatrixCols, and small numbers are written
+// as powers of ten (LaTeX would typeset "e-06" as letters). With pdflatex installed the file is compiled.
+TEST(MatrixExport, LatexOfTwentyColumnsAndTinyNumbersCompiles) {
+  RowMatrix m = RowMatrix::Identity(20, 20);
+  m(0, 1) = -4.28698e-06;
+  m(1, 0) = 9.9999999e-7;
+  const std::string dir = test::scratchDir("matrix_export_tex_20");
+  writeMatrix(m, dir + "/m.tex");
+  const std::string tex = readAll(dir + "/m.tex");
+  EXPECT_NE(tex.find("\\setcounter{MaxMatrixCols}{20}"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("-4.28698 \\times 10^{-6}"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("1 \\times 10^{-6}"), std::string::npos) << tex;
+  EXPECT_EQ(tex.find("e-"), std::string::npos) << tex;
+  if (test::runCommand("command -v pdflatex > /dev/null") != 0)
+    return;  // the preamble above is what it needs
+  std::ofstream doc(dir + "/doc.tex");
+  doc << "\\documentclass{article}\\usepackage{amsmath}\\usepackage[margin=5mm,landscape]{geometry}"
+         "\\begin{document}\\tiny\\[\\input{m.tex}\\]\\end{document}\n";
+  doc.close();
+  std::string log;
+  EXPECT_EQ(
+      test::runCommand("cd " + dir + " && pdflatex -interaction=nonstopmode -halt-on-error doc.tex", &log), 0)
+      << log;
 }
 
 TEST(MatrixExport, LatexRefusesLargeMatrixWithClearMessage) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -108,6 +109,26 @@ void writeNpy(MatrixView m, const std::string& path) {
   finishOrThrow(out, path);
 }
 
+// A number as LaTeX math: six significant digits, and powers of ten written out (-4.28698 \times 10^{-6}),
+// since "e-06" would be typeset as letters.
+std::string latexNumber(double v) {
+  std::ostringstream s;
+  s.imbue(std::locale::classic());
+  if (v == 0 || !std::isfinite(v)) {
+    s << (v == 0 ? 0.0 : v);
+    return s.str();
+  }
+  int exponent = static_cast<int>(std::floor(std::log10(std::abs(v))));
+  if (exponent >= -3 && exponent < 6) {
+    s << std::setprecision(6) << v;
+  } else {
+    double mantissa = std::round(v / std::pow(10.0, exponent) * 1e5) / 1e5;
+    if (std::abs(mantissa) >= 10) mantissa /= 10, ++exponent;  // 9.999999 rounds to 10
+    s << std::setprecision(6) << mantissa << " \\times 10^{" << exponent << "}";
+  }
+  return s.str();
+}
+
 void writeLatex(MatrixView m, const std::string& path) {
   if (m.rows() > kMaxLatexSize || m.cols() > kMaxLatexSize) {
     throw InputError({path, 0, {}},
@@ -117,16 +138,16 @@ void writeLatex(MatrixView m, const std::string& path) {
                          "; use .csv, .mtx or .npy instead (or a coarser mesh, e.g. --no-subdivide)");
   }
   std::ofstream out = openOrThrow(path, std::ios::out | std::ios::trunc);
-  // Six significant digits: a printed matrix is for reading, the other formats are for computing.
+  // Six significant digits: a printed matrix is for reading, the other formats are for computing. amsmath's
+  // bmatrix stops at 10 columns unless MaxMatrixCols says more.
+  out << "% needs \\usepackage{amsmath}\n";
+  if (m.cols() > 10) out << "\\setcounter{MaxMatrixCols}{" << m.cols() << "}\n";
   out << "\\begin{bmatrix}\n";
   for (Eigen::Index i = 0; i < m.rows(); ++i) {
     out << "  ";
     for (Eigen::Index j = 0; j < m.cols(); ++j) {
       if (j > 0) out << " & ";
-      std::ostringstream s;
-      s.imbue(std::locale::classic());
-      s << std::setprecision(6) << m(i, j);
-      out << s.str();
+      out << latexNumber(m(i, j));
     }
     out << (i + 1 < m.rows() ? " \\\\\n" : "\n");
   }
