@@ -141,7 +141,7 @@ TEST(MatrixCommand, MatrixMarketNpyAndLatexFormats) {
 
   ASSERT_EQ(runCommand(matrixCommand("parallel-squares.json", "--output " + dir + "/K.tex"), &log), 0) << log;
   const std::string tex = readFile(dir + "/K.tex");
-  EXPECT_EQ(tex.rfind("\\begin{bmatrix}", 0), 0u) << tex;
+  EXPECT_NE(tex.find("\\begin{bmatrix}"), std::string::npos) << tex;
   EXPECT_NE(tex.find("1 & 0 \\\\"), std::string::npos) << tex;
   EXPECT_NE(tex.find("\\end{bmatrix}"), std::string::npos) << tex;
 }
