@@ -117,8 +117,8 @@ void checkAgainstScenes(const Lesson& lesson, const std::string& scenesDir) {
     }
     auto checkTarget = [&](const std::string& target, const std::string& key) {
       if (isNumber(target)) {
-        if (std::stoul(target) >= scene.patches.size() && !step.parameters.subdivide &&
-            !step.parameters.maxEdge)
+        if ((target.size() > 9 ? ~0ul : std::stoul(target)) >= scene.patches.size() &&
+            !step.parameters.subdivide && !step.parameters.maxEdge)
           throw InputError({lesson.file, lineOf(step, key)},
                            "element " + target + " does not exist: scene '" + step.scene + "' has " +
                                std::to_string(scene.patches.size()) + " patches");

@@ -58,6 +58,7 @@ std::optional<std::string> formatValue(double value, const std::string& format) 
   if (!std::isfinite(value)) return std::string(std::isnan(value) ? "NaN" : (value > 0 ? "inf" : "-inf"));
   if (format.empty() ||
       std::all_of(format.begin(), format.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+    if (format.size() > 2) return std::nullopt;  // at most 17 digits; a long number must not overflow stoi
     const int digits = format.empty() ? 3 : std::stoi(format);
     if (digits < 1 || digits > 17) return std::nullopt;
     if (format.empty() && value == std::round(value) && std::abs(value) < 1e9) {
@@ -77,7 +78,7 @@ std::optional<std::string> formatValue(double value, const std::string& format) 
   }
   if (format.size() >= 3 && format[0] == '.' && format.back() == 'f') {
     const std::string digits = format.substr(1, format.size() - 2);
-    if (digits.empty() ||
+    if (digits.empty() || digits.size() > 2 ||
         !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
       return std::nullopt;
     const int n = std::stoi(digits);

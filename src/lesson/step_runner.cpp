@@ -21,7 +21,7 @@ bool isNumber(const std::string& s) {
 std::vector<int> elementsOf(const StepResult& r, const std::string& target, const detail::StageContext& c,
                             const std::string& key) {
   if (isNumber(target)) {
-    const auto e = std::stoul(target);
+    const auto e = (target.size() > 9 ? ~0ul : std::stoul(target));
     if (e >= r.mesh.size())
       c.fail(key,
              "element " + target + " does not exist (the mesh has " + std::to_string(r.mesh.size()) + ")");

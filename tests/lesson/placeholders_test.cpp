@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/input_error.h"
+#include "lesson/lesson_parser.h"
 
 namespace rt::lesson {
 namespace {
@@ -51,3 +52,18 @@ TEST(Placeholders, FindsMalformedOnes) {
 
 }  // namespace
 }  // namespace rt::lesson
+
+// A format with a huge digit count is an error at its line, not an exception from std::stoi (found by
+// fuzzing).
+TEST(Placeholders, AHugeDigitCountIsAnErrorAtItsLine) {
+  const std::string text =
+      "---\ntitle: T\norder: 1\n---\n\n## S\n\n```step\nstage: text\n```\n\nIt has {{elements:99999999999}} "
+      "and "
+      "{{x:.99999999999f}}.\n";
+  try {
+    rt::lesson::parseLesson(text, "t", "t.md");
+    FAIL() << "accepted";
+  } catch (const rt::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("t.md:12"), std::string::npos) << e.what();
+  }
+}
