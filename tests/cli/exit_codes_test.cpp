@@ -19,9 +19,9 @@ std::string scratchScene(const std::string& name, const std::string& text) {
 }
 
 TEST(ExitCodes, MissingSceneIsAnInputErrorInEverySubcommand) {
-  for (const std::string command : {"solve", "formfactors", "matrix", "figure"}) {
+  for (const char* command : {"solve", "formfactors", "matrix", "figure"}) {
     std::string log;
-    EXPECT_EQ(runCommand(cliPath() + " " + command + " /nonexistent/room.json", &log), kInput)
+    EXPECT_EQ(runCommand(cliPath() + " " + std::string(command) + " /nonexistent/room.json", &log), kInput)
         << command << log;
     EXPECT_NE(log.find("/nonexistent/room.json: error: cannot open the file"), std::string::npos)
         << command << log;
@@ -41,7 +41,7 @@ TEST(ExitCodes, CommandLineMistakesAreUsageErrors) {
 
 TEST(ExitCodes, BadSceneIsAnInputErrorWithTheLine) {
   const std::string path = scratchScene("bad.obj", "v 0 0 0\nv 1 0 0\nv 1 nan 0\nf 1 2 3\n");
-  for (const std::string command :
+  for (const std::string& command :
        {std::string("solve"), std::string("formfactors"), "matrix --output " + path + ".csv"}) {
     std::string log;
     EXPECT_EQ(runCommand(cliPath() + " " + command + " " + path, &log), kInput) << command << log;

@@ -25,9 +25,14 @@ TEST(SceneObjArchive, CornellBoxAsAnArchivePublishesItLoads) {
   EXPECT_EQ(s.surfaces.size(), 8u);
   ASSERT_EQ(s.materials.size(), 8u);
   for (const Material& m : s.materials) {
-    if (m.name == "leftWall") EXPECT_TRUE(m.reflectance.isApprox(Rgb(0.63, 0.065, 0.05))) << "inline # Red";
-    if (m.name == "light") EXPECT_TRUE(m.emission.isApprox(Rgb(17, 12, 4)));
-    if (m.name != "light") EXPECT_FALSE(m.isEmitter()) << m.name;
+    if (m.name == "leftWall") {
+      EXPECT_TRUE(m.reflectance.isApprox(Rgb(0.63, 0.065, 0.05))) << "inline # Red";
+    }
+    if (m.name == "light") {
+      EXPECT_TRUE(m.emission.isApprox(Rgb(17, 12, 4)));
+    } else {
+      EXPECT_FALSE(m.isEmitter()) << m.name;
+    }
   }
   // Two materials carry texture maps (the floor two of them): one warning each; nothing else to say.
   EXPECT_EQ(countContaining(s.warnings, "(a texture) is ignored"), 2) << ::testing::PrintToString(s.warnings);
@@ -36,8 +41,9 @@ TEST(SceneObjArchive, CornellBoxAsAnArchivePublishesItLoads) {
   // Every patch faces into the box (y up, open front at z = +1).
   for (const Patch& p : s.patches) {
     const Vec3 toCentre = Vec3(0, 1, 0) - p.vertices[0];
-    if (s.surfaces[p.surface].name.find("Box") == std::string::npos)
+    if (s.surfaces[p.surface].name.find("Box") == std::string::npos) {
       EXPECT_GT(p.normal.dot(toCentre), 0) << s.surfaces[p.surface].name;
+    }
   }
 }
 
