@@ -29,10 +29,12 @@ bool hostIsLittleEndian() {
 
 // Refuses a rows x cols matrix of doubles that cannot fit in memory, before it is allocated.
 void checkFits(double rows, double cols, const std::string& path) {
-  const double bytes = 8 * rows * cols, budget = memoryBudgetBytes();
+  // Each dimension alone must fit too: a 0 x 10^13 matrix needs no memory, but every loop over its columns
+  // would run for hours.
+  const double bytes = 8 * std::max({rows * cols, rows, cols}), budget = memoryBudgetBytes();
   if (bytes > budget)
-    fail(path, "a " + formatCount(rows) + " x " + formatCount(cols) + " matrix needs " + formatBytes(bytes) +
-                   "; this machine has " + formatBytes(budget));
+    fail(path, "a " + formatCount(rows) + " x " + formatCount(cols) + " matrix is too large: it needs " +
+                   formatBytes(bytes) + "; this machine has " + formatBytes(budget));
 }
 
 // The value of `key` in the .npy header's Python dict literal: the text after "'key':" up to the next ',' at

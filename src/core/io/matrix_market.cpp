@@ -1,6 +1,7 @@
 // Matrix Market (NIST's text format for matrices), the subset a form-factor matrix needs: real, general,
 // coordinate (sparse: "i j value" lines) or array (dense, column by column). Every message names the file
 // and the line.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -63,11 +64,14 @@ Eigen::MatrixXd parseMatrixMarket(const std::string& text, const std::string& pa
       (coordinate && !parseCount(size[2], entries)))
     fail(sizeLine, coordinate ? "expected the size line 'rows columns entries'"
                               : "expected the size line 'rows columns'");
-  const double bytes = 8.0 * static_cast<double>(rows) * static_cast<double>(cols);
+  // Each dimension alone must fit too: a 0 x 10^13 matrix needs no memory, but every loop over its columns
+  // would run for hours.
+  const double bytes = 8.0 * std::max({static_cast<double>(rows) * static_cast<double>(cols),
+                                       static_cast<double>(rows), static_cast<double>(cols)});
   if (bytes > memoryBudgetBytes())
     fail(sizeLine, "a " + formatCount(static_cast<double>(rows)) + " x " +
-                       formatCount(static_cast<double>(cols)) + " matrix needs " + formatBytes(bytes) +
-                       "; this machine has " + formatBytes(memoryBudgetBytes()));
+                       formatCount(static_cast<double>(cols)) + " matrix is too large: it needs " +
+                       formatBytes(bytes) + "; this machine has " + formatBytes(memoryBudgetBytes()));
   if (!coordinate) entries = rows * cols;  // bounded by the memory check above: no overflow
   // Fewer lines than announced entries: refuse before allocating for a count the file cannot hold.
   if (static_cast<double>(entries) > static_cast<double>(lines.size()))
