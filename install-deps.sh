@@ -2,10 +2,10 @@
 # Installs the Debian 12 packages Radiosity Textbook needs, if any are missing. Idempotent and quiet when all are there.
 set -euo pipefail
 packages=(
-  cmake g++ ninja-build pkg-config ccache clang-format
+  cmake g++ ninja-build pkg-config ccache clang-format clang libclang-rt-14-dev llvm
   libvtk9-dev qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libqt6openglwidgets6 qt6-charts-dev qt6-svg-dev
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libgtest-dev libembree-dev libtbb-dev
-  nlohmann-json3-dev libtinyobjloader-dev libcli11-dev
+  nlohmann-json3-dev libcli11-dev
   xvfb xauth mesa-utils libgl1-mesa-dri fonts-dejavu-core
 )
 missing=()

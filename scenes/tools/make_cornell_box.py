@@ -2,7 +2,7 @@
 """Derives scenes/cornell-box.json, cornell-box.obj and cornell-box.mtl from the published Cornell box data.
 
 Usage: python3 scenes/tools/make_cornell_box.py [path/to/cornell_box.json] [output folder]
-Defaults: ../shared/refdata/cornell_box.json relative to the repository, output scenes/.
+Defaults: tests/data/refdata/cornell_box.json in the repository, output scenes/.
 
 What it does (docs/cornell-box.md explains why):
   * geometry in millimetres exactly as published; each polygon is reversed when needed so that it faces the interior
@@ -206,7 +206,7 @@ def write_obj(data, surfaces, mats, obj_path, mtl_path):
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     repo = os.path.dirname(os.path.dirname(here))
-    source = sys.argv[1] if len(sys.argv) > 1 else os.path.join(repo, "..", "shared", "refdata", "cornell_box.json")
+    source = sys.argv[1] if len(sys.argv) > 1 else os.path.join(repo, "tests", "data", "refdata", "cornell_box.json")
     target = sys.argv[2] if len(sys.argv) > 2 else os.path.join(repo, "scenes")
     with open(source) as f:
         data = json.load(f)

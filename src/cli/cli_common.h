@@ -12,6 +12,19 @@
 
 namespace rt::cli {
 
+// The exit status of every subcommand, one per class of error (docs/robustness.md lists the messages).
+enum ExitCode : int {
+  Success = 0,
+  Failure = 1,      // the computation could not be done (solver failure, an output that cannot be drawn)
+  Usage = 2,        // the command line: unknown option, bad value, unknown method or solver name
+  Input = 3,        // a file: missing, unreadable, malformed, or an impossible scene or mesh (file:line)
+  OutOfMemory = 4,  // the allocator gave up despite the size checks
+  Internal = 5,     // an internal invariant check failed: a bug
+};
+inline constexpr const char* kExitCodeHelp =
+    "Exit status: 0 success, 1 computation failed, 2 command-line error, 3 input error (file, line or "
+    "value), 4 out of memory, 5 internal error (a bug).";
+
 // --no-subdivide | --subdivide N | --max-edge L, mutually exclusive.
 struct MeshArguments {
   bool noSubdivide = false;

@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <tuple>
 
+#include "core/check.h"
+#include "core/io/scene_assembly.h"
+#include "core/memory_budget.h"
 #include "core/polygon.h"
 
 namespace rt {
@@ -45,16 +49,70 @@ class VertexWelder {
   std::map<Key, std::vector<int>> cells_;
 };
 
-int divisionsFor(const Polygon& polygon, const MeshOptions& options) {
+// Divisions per edge, in double: an absurd request (a micrometre edge on a room) must be countable before it
+// is refused, not overflow an int.
+double divisionsFor(const Polygon& polygon, const MeshOptions& options) {
   switch (options.mode) {
     case MeshOptions::Mode::None:
       return 1;
     case MeshOptions::Mode::Count:
       return options.count;
     case MeshOptions::Mode::MaxEdge:
-      return std::max(1, static_cast<int>(std::ceil(maxEdgeLength(polygon) / options.maxEdge - 1e-9)));
+      return std::max(1.0, std::ceil(maxEdgeLength(polygon) / options.maxEdge - 1e-9));
   }
   return 1;
+}
+
+// One element per patch keeps convex polygons whole up to this many vertices (the samplers of the
+// form-factor methods take up to 16); larger ones become a fan of triangles.
+constexpr std::size_t kMaxElementVertices = 8;
+
+bool keptWhole(const Polygon& polygon, const MeshOptions& options) {
+  return polygon.size() <= 4 ||
+         (options.mode == MeshOptions::Mode::None && polygon.size() <= kMaxElementVertices);
+}
+
+// Elements buildMesh will make for one patch (quads and triangles split n x n, larger polygons by fan).
+double elementCount(const Polygon& polygon, const MeshOptions& options) {
+  if (keptWhole(polygon, options)) {
+    const double n = divisionsFor(polygon, options);
+    return n * n;
+  }
+  double count = 0;
+  for (const Polygon& t : fanTriangulate(polygon)) {
+    const double n = divisionsFor(t, options);
+    count += n * n;
+  }
+  return count;
+}
+
+// Bytes per element of a finished mesh: the element (vertex indices, normal, centroid), about one welded
+// vertex with its lookup entry and element list, and the copied material rows. Measured order of magnitude.
+constexpr double kBytesPerElement = 400;
+
+// Refuses, before any allocation, a mesh that cannot fit in memory, with the numbers and what to do instead.
+void checkMeshSize(const Scene& scene, const MeshOptions& options) {
+  double elements = 0;
+  for (const Patch& patch : scene.patches) elements += elementCount(patch.vertices, options);
+  const double bytes = elements * kBytesPerElement, budget = memoryBudgetBytes();
+  // Element and vertex indices are ints.
+  const double indexLimit = static_cast<double>(std::numeric_limits<int>::max()) / 8;
+  if (bytes <= budget && elements <= indexLimit) return;
+  const std::string option = options.mode == MeshOptions::Mode::Count
+                                 ? "--subdivide " + std::to_string(options.count)
+                                 : "--max-edge " + io_detail::formatNumber(options.maxEdge);
+  // Elements grow as 1 / edge^2: the edge (or count) that gives about 10,000 elements.
+  const double shrink = std::sqrt(elements / 1e4);
+  const std::string suggestion =
+      options.mode == MeshOptions::Mode::Count
+          ? "--subdivide " + std::to_string(std::max(1, static_cast<int>(options.count / shrink)))
+          : "--max-edge " + io_detail::formatNumber(options.maxEdge * shrink);
+  throw InputError({scene.sourceFile},
+                   option + " would make about " + formatCount(elements) + " elements, needing about " +
+                       formatBytes(bytes) + " for the mesh alone (a dense form-factor matrix: " +
+                       formatBytes(8 * elements * elements) + "); this machine has " + formatBytes(budget) +
+                       ". Use a coarser mesh, e.g. " + suggestion + " (about 10,000 elements) in " +
+                       scene.unit + ", or --mesh adaptive");
 }
 
 // Bilinear N x N split of a convex quad: the sub-quads of a planar convex quad are planar and convex.
@@ -78,6 +136,48 @@ void splitTriangle(const Polygon& t, int n, std::vector<Polygon>& out) {
       out.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
       if (i + j + 1 < n) out.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
     }
+}
+
+// Vertices closer than this become one: 1e-9 of the scene, but not more than 1e-8 of the shortest element
+// edge, since welding moves a vertex by up to this much. A scene with one far-away polygon (a coordinate of
+// 1e10 among millimetres) would otherwise weld the corners of its small elements together.
+double weldTolerance(const Scene& scene, const MeshOptions& options, double sceneSize) {
+  double shortest = sceneSize, largest = 0;
+  for (const Patch& patch : scene.patches) {
+    for (const Vec3& v : patch.vertices) largest = std::max(largest, v.cwiseAbs().maxCoeff());
+    const double n = divisionsFor(patch.vertices, options);
+    for (std::size_t k = 0; k < patch.vertices.size(); ++k)
+      shortest = std::min(shortest,
+                          (patch.vertices[(k + 1) % patch.vertices.size()] - patch.vertices[k]).norm() / n);
+  }
+  // Not below 1e-15 of the largest coordinate: the welder's grid keys (coordinate / tolerance) fit in 64
+  // bits, and double rounding of shared corners stays inside.
+  return std::max(std::min(1e-9 * sceneSize, 1e-8 * shortest), 1e-15 * largest);
+}
+
+// The contract every form-factor method relies on: elements are planar convex polygons of 3 to 8 vertices
+// with positive area, facing their patch's way. Subdividing valid patches keeps it; a violation is a bug.
+// Planarity is only owed where the patch was planar: scenes built in code (tests of twisted occluders) may
+// hand in a non-planar quad, which the loaders would have split.
+void checkElements(const Mesh& mesh, const Scene& scene) {
+  if (!checksEnabled()) return;
+  std::vector<char> planarPatch(scene.patches.size());
+  for (std::size_t i = 0; i < scene.patches.size(); ++i) {
+    const Polygon& v = scene.patches[i].vertices;
+    planarPatch[i] = planarityDeviation(v) <= 1e-6 * maxEdgeLength(v);
+  }
+  for (std::size_t e = 0; e < mesh.elements.size(); ++e) {
+    const Element& element = mesh.elements[e];
+    const std::string who = "element " + std::to_string(e) + " of patch " + std::to_string(element.patch);
+    RT_CHECK(element.vertices.size() >= 3 && element.vertices.size() <= kMaxElementVertices,
+             who + " has " + std::to_string(element.vertices.size()) + " vertices");
+    Polygon p;
+    for (int v : element.vertices) p.push_back(mesh.vertices[v]);
+    const double size = maxEdgeLength(p);
+    RT_CHECK(element.area > 0 && std::isfinite(element.area), who + " has no area");
+    RT_CHECK(!planarPatch[element.patch] || planarityDeviation(p) <= 1e-6 * size, who + " is not planar");
+    RT_CHECK(isConvex(p, element.normal), who + " is not convex about its normal");
+  }
 }
 
 }  // namespace
@@ -133,23 +233,27 @@ Mesh buildMesh(const Scene& scene, const MeshOptions& options) {
       !(options.maxEdge > 0.0 && std::isfinite(options.maxEdge)))
     throw InputError({}, "--max-edge needs a positive length");
 
+  checkMeshSize(scene, options);
+
   Mesh mesh;
   const Eigen::AlignedBox3d box = scene.bounds();
   const double size = box.isEmpty() ? 1.0 : std::max(box.diagonal().norm(), 1e-300);
-  VertexWelder welder(mesh.vertices, 1e-9 * size);
+  VertexWelder welder(mesh.vertices, weldTolerance(scene, options, size));
 
   std::vector<Polygon> pieces;
   for (std::size_t p = 0; p < scene.patches.size(); ++p) {
     const Patch& patch = scene.patches[p];
     pieces.clear();
-    const int n = divisionsFor(patch.vertices, options);
+    const int n = static_cast<int>(divisionsFor(patch.vertices, options));
     if (patch.vertices.size() == 4) {
       splitQuad(patch.vertices, n, pieces);
     } else if (patch.vertices.size() == 3) {
       splitTriangle(patch.vertices, n, pieces);
+    } else if (keptWhole(patch.vertices, options)) {
+      pieces.push_back(patch.vertices);  // a convex n-gon, one element as asked
     } else {
       for (const Polygon& t : fanTriangulate(patch.vertices))
-        splitTriangle(t, divisionsFor(t, options), pieces);
+        splitTriangle(t, static_cast<int>(divisionsFor(t, options)), pieces);
     }
     for (const Polygon& piece : pieces) {
       Element e;
@@ -161,6 +265,7 @@ Mesh buildMesh(const Scene& scene, const MeshOptions& options) {
       mesh.elements.push_back(std::move(e));
     }
   }
+  checkElements(mesh, scene);
   mesh.vertexElements.assign(mesh.vertices.size(), {});
   for (std::size_t e = 0; e < mesh.elements.size(); ++e)
     for (int v : mesh.elements[e].vertices) mesh.vertexElements[v].push_back(static_cast<int>(e));

@@ -13,8 +13,9 @@
 namespace rt {
 
 struct Element {
-  std::vector<int>
-      vertices;    // indices into Mesh::vertices, counter-clockwise seen from the front (3 or 4 of them)
+  // Indices into Mesh::vertices, counter-clockwise seen from the front: 3 or 4 of them, or up to 8 when a
+  // convex patch is kept as one element (MeshOptions::Mode::None).
+  std::vector<int> vertices;
   int patch = -1;  // parent patch in the scene
   Vec3 normal;
   Vec3 centroid;
@@ -23,7 +24,7 @@ struct Element {
 
 struct MeshOptions {
   enum class Mode { None, Count, MaxEdge };
-  Mode mode = Mode::None;  // None: one element per patch, in file order
+  Mode mode = Mode::None;  // None: one element per patch, in file order (convex n-gons kept whole up to 8)
   int count = 1;           // Count: each patch is split N x N (quads) or into N^2 triangles (triangles)
   double maxEdge = 0.0;    // MaxEdge: split until no element edge is longer than this
 };
@@ -47,7 +48,9 @@ struct Mesh {
   std::uint64_t geometryHash() const;
 };
 
-// Builds the mesh of a scene. Throws InputError for impossible options (count < 1, maxEdge <= 0).
+// Builds the mesh of a scene. Throws InputError for impossible options (count < 1, maxEdge <= 0) and, before
+// allocating anything, for a mesh that would not fit in memory (the message gives the element count, the
+// memory it needs and a coarser setting).
 Mesh buildMesh(const Scene& scene, const MeshOptions& options = {});
 // Copies reflectance/emission from the scene into an existing mesh (after a material-only change).
 void refreshMaterials(Mesh& mesh, const Scene& scene);

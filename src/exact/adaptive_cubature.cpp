@@ -47,6 +47,7 @@ struct Cell {
 }  // namespace
 
 std::vector<Polygon> splitCell(const Polygon& c) {
+  if (c.size() > 4) return fanTriangulate(c);  // an n-gon element: its fan triangles are the children
   if (c.size() == 3) {
     const Vec3 ab = 0.5 * (c[0] + c[1]), bc = 0.5 * (c[1] + c[2]), ca = 0.5 * (c[2] + c[0]);
     return {{c[0], ab, ca}, {ab, c[1], bc}, {ca, bc, c[2]}, {bc, ca, ab}};
@@ -63,6 +64,11 @@ AdaptiveCubature::AdaptiveCubature(CubatureSettings settings) : settings_(std::m
 
 std::vector<WeightedPoint> AdaptiveCubature::rulePoints(const Polygon& c) const {
   std::vector<WeightedPoint> points;
+  if (c.size() > 4) {  // an n-gon element: the rule on each fan triangle
+    for (const Polygon& t : fanTriangulate(c))
+      for (const WeightedPoint& p : rulePoints(t)) points.push_back(p);
+    return points;
+  }
   const std::size_t n = nodes_.size();
   points.reserve(n * n);
   if (c.size() == 3) {

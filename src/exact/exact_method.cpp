@@ -41,7 +41,7 @@ ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& options, Prog
                              FormFactorStats* stats, int threads) {
   const auto start = std::chrono::steady_clock::now();
   const auto n = static_cast<Eigen::Index>(mesh.size());
-  ExactMatrix result{FormFactorMatrix::Zero(n, n), Eigen::MatrixXd::Zero(n, n)};
+  ExactMatrix result{zeroFormFactorMatrix(n), Eigen::MatrixXd::Zero(n, n)};
   std::atomic<std::size_t> computed{0}, facing{0}, unoccluded{0}, pairsDone{0};
   const double totalPairs = std::max(1.0, 0.5 * static_cast<double>(n) * static_cast<double>(n - 1));
   std::atomic<long> evaluations{0}, exactEvaluations{0}, splitEvaluations{0}, notConverged{0};

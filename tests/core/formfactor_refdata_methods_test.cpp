@@ -1,4 +1,4 @@
-// Every public reference case (../shared/refdata/formfactors.json) through every approximate method, each to
+// Every public reference case (tests/data/refdata/formfactors.json) through every approximate method, each to
 // a tolerance that follows from how it converges (the analytic method's 1e-9 is in formfactor_analytic_test).
 // The cases become small scenes: each polygon a patch, a differential source a square of side 1e-4 around the
 // point (its area-averaged F differs from the point's by ~1e-10), a disk a fan of 128 triangles (the
@@ -151,8 +151,7 @@ double toleranceFor(const std::string& method, double value, bool occluded, int 
 }
 
 TEST(ReferenceCases, EveryApproximateMethodWithinItsConvergenceBound) {
-  if (!test::sharedAvailable()) GTEST_SKIP() << "no ../shared/refdata";
-  std::ifstream in(test::sharedPath("refdata/formfactors.json"));
+  std::ifstream in(test::dataPath("refdata/formfactors.json"));
   const json reference = json::parse(in);
   int checked = 0;
   for (const MethodSetting& setting : settings()) {

@@ -26,6 +26,26 @@ Scene unitSquareScene() {
   return s;
 }
 
+TEST(Mesh, AFarAwayPolygonDoesNotWeldTheCornersOfSmallElements) {
+  // Found by fuzzing: one coordinate of 1e10 among unit-sized patches made the welding tolerance (relative to
+  // the scene) larger than the small elements, which then lost their corners and their planarity.
+  Scene s = unitSquareScene();
+  s.patches[1].vertices = {Vec3(0, 0, 1), Vec3(2e10, 0, 1), Vec3(0, 2, 1)};
+  s.patches[1].area = 2e10;
+  MeshOptions options;
+  options.mode = MeshOptions::Mode::Count;
+  options.count = 4;
+  const Mesh m = buildMesh(s, options);
+  double area = 0;
+  for (const Element& e : m.elements)
+    if (e.patch == 0) {
+      EXPECT_NEAR(e.area, 1.0 / 16, 1e-12);
+      area += e.area;
+    }
+  EXPECT_NEAR(area, 1.0, 1e-12);
+  EXPECT_EQ(m.vertices.size(), 25u + 15u);  // 5 x 5 grid on the square, 15 barycentric points on the triangle
+}
+
 TEST(Mesh, NoSubdivisionKeepsOneElementPerPatchInOrder) {
   const Mesh m = buildMesh(unitSquareScene());
   ASSERT_EQ(m.size(), 2u);

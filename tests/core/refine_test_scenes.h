@@ -1,6 +1,6 @@
 // Small hand-built scenes for the refinement tests: a square light over a square occluder over a floor
 // (shadow boundaries known in closed form), a closed room with a light and a blocker (energy balance), and
-// the Cornell box from ../shared/refdata geometry (oriented inwards, ceiling around the light's hole, left
+// the Cornell box from tests/data/refdata geometry (oriented inwards, ceiling around the light's hole, left
 // wall as two triangles).
 #pragma once
 

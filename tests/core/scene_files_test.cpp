@@ -1,5 +1,5 @@
 // The scenes shipped in scenes/: they load, and they are what their documentation says (the Cornell box
-// against the published data in ../shared/refdata, the small scenes against the reference form-factor
+// against the published data in tests/data/refdata, the small scenes against the reference form-factor
 // geometry).
 #include <gtest/gtest.h>
 
@@ -164,8 +164,7 @@ TEST(SceneFiles, CornellBoxObjIsTheSameScene) {
 }
 
 TEST(SceneFiles, CornellBoxVerticesMatchThePublishedData) {
-  if (!test::sharedAvailable()) GTEST_SKIP() << "../shared is absent";
-  std::ifstream in(test::sharedPath("refdata/cornell_box.json"));
+  std::ifstream in(test::dataPath("refdata/cornell_box.json"));
   const json ref = json::parse(in);
   const Scene s = loadShipped("cornell-box.json");
   int checked = 0;
@@ -236,8 +235,7 @@ TEST(SceneFiles, FurnaceCubeIsClosedAndUniform) {
 }
 
 TEST(SceneFiles, SmallScenesMatchTheReferenceFormFactorGeometry) {
-  if (!test::sharedAvailable()) GTEST_SKIP() << "../shared is absent";
-  std::ifstream in(test::sharedPath("refdata/formfactors.json"));
+  std::ifstream in(test::dataPath("refdata/formfactors.json"));
   const json ref = json::parse(in);
   auto geometryOf = [&](const std::string& id) {
     for (const json& c : ref["cases"])

@@ -135,15 +135,30 @@ TEST(SceneJson, RejectsCollinearPolygon) {
                  "bad.json:10 at /surfaces/0/polygons/0", "zero area");
 }
 
-TEST(SceneJson, RejectsNonConvexPolygon) {
-  // An L shape.
-  expectRejected(withSourcePolygon("[[0, 0, 0], [2, 0, 0], [2, 1, 0], [1, 1, 0], [1, 2, 0], [0, 2, 0]]"),
-                 "bad.json:10 at /surfaces/0/polygons/0", "not convex");
+TEST(SceneJson, SplitsNonConvexPolygonIntoTriangles) {
+  // An L shape: ear clipping covers it with 4 triangles of its area 3.
+  const Scene s = parseSceneJson(
+      withSourcePolygon("[[0, 0, 0], [2, 0, 0], [2, 1, 0], [1, 1, 0], [1, 2, 0], [0, 2, 0]]"), "l.json");
+  double area = 0;
+  int pieces = 0;
+  for (const Patch& p : s.patches)
+    if (p.origin.jsonPath == "/surfaces/0/polygons/0") {
+      area += p.area;
+      ++pieces;
+      EXPECT_TRUE(p.normal.isApprox(Vec3(0, 0, 1))) << p.normal.transpose();
+    }
+  EXPECT_EQ(pieces, 4);
+  EXPECT_NEAR(area, 3.0, 1e-12);
+  ASSERT_FALSE(s.warnings.empty());
+  EXPECT_NE(s.warnings[0].find("l.json:10 at /surfaces/0/polygons/0: warning: polygon is not convex"),
+            std::string::npos)
+      << s.warnings[0];
 }
 
 TEST(SceneJson, RejectsBowTie) {
   expectRejected(withSourcePolygon("[[0, 0, 0], [3, 2, 0], [3, 0, 0], [0, 1, 0]]"),
-                 "bad.json:10 at /surfaces/0/polygons/0", "not convex");
+                 "bad.json:10 at /surfaces/0/polygons/0",
+                 "crosses itself: its edges between vertices 1-2 and 3-4");
   // A symmetric bow tie's two lobes cancel: no area at all.
   expectRejected(withSourcePolygon("[[0, 0, 0], [1, 1, 0], [1, 0, 0], [0, 1, 0]]"),
                  "bad.json:10 at /surfaces/0/polygons/0", "zero area");

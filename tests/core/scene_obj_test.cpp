@@ -132,8 +132,18 @@ TEST(SceneObj, RejectsUnknownMaterialAtTheUsemtlLine) {
                  "unknown material 'whit'");
 }
 
-TEST(SceneObj, RejectsFaceWithoutMaterial) {
-  expectRejected(replaced(kObj, "usemtl light\n", ""), kMtl, "two.obj:14", "face has no material");
+TEST(SceneObj, FaceWithoutMaterialGetsTheDefaultWithAWarning) {
+  // The source face (line 14 once its usemtl is gone) comes before any usemtl; the receiver's white follows.
+  const Scene s =
+      loadSceneObj(writeScene(replaced(kObj, "usemtl light\n", ""),
+                              replaced(kMtl, "Kd 0.5 0.25 0.125", "Kd 0.5 0.25 0.125\nKe 1 1 1")));
+  ASSERT_EQ(s.patches.size(), 2u);
+  const Material& m = s.materialOfPatch(0);
+  EXPECT_EQ(m.name, "default");
+  EXPECT_TRUE((m.reflectance == Rgb::Constant(0.5)).all());
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("two.obj:14: warning: face before any 'usemtl'"), std::string::npos)
+      << s.warnings[0];
 }
 
 TEST(SceneObj, RejectsMissingMaterialLibrary) {
@@ -164,11 +174,20 @@ TEST(SceneObj, RejectsNaNAndMalformedVertices) {
   expectRejected(replaced(kObj, "v 1 1 0\n", "v 1 1\n"), kMtl, "two.obj:7", "malformed vertex");
 }
 
-TEST(SceneObj, RejectsDegenerateAndNonConvexFaces) {
+TEST(SceneObj, RejectsDegenerateFaces) {
   expectRejected(replaced(kObj, "f 1 2 3 4", "f 1 2 2 1"), kMtl, "two.obj:15", "degenerate polygon");
   expectRejected(replaced(kObj, "f 1 2 3 4", "f 1 3 2 4"), kMtl, "two.obj:15", "zero area");
+}
+
+TEST(SceneObj, SplitsConcaveFaceByEarClippingWithWarning) {
   // 0,0 1,0 0.2,0.2 0,1: a dart, concave at the third vertex.
-  expectRejected(replaced(kObj, "v 1 1 0\n", "v 0.2 0.2 0\n"), kMtl, "two.obj:15", "not convex");
+  const Scene s = loadSceneObj(writeScene(replaced(kObj, "v 1 1 0\n", "v 0.2 0.2 0\n"), kMtl));
+  ASSERT_EQ(s.patches.size(), 3u);
+  EXPECT_NEAR(s.patches[0].area + s.patches[1].area, 0.2, 1e-12);
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("two.obj:15: warning: polygon is not convex"), std::string::npos)
+      << s.warnings[0];
+  EXPECT_NE(s.warnings[0].find("split into 2 triangles by ear clipping"), std::string::npos) << s.warnings[0];
 }
 
 TEST(SceneObj, SplitsNonPlanarFaceWithWarning) {

@@ -1,5 +1,5 @@
-// Every polygonal case of ../shared/refdata/formfactors.json against the exact reference: unoccluded pairs to
-// 1e-9 relative, occluded ones to 1e-7, differential-area cases through Lambert's formula. Disk cases are
+// Every polygonal case of tests/data/refdata/formfactors.json against the exact reference: unoccluded pairs
+// to 1e-9 relative, occluded ones to 1e-7, differential-area cases through Lambert's formula. Disk cases are
 // analytic-only.
 #include <gtest/gtest.h>
 
@@ -25,7 +25,7 @@ Polygon toPolygon(const json& p) {
 }
 
 json loadCases() {
-  std::ifstream in(rt::test::sharedPath("refdata/formfactors.json"));
+  std::ifstream in(rt::test::dataPath("refdata/formfactors.json"));
   return json::parse(in)["cases"];
 }
 
@@ -37,10 +37,7 @@ const json* findCase(const json& cases, const std::string& id) {
 
 class RefdataTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    if (!rt::test::sharedAvailable()) GTEST_SKIP() << "../shared/refdata not available";
-    cases_ = loadCases();
-  }
+  void SetUp() override { cases_ = loadCases(); }
   json cases_;
 };
 

@@ -13,8 +13,8 @@ namespace rt::test {
 std::string sourcePath(const std::string& relative) {
   return std::string(RT_SOURCE_DIR) + "/" + relative;
 }
-std::string sharedPath(const std::string& relative) {
-  return std::string(RT_SHARED_DIR) + "/" + relative;
+std::string dataPath(const std::string& relative) {
+  return std::string(RT_SOURCE_DIR) + "/tests/data/" + relative;
 }
 std::string binaryPath(const std::string& relative) {
   return std::string(RT_BINARY_DIR) + "/" + relative;
@@ -22,10 +22,6 @@ std::string binaryPath(const std::string& relative) {
 std::string cliPath() {
   return RT_CLI_PATH;
 }
-bool sharedAvailable() {
-  return std::filesystem::exists(sharedPath("refdata/formfactors.json"));
-}
-
 std::string scratchDir(const std::string& name) {
   // The process id keeps concurrent test processes (ctest -j runs each test of a binary as its own process)
   // from emptying each other's folders.

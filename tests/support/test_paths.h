@@ -1,5 +1,5 @@
-// Where tests find their inputs: the repository (scenes, lessons, baselines), ../shared (reference data), the
-// build.
+// Where tests find their inputs: the repository (scenes, lessons, baselines), the tests' own data (reference
+// form factors and the Cornell box measurements in tests/data/refdata, small OBJ/MTL files), the build.
 #pragma once
 
 #include <string>
@@ -7,10 +7,9 @@
 namespace rt::test {
 
 std::string sourcePath(const std::string& relative);  // <repo>/relative
-std::string sharedPath(const std::string& relative);  // <repo>/../shared/relative
+std::string dataPath(const std::string& relative);    // <repo>/tests/data/relative
 std::string binaryPath(const std::string& relative);  // <build>/relative
 std::string cliPath();                                // the radiosity executable
-bool sharedAvailable();  // false when ../shared is absent (tests then GTEST_SKIP)
 // A fresh empty folder under the build tree for one test's outputs (build/<preset>/test-output/<name>-<pid>).
 std::string scratchDir(const std::string& name);
 // Runs a command through the shell; returns its exit code and captures stdout+stderr.

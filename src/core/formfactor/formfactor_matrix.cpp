@@ -4,7 +4,32 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/check.h"
+#include "core/input_error.h"
+#include "core/memory_budget.h"
+
 namespace rt {
+
+FormFactorMatrix zeroFormFactorMatrix(Eigen::Index n) {
+  const double bytes = 8.0 * static_cast<double>(n) * static_cast<double>(n), budget = memoryBudgetBytes();
+  if (bytes > budget)
+    throw InputError({}, "the form-factor matrix of " + formatCount(static_cast<double>(n)) +
+                             " elements needs " + formatBytes(bytes) + " (n^2 doubles); this machine has " +
+                             formatBytes(budget) +
+                             ". Use a coarser mesh (a larger --max-edge), --mesh hierarchical, or a shooting "
+                             "solver with --no-matrix");
+  return FormFactorMatrix::Zero(n, n);
+}
+
+void checkRowSumsAtMost(const FormFactorMatrix& F, double bound, const std::string& method) {
+  if (!checksEnabled()) return;
+  for (Eigen::Index i = 0; i < F.rows(); ++i) {
+    const double sum = F.row(i).sum();
+    RT_CHECK(sum <= bound * (1 + 1e-12) + 1e-12, method + ": row " + std::to_string(i) + " of F sums to " +
+                                                     std::to_string(sum) + ", more than " +
+                                                     std::to_string(bound));
+  }
+}
 
 std::string FormFactorDiagnostics::summary() const {
   char line[256];

@@ -12,6 +12,15 @@ namespace rt {
 // Dense, row-major: a row is what one element sees, which is what shooting and gathering walk along.
 using FormFactorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
+// A zeroed n x n matrix. Throws InputError, before allocating, when it cannot fit in memory: the message
+// gives n, the bytes needed and the machine's memory (a dense F grows as n^2: 100,000 elements need 75 GB).
+FormFactorMatrix zeroFormFactorMatrix(Eigen::Index n);
+
+// RT_CHECK that no row of F sums to more than `bound` (+ rounding): the contract of the methods whose rows
+// are fractions of one set of samples (a hemicube's delta form factors, Monte Carlo's rays). O(n^2); a no-op
+// in builds without checks.
+void checkRowSumsAtMost(const FormFactorMatrix& F, double bound, const std::string& method);
+
 struct FormFactorDiagnostics {
   double minRowSum = 0, maxRowSum = 0;
   double maxClosureError = 0;      // max |1 - sum_j F_ij| (meaningful in a closed scene)

@@ -31,7 +31,7 @@ class HemicubeMethod : public FormFactorMethod {
     const int resolution = std::max(2, options.hemicubeResolution);
     for (int f = 0; f < 5; ++f) deltaFormFactors(resolution, static_cast<HemicubeFace>(f));  // warm the cache
     const auto n = static_cast<Eigen::Index>(mesh.size());
-    FormFactorMatrix F = FormFactorMatrix::Zero(n, n);
+    FormFactorMatrix F = zeroFormFactorMatrix(n);
     forEachRow(mesh.size(), options, progress, "form factors (hemicube)", stats,
                [&](int i, RowCounters& counters) {
                  // One workspace per worker thread: the face buffers are reused row after row instead of
@@ -50,6 +50,11 @@ class HemicubeMethod : public FormFactorMethod {
                });
     stats.notes =
         "hemicube " + std::to_string(resolution) + "x" + std::to_string(resolution) + " at centroids";
+    // A row distributes the hemicube's pixels: it cannot exceed their delta form factors' total (~1).
+    double pixels = 0;
+    for (int f = 0; f < 5; ++f)
+      for (double d : deltaFormFactors(resolution, static_cast<HemicubeFace>(f))) pixels += d;
+    checkRowSumsAtMost(F, pixels, "hemicube");
     return F;
   }
 };

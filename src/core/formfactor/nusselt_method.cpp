@@ -30,7 +30,7 @@ class NusseltMethod : public FormFactorMethod {
                            FormFactorStats& stats) const override {
     const int segments = std::max(4, options.samples);
     const auto n = static_cast<Eigen::Index>(mesh.size());
-    FormFactorMatrix F = FormFactorMatrix::Zero(n, n);
+    FormFactorMatrix F = zeroFormFactorMatrix(n);
     forEachRow(mesh.size(), options, progress, "form factors (nusselt)", stats,
                [&](int i, RowCounters& counters) {
                  const Element& self = mesh.elements[i];

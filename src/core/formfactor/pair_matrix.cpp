@@ -83,7 +83,7 @@ FormFactorMatrix computeReciprocalMatrix(const Mesh& mesh, const FormFactorOptio
                                          const std::function<PairResult(int i, int j)>& pairFunction,
                                          bool useSkipRules) {
   const auto n = static_cast<Eigen::Index>(mesh.size());
-  FormFactorMatrix F = FormFactorMatrix::Zero(n, n);
+  FormFactorMatrix F = zeroFormFactorMatrix(n);
   forEachRow(mesh.size(), options, progress, stage, stats, [&](int i, RowCounters& counters) {
     // Row i owns the pairs (i, j > i) and writes both F(i, j) and F(j, i): no two rows touch the same entry.
     const int first = useSkipRules ? i + 1 : 0;

@@ -65,7 +65,7 @@ class MonteCarloMethod : public FormFactorMethod {
     const RayScene rays(mesh);
     const auto n = static_cast<Eigen::Index>(mesh.size());
     const int samples = std::max(1, options.samples);
-    FormFactorMatrix F = FormFactorMatrix::Zero(n, n);
+    FormFactorMatrix F = zeroFormFactorMatrix(n);
     const double weight = 1.0 / samples;
     forEachRow(mesh.size(), options, progress, "form factors (montecarlo)", stats,
                [&](int i, RowCounters& counters) {
@@ -90,6 +90,7 @@ class MonteCarloMethod : public FormFactorMethod {
                  }
                });
     stats.notes = std::to_string(samples) + " cosine-distributed rays/element";
+    checkRowSumsAtMost(F, 1.0, "montecarlo");  // each ray lands on at most one element
     return F;
   }
 };

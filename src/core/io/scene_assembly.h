@@ -15,6 +15,12 @@ inline constexpr double kCoincidentTolerance = 1e-9;  // two vertices closer tha
 inline constexpr double kZeroAreaTolerance =
     1e-10;  // area / longest_edge^2 below this is a degenerate polygon
 
+// Largest coordinate magnitude accepted: beyond it products of coordinates (areas, normals) lose all
+// precision or overflow, and a scene that large is a unit mistake.
+inline constexpr double kMaxCoordinate = 1e15;
+// Largest vertex count of one polygon in a file (the outline checks are quadratic in it).
+inline constexpr std::size_t kMaxPolygonVertices = 1000;
+
 // Whole file as text. Throws InputError "cannot open ..." naming the file.
 std::string readTextFile(const std::string& path);
 
@@ -28,10 +34,17 @@ void checkMaterial(const Material& material, const SourceLocation& where);
 // The location of vertex `index` of a polygon at `where`: for JSON, the path gets "/index" appended.
 SourceLocation vertexLocation(const SourceLocation& where, std::size_t index);
 
-// Checks one polygon and appends it to scene.patches as one patch, or as a fan of triangles with a warning in
-// scene.warnings when it is not planar. Rejects non-finite coordinates, fewer than 3 distinct vertices, zero
-// area, non-convex and self-overlapping outlines with InputError at `where`. Repeated consecutive vertices
-// are dropped (with a warning). scene.unit is only used in messages.
+// Checks one polygon and appends it to scene.patches as one patch, or as triangles with a warning in
+// scene.warnings when it is not planar (a fan) or not convex (ear clipping). Rejects non-finite coordinates,
+// fewer than 3 distinct vertices, more than kMaxPolygonVertices, zero area and outlines that cross or touch
+// themselves with InputError at `where`. Repeated consecutive vertices are dropped (with a warning).
+// scene.unit is only used in messages.
 void addPolygon(Scene& scene, const Polygon& polygon, int surface, const SourceLocation& where);
+
+// Appends a warning to scene.warnings for each light (emitting surface) none of whose patches has any other
+// patch in front of it that faces back, i.e. whose emission reaches nothing (a light listed clockwise faces
+// away from the room), and one more when no light reaches anything: the solve then succeeds with every
+// reflector black, which must not pass in silence.
+void addLightWarnings(Scene& scene);
 
 }  // namespace rt::io_detail

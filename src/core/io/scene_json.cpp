@@ -58,6 +58,7 @@ class SceneJsonReader {
     readMaterials(scene);
     readSurfaces(scene);
     validateScene(scene);
+    io_detail::addLightWarnings(scene);
     return scene;
   }
 

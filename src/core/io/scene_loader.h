@@ -1,9 +1,11 @@
 // Loading scenes: the project's JSON format (docs/scene-format.md) and Wavefront OBJ/MTL (Kd = reflectance,
 // Ke = emission, one face = one patch). Every loader validates what it reads and throws InputError naming the
-// file and the line or JSON path; non-planar polygons are split into triangles with a warning in
-// Scene::warnings.
+// file and the line or JSON path; non-planar and concave polygons are split into triangles, and lights that
+// can reach nothing are reported, with warnings in Scene::warnings.
 #pragma once
 
+#include <functional>
+#include <optional>
 #include <string>
 
 #include "core/scene.h"
@@ -17,6 +19,10 @@ Scene loadSceneJson(const std::string& path);
 // From text (tests, lessons); `fileName` is only used in messages.
 Scene parseSceneJson(const std::string& text, const std::string& fileName = "<json>");
 Scene loadSceneObj(const std::string& path);
+// From text: `mtlText` gives the text of each material library the OBJ names (the path as the OBJ's folder +
+// the mtllib name), or nullopt when it cannot be read. Tests and fuzzing use it.
+using MtlSource = std::function<std::optional<std::string>(const std::string& path)>;
+Scene parseSceneObj(const std::string& text, const std::string& fileName, const MtlSource& mtlText);
 
 // Checks the invariants every loader guarantees (convex planar non-degenerate patches, finite coordinates,
 // reflectance in [0,1), emission >= 0 and finite, at least one emitter). Throws InputError naming the patch's

@@ -27,6 +27,9 @@ void checkPatch(const Scene& scene, std::size_t index) {
   for (const Vec3& p : v)
     if (!p.allFinite())
       throw InputError(where, what + " has a coordinate that is not a finite number (NaN or infinity)");
+  for (const Vec3& p : v)
+    if (p.cwiseAbs().maxCoeff() > io_detail::kMaxCoordinate)
+      throw InputError(where, what + " has a coordinate beyond " + formatNumber(io_detail::kMaxCoordinate));
   const double size = maxEdgeLength(v);
   const Vec3 newell = newellNormal(v);
   const double area = 0.5 * newell.norm();

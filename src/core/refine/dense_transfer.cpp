@@ -30,7 +30,7 @@ FormFactorMatrix updateFormFactors(const FormFactorMatrix& previous, const std::
                                    Progress& progress, const std::string& stage, std::size_t& pairsComputed) {
   const int n = static_cast<int>(pieces.size());
   auto isNew = [&](int a) { return oldIndex.empty() || oldIndex[a] < 0; };
-  FormFactorMatrix F = FormFactorMatrix::Zero(n, n);
+  FormFactorMatrix F = zeroFormFactorMatrix(n);
   std::vector<int> fresh;
   for (int a = 0; a < n; ++a) {
     if (isNew(a)) {

@@ -30,6 +30,7 @@ Mesh meshFromPieces(const Scene& scene, const std::vector<Polygon>& pieces,
 }
 
 std::vector<Polygon> splitInFour(const Polygon& p) {
+  if (p.size() > 4) return fanTriangulate(p);  // an n-gon element (one element per patch): triangles first
   if (p.size() == 3) {
     const Vec3 m01 = 0.5 * (p[0] + p[1]), m12 = 0.5 * (p[1] + p[2]), m20 = 0.5 * (p[2] + p[0]);
     return {{p[0], m01, m20}, {m01, p[1], m12}, {m20, m12, p[2]}, {m01, m12, m20}};

@@ -7,6 +7,7 @@
 #include <random>
 #include <string>
 
+#include "core/check.h"
 #include "core/solvers/solver.h"
 
 namespace rt::solver_detail {
@@ -92,6 +93,10 @@ RgbField AlgorithmSolver::run(Body&& body) {
     status_ = SolverStatus::Cancelled;
     throw;
   }
+  // A solver that has not reported a numerical issue returns a finite B (rho < 1 and row sums <= 1 make the
+  // system's iteration a contraction).
+  RT_CHECK((status_ != SolverStatus::Success && status_ != SolverStatus::NoConvergence) || B.allFinite(),
+           name_ + ": B is not finite after a solve that reported " + toString(status_));
   return B;
 }
 
