@@ -274,24 +274,6 @@ bool MainWindow::waitUntilIdle(int timeoutMs) {
   return true;
 }
 
-// The display keys as the reader has them now (the step's values until the reader changes one).
-void MainWindow::applyStepDisplay(const lesson::Step* step) {
-  viz::SceneViewOptions options = primaryView_->viewOptions();
-  if (step || mode_ == Mode::Scene) {
-    const lesson::StepParameters& p = parameters_;
-    options.image.exposure = p.exposure;
-    options.image.toneMap = p.toneMap == "reinhard" ? viz::ToneMap::Reinhard : viz::ToneMap::LinearClamp;
-    options.image.srgbGamma = p.gamma;
-    options.image.smooth = p.smooth;
-    options.image.showEdges = p.edges;
-  } else {
-    options = viz::SceneViewOptions{};
-  }
-  options.colourBar = false;
-  primaryView_->setViewOptions(options);
-  secondaryView_->setViewOptions(options);
-}
-
 void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   const bool newStep = newStepPending_ || !result_;
   newStepPending_ = false;
@@ -409,71 +391,6 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   if (!r.note.empty()) status += " (" + QString::fromStdString(r.note) + ")";
   statusLabel_->setText(status);
   emit resultShown();
-}
-
-void MainWindow::showIteration(int index) {
-  if (!result_) return;
-  auto show = [index](SceneView* view, const PipelineResult& r) {
-    if (r.history.empty()) return;
-    const int i = std::min(index, static_cast<int>(r.history.size()) - 1);
-    view->setRadiosity(r.history[static_cast<std::size_t>(i)].B);
-  };
-  show(primaryView_, *result_);
-  if (compare_ && result_->compared) show(secondaryView_, *result_->compared);
-  chart_->setCurrent(index);
-}
-
-void MainWindow::selectElements(int first, int second) {
-  if (!result_ || !result_->mesh) return;
-  const int n = static_cast<int>(result_->mesh->size());
-  if (first < 0 || first >= n) return;
-  std::vector<int> elements{first};
-  if (second >= 0 && second < n && second != first) elements.push_back(second);
-  primaryView_->setHighlighted(elements);
-  if (compare_) secondaryView_->setHighlighted(elements);
-  if (second < 0) matrix_->selectElementRow(first);
-  const Element& e = result_->mesh->elements[static_cast<std::size_t>(first)];
-  const std::string& surface = result_->scene->surfaces[result_->scene->patches[e.patch].surface].name;
-  QString text = tr("element %1 (patch %2, %3): B = (%4, %5, %6) W/m^2")
-                     .arg(first)
-                     .arg(e.patch)
-                     .arg(QString::fromStdString(surface))
-                     .arg(result_->B(first, 0), 0, 'g', 4)
-                     .arg(result_->B(first, 1), 0, 'g', 4)
-                     .arg(result_->B(first, 2), 0, 'g', 4);
-  if (second >= 0 && result_->F)
-    text += tr("; F[%1][%2] = %3").arg(first).arg(second).arg((*result_->F)(first, second), 0, 'g', 6);
-  statusLabel_->setText(text);
-}
-
-void MainWindow::updateNavigation() {
-  const bool lesson = mode_ == Mode::Lesson;
-  backButton_->setVisible(lesson);
-  nextButton_->setVisible(lesson);
-  if (!lesson) {
-    stepLabel_->setText(tr("Your scene"));
-    return;
-  }
-  const auto& lessons = library_->lessons();
-  const auto& current = lessons[static_cast<std::size_t>(lesson_)];
-  // Word-wrapped, never elided; the tooltip repeats it with the step's own title.
-  const QString label =
-      tr("%1 - step %2 of %3").arg(lessonHeading(current)).arg(step_ + 1).arg(current.steps.size());
-  stepLabel_->setText(label);
-  stepLabel_->setToolTip(label + "\n" +
-                         QString::fromStdString(current.steps[static_cast<std::size_t>(step_)].title));
-  backButton_->setEnabled(step_ > 0 || lesson_ > 0);
-  nextButton_->setEnabled(step_ + 1 < static_cast<int>(current.steps.size()) ||
-                          lesson_ + 1 < static_cast<int>(lessons.size()));
-}
-
-void MainWindow::rememberPosition() {
-  if (mode_ != Mode::Lesson || !options_.screenshot.isEmpty()) return;
-  QSettings settings;
-  settings.setValue("position/lesson",
-                    QString::fromStdString(library_->lessons()[static_cast<std::size_t>(lesson_)].id));
-  settings.setValue("position/step", step_);
-  saveSession();
 }
 
 }  // namespace rt::app
