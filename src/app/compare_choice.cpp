@@ -1,5 +1,6 @@
 #include "app/compare_choice.h"
 
+#include "app/camera_views.h"
 #include "core/refine/refine.h"
 #include "lesson/step_settings.h"
 
@@ -47,7 +48,7 @@ PipelineResult runRefinedPipeline(const std::shared_ptr<const Scene>& scene, con
   RefinedSolution solution = solveRefined(*scene, options, progress);
   PipelineResult result;
   result.scene = scene;
-  result.camera = scene->cameraOrDefault();
+  result.camera = sceneCamera(*scene);
   result.B = std::move(solution.B);
   result.mesh = std::make_shared<Mesh>(std::move(solution.mesh));
   result.title = choice;  // the pane caption adds the element count
@@ -63,7 +64,9 @@ std::string paneCaption(const PipelineResult& result, const PipelineResult* othe
   if (other && !result.formFactorMethod.empty() && !other->formFactorMethod.empty() &&
       result.formFactorMethod != other->formFactorMethod)
     name += (name.empty() ? "" : ", ") + result.formFactorMethod + " F";
-  if (result.mesh) name += (name.empty() ? "" : ", ") + std::to_string(result.mesh->size()) + " elements";
+  if (result.mesh)
+    name += (name.empty() ? "" : ", ") + std::to_string(result.mesh->size()) +
+            (result.mesh->size() == 1 ? " element" : " elements");
   return name;
 }
 

@@ -9,6 +9,11 @@ constexpr int kLessonRole = Qt::UserRole;
 constexpr int kStepRole = Qt::UserRole + 1;
 }  // namespace
 
+QString lessonHeading(const lesson::Lesson& lesson) {
+  const QString title = QString::fromStdString(lesson.title);
+  return lesson.order > 0 ? QObject::tr("Lesson %1: %2").arg(lesson.order).arg(title) : title;
+}
+
 ContentsTree::ContentsTree(QWidget* parent) : QTreeWidget(parent) {
   setHeaderHidden(true);
   setColumnCount(1);
@@ -35,16 +40,21 @@ void ContentsTree::setLessons(const std::vector<lesson::Lesson>& lessons) {
       bold.setBold(true);
       chapter->setFont(0, bold);
       chapter->setFlags(Qt::ItemIsEnabled);
+      chapter->setToolTip(0, QString::fromStdString(chapterName));
     }
-    auto* lessonItem = new QTreeWidgetItem(chapter, {QString::fromStdString(lesson.title)});
+    // A narrow dock elides long titles: every item carries its whole text as its tooltip.
+    const QString heading = lessonHeading(lesson);
+    auto* lessonItem = new QTreeWidgetItem(chapter, {heading});
     lessonItem->setData(0, kLessonRole, static_cast<int>(l));
     lessonItem->setData(0, kStepRole, 0);
-    lessonItem->setToolTip(0, QString::fromStdString(lesson.summary));
+    lessonItem->setToolTip(
+        0, lesson.summary.empty() ? heading : heading + "\n" + QString::fromStdString(lesson.summary));
     for (std::size_t s = 0; s < lesson.steps.size(); ++s) {
-      auto* stepItem = new QTreeWidgetItem(
-          lessonItem, {QString("%1. %2").arg(s + 1).arg(QString::fromStdString(lesson.steps[s].title))});
+      const QString text = QString("%1. %2").arg(s + 1).arg(QString::fromStdString(lesson.steps[s].title));
+      auto* stepItem = new QTreeWidgetItem(lessonItem, {text});
       stepItem->setData(0, kLessonRole, static_cast<int>(l));
       stepItem->setData(0, kStepRole, static_cast<int>(s));
+      stepItem->setToolTip(0, heading + "\n" + text);
     }
   }
   expandToDepth(0);

@@ -5,8 +5,11 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "app/pipeline.h"
+#include "lesson/lesson.h"
+#include "lesson/step_result.h"
 #include "viz/scene_view.h"
 
 namespace rt::app {
@@ -16,6 +19,20 @@ void exportSceneFigure(const Mesh& mesh, const Camera& camera, const viz::SceneV
                        const viz::SceneViewOptions& options, const std::string& path);
 
 // The form-factor matrix (n x n), or K = I - diag(rho_channel) F when `which` is "K", or B (n x 3) when "B".
+// A .tex file is a whole document that compiles as it is (texLatexDocument).
 void exportMatrix(const PipelineResult& result, const std::string& which, const std::string& path);
+
+// The bmatrix that rt::writeMatrix writes, made a document that compiles at any size: amsmath's bmatrix
+// stops at 10 columns unless MaxMatrixCols says more, and "-4.28698e-06" is not a number to TeX, so small and
+// large numbers become "-4.28698 \times 10^{-6}". The matrix stays between its own begin/end lines, for a
+// reader who \input's it elsewhere.
+std::string latexDocument(const std::string& bmatrix, long long columns);
+
+// The step's figures other than the live 3D view, drawn by the book's code (viz::renderStepFigures) into
+// `folder` as `format` files ("png", "svg", "pdf"; the 2D figures are vectors in svg and pdf). Returns the
+// paths written.
+std::vector<std::string> exportStepFigures(const lesson::Lesson& lesson, const lesson::Step& step,
+                                           const lesson::StepResult& result, const std::string& folder,
+                                           const std::string& format);
 
 }  // namespace rt::app

@@ -66,11 +66,21 @@ void FiguresPane::resizeEvent(QResizeEvent* event) {
   fitFigures();
 }
 
+void FiguresPane::setFillPane(bool fill) {
+  fill_ = fill;
+  fitFigures();
+}
+
 void FiguresPane::fitFigures() {
   const QMargins margins = layout_->contentsMargins();
   const int available = std::max(64, viewport()->width() - margins.left() - margins.right());
+  // Filling: the figure and its caption fit the pane's height too (a projected figure is seen whole).
+  const int height = std::max(64, viewport()->height() - margins.top() - margins.bottom() - 48);
   for (Figure& figure : figures_) {
-    const int width = std::min(figure.original.width(), available);
+    const int fitted =
+        std::min(available, static_cast<int>(static_cast<double>(height) * figure.original.width() /
+                                             std::max(1, figure.original.height())));
+    const int width = fill_ ? std::max(64, fitted) : std::min(figure.original.width(), available);
     if (figure.label->pixmap().width() == width) continue;
     figure.label->setPixmap(figure.original.scaledToWidth(width, Qt::SmoothTransformation));
   }

@@ -25,6 +25,10 @@ class FiguresPane : public QScrollArea {
   int showStep(const lesson::Lesson& lesson, const lesson::Step& step, const lesson::StepResult& result);
   void clear();
   int figureCount() const { return count_; }
+  // Off: figures shrink to the pane's width, never grow past their own. On (a figure in the main pane): each
+  // fills the pane's width and height, keeping its proportions.
+  void setFillPane(bool fill);
+  bool fillsPane() const { return fill_; }
 
  protected:
   // Figures shrink to the pane's width (never grow past their own), so a whole chart with its legend is on
@@ -43,6 +47,7 @@ class FiguresPane : public QScrollArea {
   QVBoxLayout* layout_ = nullptr;
   int count_ = 0;
   int serial_ = 0;
+  bool fill_ = false;
 };
 
 }  // namespace rt::app

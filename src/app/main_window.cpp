@@ -11,6 +11,7 @@
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -30,6 +31,7 @@
 #include "app/iteration_player.h"
 #include "app/lesson_session.h"
 #include "app/matrix_view.h"
+#include "app/parameter_history.h"
 #include "app/parameter_panel.h"
 #include "app/progress_strip.h"
 #include "app/residual_chart.h"
@@ -56,10 +58,16 @@ MainWindow::MainWindow(const AppOptions& options, std::unique_ptr<LessonLibrary>
   connect(runner_, &ComputationRunner::busyChanged, this, &MainWindow::setBusy);
   connect(runner_, &ComputationRunner::progress, this,
           [this](double fraction, const QString& stage) { progress_->setProgress(fraction, stage); });
+  history_ = new ParameterHistory([this](const lesson::StepParameters& p) { restoreParameters(p); }, this);
   buildUi();
   buildMenus();
-  buildShortcuts();
   contents_->setLessons(library_->lessons());
+  normalTextFont_ = text_->font();
+  // Explicit, so that setting it back gives exactly this size whatever the application's font is then.
+  if (normalTextFont_.pointSizeF() > 0)
+    normalTextFont_.setPointSizeF(normalTextFont_.pointSizeF());
+  else
+    normalTextFont_.setPixelSize(normalTextFont_.pixelSize());
   resize(options.size);
 }
 
@@ -82,9 +90,24 @@ bool MainWindow::busy() const {
 
 void MainWindow::closeEvent(QCloseEvent* event) {
   rememberPosition();
+  saveSession();
   if (runner_) runner_->cancel();
   cancelFigureExport();
   QMainWindow::closeEvent(event);
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+  if ((watched == text_ || watched == text_->viewport()) && event->type() == QEvent::ShortcutOverride) {
+    auto* key = static_cast<QKeyEvent*>(event);
+    const bool navigation = key->key() == Qt::Key_Left || key->key() == Qt::Key_Right ||
+                            key->key() == Qt::Key_PageUp || key->key() == Qt::Key_PageDown ||
+                            key->key() == Qt::Key_Space;
+    if (navigation && key->modifiers() == Qt::NoModifier) {
+      event->ignore();  // not the text's: the window's shortcut runs
+      return true;
+    }
+  }
+  return QMainWindow::eventFilter(watched, event);
 }
 
 void MainWindow::buildUi() {
@@ -96,6 +119,8 @@ void MainWindow::buildUi() {
   text_ = new QTextBrowser(textPane);
   text_->setObjectName("stepText");
   text_->setOpenExternalLinks(true);
+  text_->installEventFilter(this);
+  text_->viewport()->installEventFilter(this);
   auto* navigation = new QHBoxLayout();
   backButton_ = new QPushButton(tr("< Back"), textPane);
   nextButton_ = new QPushButton(tr("Next >"), textPane);
@@ -108,7 +133,13 @@ void MainWindow::buildUi() {
   navigation->addWidget(backButton_);
   navigation->addStretch(1);
   navigation->addWidget(nextButton_);
+  // A long step of a restored session waits for the reader: this button (or F5) computes it.
+  computeButton_ = new QPushButton(tr("Compute this step (F5)"), textPane);
+  computeButton_->setObjectName("computeButton");
+  computeButton_->hide();
+  connect(computeButton_, &QPushButton::clicked, this, &MainWindow::computeNow);
   textLayout->addWidget(text_, 1);
+  textLayout->addWidget(computeButton_);
   textLayout->addWidget(stepLabel_);
   textLayout->addLayout(navigation);
   connect(backButton_, &QPushButton::clicked, this, &MainWindow::previousStep);
@@ -216,6 +247,7 @@ void MainWindow::buildUi() {
   addDockWidget(Qt::RightDockWidgetArea, parametersDock_);
 
   statusLabel_ = new QLabel(this);
+  statusLabel_->setObjectName("statusMessage");
   progress_ = new ProgressStrip(this);
   connect(progress_, &ProgressStrip::cancelRequested, this, [this] {
     cancelComputation();
@@ -223,98 +255,6 @@ void MainWindow::buildUi() {
   });
   statusBar()->addWidget(statusLabel_, 1);
   statusBar()->addPermanentWidget(progress_);
-}
-
-QString MainWindow::exportFileDialog(const QString& title, const QString& filters) {
-  return QFileDialog::getSaveFileName(this, title, QString(), filters);
-}
-
-void MainWindow::buildMenus() {
-  QMenu* file = menuBar()->addMenu(tr("&File"));
-  file->addAction(tr("&Open scene..."), QKeySequence::Open, this, [this] {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), QString(),
-                                                      tr("Scenes (*.json *.obj);;All files (*)"));
-    if (!path.isEmpty()) openScene(path);
-  });
-  file->addAction(tr("Open the built-in &Cornell box"), this, [this] { openScene(QString()); });
-  file->addSeparator();
-  file->addAction(tr("Export &view (PNG, SVG, PDF)..."), QKeySequence(tr("Ctrl+E")), this, [this] {
-    const QString path = exportFileDialog(tr("Export view"), tr("PNG (*.png);;SVG (*.svg);;PDF (*.pdf)"));
-    if (!path.isEmpty()) exportView(path);
-  });
-  const QString matrixFilters = tr("CSV (*.csv);;Matrix Market (*.mtx);;NumPy (*.npy);;LaTeX (*.tex)");
-  file->addAction(tr("Export form factors &F..."), this, [this, matrixFilters] {
-    const QString path = exportFileDialog(tr("Export F"), matrixFilters);
-    if (!path.isEmpty()) exportMatrixFile("F", path);
-  });
-  file->addAction(tr("Export matrix &K = I - diag(rho) F..."), this, [this, matrixFilters] {
-    const QString path = exportFileDialog(tr("Export K"), matrixFilters);
-    if (!path.isEmpty()) exportMatrixFile("K", path);
-  });
-  file->addAction(tr("Export radiosity &B..."), this, [this, matrixFilters] {
-    const QString path = exportFileDialog(tr("Export B"), matrixFilters);
-    if (!path.isEmpty()) exportMatrixFile("B", path);
-  });
-  file->addAction(tr("Export &all figures of this lesson..."), this, [this] {
-    const QString folder = QFileDialog::getExistingDirectory(this, tr("Folder for the figures"));
-    if (!folder.isEmpty()) exportAllFigures(folder);
-  });
-  file->addSeparator();
-  file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
-
-  QMenu* go = menuBar()->addMenu(tr("&Go"));
-  go->addAction(tr("&Next step"), this, &MainWindow::nextStep);
-  go->addAction(tr("&Previous step"), this, &MainWindow::previousStep);
-  go->addAction(tr("Play / &pause iterations"), player_, &IterationPlayer::togglePlay);
-  go->addAction(tr("Next &iteration"), player_, &IterationPlayer::next);
-
-  QMenu* view = menuBar()->addMenu(tr("&View"));
-  presenterAction_ = view->addAction(tr("&Presenter mode"));
-  presenterAction_->setCheckable(true);
-  presenterAction_->setShortcut(QKeySequence(Qt::Key_F11));
-  presenterAction_->setShortcutContext(Qt::ApplicationShortcut);
-  connect(presenterAction_, &QAction::toggled, this, &MainWindow::setPresenterMode);
-  addAction(presenterAction_);  // keeps F11 working while the menu bar is hidden
-  compareAction_ = view->addAction(tr("&Compare side by side"));
-  compareAction_->setCheckable(true);
-  connect(compareAction_, &QAction::toggled, this, &MainWindow::setCompareMode);
-  QAction* edges = view->addAction(tr("Show mesh &edges"));
-  edges->setCheckable(true);
-  connect(edges, &QAction::toggled, this, [this](bool on) {
-    primaryView_->setShowEdges(on);
-    secondaryView_->setShowEdges(on);
-  });
-  view->addAction(tr("Text &larger"), QKeySequence::ZoomIn, this, [this] { text_->zoomIn(2); });
-  view->addAction(tr("Text &smaller"), QKeySequence::ZoomOut, this, [this] { text_->zoomOut(2); });
-  view->addSeparator();
-  view->addAction(contentsDock_->toggleViewAction());
-  view->addAction(parametersDock_->toggleViewAction());
-
-  QMenu* help = menuBar()->addMenu(tr("&Help"));
-  help->addAction(tr("&Keys"), this, [this] {
-    QMessageBox::information(
-        this, tr("Keys"),
-        tr("Right / Page Down: next step\nLeft / Page Up: previous step\nSpace: play or pause "
-           "the iterations\nN: next iteration\nF11: presenter mode (Esc leaves it)\n"
-           "Ctrl + / Ctrl -: text size\nClick an element: select it (and its row of F)"));
-  });
-}
-
-void MainWindow::buildShortcuts() {
-  auto add = [this](const QKeySequence& key, auto slot) {
-    auto* shortcut = new QShortcut(key, this);
-    shortcut->setContext(Qt::WindowShortcut);
-    connect(shortcut, &QShortcut::activated, this, slot);
-  };
-  add(QKeySequence(Qt::Key_Right), [this] { nextStep(); });
-  add(QKeySequence(Qt::Key_PageDown), [this] { nextStep(); });
-  add(QKeySequence(Qt::Key_Left), [this] { previousStep(); });
-  add(QKeySequence(Qt::Key_PageUp), [this] { previousStep(); });
-  add(QKeySequence(Qt::Key_Space), [this] { player_->togglePlay(); });
-  add(QKeySequence(Qt::Key_N), [this] { player_->next(); });
-  add(QKeySequence(Qt::Key_Escape), [this] {
-    if (presenter_) setPresenterMode(false);
-  });
 }
 
 void MainWindow::setCompareMode(bool on) {
@@ -362,7 +302,6 @@ void MainWindow::setPresenterMode(bool on) {
   if (on) {
     normalLook_ = currentLook();
     applyPresenterLook(normalLook_);
-    text_->zoomIn(4);
     menuBar()->hide();
     statusBar()->hide();
     contentsDock_->hide();
@@ -370,14 +309,17 @@ void MainWindow::setPresenterMode(bool on) {
     showFullScreen();
   } else {
     applyLook(normalLook_);
-    text_->zoomOut(4);
     menuBar()->show();
     statusBar()->show();
     contentsDock_->show();
     parametersDock_->show();
     showNormal();
   }
+  textZoom_ = 1.0;
+  zoomText(0);
   chart_->setLargeFonts(on);
+  // The main figure fills the screen in presenter mode when the step has one; the 3D view otherwise.
+  if (!on) setLargeFigure(false);
 }
 
 void MainWindow::showError(const QString& message) {
@@ -386,9 +328,9 @@ void MainWindow::showError(const QString& message) {
     // The step's own text stays readable, with what went wrong above it.
     const lesson::Step& step =
         library_->lessons()[static_cast<std::size_t>(lesson_)].steps[static_cast<std::size_t>(step_)];
-    text_->setMarkdown(QString("## %1\n\n> **This step could not be computed:** %2\n\n%3")
-                           .arg(QString::fromStdString(step.title), message.toHtmlEscaped(),
-                                QString::fromStdString(step.text)));
+    setStepMarkdown(QString("## %1\n\n> **This step could not be computed:** %2\n\n%3")
+                        .arg(QString::fromStdString(step.title), message.toHtmlEscaped(),
+                             QString::fromStdString(step.text)));
   }
   newStepPending_ = false;
   statusLabel_->setText(tr("Error: %1").arg(message));

@@ -3,12 +3,17 @@
 // scenes are computed by a ComputationRunner on a worker thread and arrive as PipelineResult.
 #pragma once
 
+#include <QFont>
 #include <QMainWindow>
+#include <QVariantMap>
 #include <memory>
+#include <optional>
 
 #include "app/app_options.h"
+#include "app/camera_views.h"
 #include "app/compare_choice.h"
 #include "app/computation_runner.h"
+#include "app/keys_dialog.h"
 #include "app/pipeline.h"
 #include "app/presenter_style.h"
 #include "lesson/lesson.h"
@@ -18,6 +23,7 @@ class QCheckBox;
 class QComboBox;
 class QDockWidget;
 class QLabel;
+class QMenu;
 class QPushButton;
 class QSplitter;
 class QTabWidget;
@@ -31,6 +37,7 @@ class IterationPlayer;
 class LessonFigureExport;
 class LessonLibrary;
 class MatrixView;
+class ParameterHistory;
 class ParameterPanel;
 class ProgressStrip;
 class ResidualChart;
@@ -81,6 +88,31 @@ class MainWindow : public QMainWindow {
   bool exportAllFigures(const QString& folder, QSize size = QSize(1200, 900));
   bool exportingFigures() const { return figureExport_ != nullptr; }
   void cancelFigureExport();
+  // The current step's figures other than the 3D view, drawn as the book draws them, into `folder` as
+  // `format` ("svg", "pdf": vectors; "png"); false (lastError()) when the step has none.
+  bool exportStepFigures(const QString& folder, const QString& format);
+  // The files the last exportStepFigures wrote.
+  const QStringList& lastExportedFiles() const { return lastExported_; }
+  // "cornell-box-3-view.png": what a save dialog proposes for `what` of the current step or scene.
+  QString suggestedFileName(const QString& what, const QString& extension) const;
+
+  // Presenter mode's text size: `steps` up (positive) or down; each step is 10 %.
+  void zoomText(int steps);
+  // The step's figures fill the main pane instead of the 3D view (View > Step figure in the main pane).
+  void setLargeFigure(bool on);
+  bool largeFigure() const { return largeFigure_; }
+  // The camera of the step or scene, or a standard view of its bounding box.
+  void resetView();
+  void showStandardView(StandardView view);
+  // Computes the shown step now (a step the restored session did not compute on its own).
+  void computeNow();
+  bool computationDeferred() const { return deferred_; }
+  // The recently opened scene files, newest first (File > Open recent).
+  QStringList recentFiles() const;
+  // Every key of the window (Help > Keys).
+  std::vector<KeyBinding> keyBindings();
+  void showKeys();
+  ParameterHistory* history() const { return history_; }
 
   // State for tests and the status bar.
   const PipelineResult* result() const { return result_.get(); }
@@ -106,12 +138,29 @@ class MainWindow : public QMainWindow {
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  // The step's text gives the window's keys back: Left, Right, Page Up/Down and Space step and play even
+  // after the reader clicked into the text (whose invisible caret would otherwise take them).
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   enum class Mode { None, Lesson, Scene };
   void buildUi();
   void buildMenus();
-  void buildShortcuts();
+  void addRecentFile(const QString& path);
+  void rebuildRecentMenu();
+  // The reader's parameters back from the undo history: shown in the panel and computed.
+  void restoreParameters(const lesson::StepParameters& parameters);
+  // The session (position, parameters, scene, camera) written at every change and read by start().
+  void saveSession();
+  // The step's text; its equations (code blocks, set in a fixed font of their own size) at the text's size.
+  void setStepMarkdown(const QString& markdown);
+  void fitEquationsToText();
+  bool restoreSession();
+  bool isLongStep(int lessonIndex, int step) const;
+  // The restored session's parameters, over the step's or scene's own (once, by openStep / openScene).
+  void applySessionParameters();
+  // How long the shown step took, so that a restored session knows a long one.
+  void recordComputeTime();
   void requestComputation();
   void showResult(std::shared_ptr<const PipelineResult> result);
   void showIteration(int index);
@@ -124,7 +173,7 @@ class MainWindow : public QMainWindow {
   void updateNavigation();
   void rememberPosition();
   void applyStepDisplay(const lesson::Step* step);  // from parameters_
-  QString exportFileDialog(const QString& title, const QString& filters);
+  QString exportFileDialog(const QString& title, const QString& filters, const QString& suggested);
 
   AppOptions options_;
   std::unique_ptr<LessonLibrary> library_;
@@ -135,11 +184,21 @@ class MainWindow : public QMainWindow {
   int step_ = -1;
   lesson::StepParameters parameters_;
   bool newStepPending_ = false;
+  bool deferred_ = false;                // a long step of the restored session, waiting for Compute
+  std::optional<Camera> pendingCamera_;  // the restored session's camera, for the first result
+  QVariantMap sessionParameters_;        // the restored session's parameters, for the first step
+  QString scenePath_;                    // the reader's scene file (empty: the built-in box)
+  qint64 computeStartedMs_ = 0;
+  ParameterHistory* history_ = nullptr;
+  bool largeFigure_ = false;
+  QFont normalTextFont_;
+  double textZoom_ = 1.0;
   Scene scene_;
   std::shared_ptr<const PipelineResult> result_;
   // The reader's own scene: its pipeline keeps form factors between runs (a change of material re-solves).
   std::shared_ptr<Pipeline> scenePipeline_ = std::make_shared<Pipeline>();
   QString lastError_;
+  QStringList lastExported_;
   bool compare_ = false;
   bool presenter_ = false;
   AppLook normalLook_;
@@ -167,6 +226,12 @@ class MainWindow : public QMainWindow {
   QDockWidget* parametersDock_ = nullptr;
   QAction* presenterAction_ = nullptr;
   QAction* compareAction_ = nullptr;
+  QAction* undoAction_ = nullptr;
+  QAction* redoAction_ = nullptr;
+  QAction* computeAction_ = nullptr;
+  QAction* largeFigureAction_ = nullptr;
+  QMenu* recentMenu_ = nullptr;
+  QPushButton* computeButton_ = nullptr;
   QLabel* statusLabel_ = nullptr;
   ProgressStrip* progress_ = nullptr;
   LessonFigureExport* figureExport_ = nullptr;

@@ -8,9 +8,12 @@
 
 #include "app/exports.h"
 #include "app/figure_export.h"
+#include "app/lesson_session.h"
 #include "app/main_window.h"
 #include "app/progress_strip.h"
 #include "app/scene_view.h"
+#include "app/wording.h"
+#include "lesson/step_result.h"
 
 namespace rt::app {
 
@@ -48,6 +51,35 @@ bool MainWindow::exportMatrixFile(const QString& which, const QString& path) {
   }
 }
 
+bool MainWindow::exportStepFigures(const QString& folder, const QString& format) {
+  const auto* stepResult =
+      result_ ? static_cast<const lesson::StepResult*>(result_->stepResult.get()) : nullptr;
+  if (mode_ != Mode::Lesson || !stepResult) {
+    showError(tr("Open a lesson step first: its figures are exported."));
+    return false;
+  }
+  try {
+    const auto& lesson = library_->lessons()[static_cast<std::size_t>(lesson_)];
+    // The figures as shown: with the reader's parameters.
+    lesson::Step step = lesson.steps[static_cast<std::size_t>(step_)];
+    step.parameters = parameters_;
+    const auto files =
+        app::exportStepFigures(lesson, step, *stepResult, folder.toStdString(), format.toStdString());
+    if (files.empty()) {
+      showError(tr("This step has no figure besides the 3D view (File > Export view writes that one)."));
+      return false;
+    }
+    lastExported_.clear();
+    for (const auto& f : files) lastExported_ << QString::fromStdString(f);
+    statusLabel_->setText(
+        tr("%1 written to %2").arg(counted(static_cast<long long>(files.size()), tr("figure")), folder));
+    return true;
+  } catch (const std::exception& e) {
+    showError(QString::fromStdString(e.what()));
+    return false;
+  }
+}
+
 bool MainWindow::exportAllFigures(const QString& folder, QSize size) {
   if (mode_ != Mode::Lesson || lesson_ < 0) {
     showError(tr("Open a lesson first: its figures are written one per step."));
@@ -61,7 +93,7 @@ bool MainWindow::exportAllFigures(const QString& folder, QSize size) {
   figureExport_ = new LessonFigureExport(*library_, lesson_, folder, size, this);
   connect(figureExport_, &LessonFigureExport::progress, progress_, &ProgressStrip::setProgress);
   connect(figureExport_, &LessonFigureExport::finished, this, [this, folder](int written) {
-    finishFigureExport(tr("%1 figures written to %2").arg(written).arg(folder), true);
+    finishFigureExport(tr("%1 written to %2").arg(counted(written, tr("figure")), folder), true);
   });
   connect(figureExport_, &LessonFigureExport::cancelled, this, [this, folder] {
     finishFigureExport(tr("Figure export cancelled: the figures written so far are in %1").arg(folder), true);

@@ -2,7 +2,9 @@
 // chart, matrix, linked selection).
 #include <QApplication>
 #include <QComboBox>
+#include <QDateTime>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
@@ -18,9 +20,11 @@
 #include "app/lesson_session.h"
 #include "app/main_window.h"
 #include "app/matrix_view.h"
+#include "app/parameter_history.h"
 #include "app/parameter_panel.h"
 #include "app/residual_chart.h"
 #include "app/scene_view.h"
+#include "app/wording.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/io/scene_loader.h"
 #include "core/solvers/solver.h"
@@ -41,19 +45,15 @@ std::string defaultMethod() {
 QString sceneSummary(const PipelineResult& r) {
   QString md =
       QString("# %1\n\n").arg(QString::fromStdString(r.scene->name.empty() ? "Scene" : r.scene->name));
-  md += QString("%1 patches on %2 surfaces, meshed into **%3 elements**.\n\n")
-            .arg(r.scene->patches.size())
-            .arg(r.scene->surfaces.size())
-            .arg(r.mesh->size());
+  md += QString("%1 on %2, meshed into **%3**.\n\n")
+            .arg(counted(static_cast<long long>(r.scene->patches.size()), "patch", "patches"),
+                 counted(static_cast<long long>(r.scene->surfaces.size()), "surface"),
+                 counted(static_cast<long long>(r.mesh->size()), "element"));
   if (r.F)
     md += QString("Form factors: %1%2.\n\n")
               .arg(QString::fromStdString(r.formFactorStats.summary()))
               .arg(r.formFactorsReused ? " (reused: only materials or the light changed)" : "");
-  if (!r.solverName.empty())
-    md += QString("Solver **%1**: %2 after %3 iterations, relative residual %4.\n\n")
-              .arg(QString::fromStdString(r.solverName), QString::fromStdString(toString(r.status)))
-              .arg(r.iterations)
-              .arg(r.residual, 0, 'g', 3);
+  if (!r.solverName.empty()) md += QString("Solver %1.\n\n").arg(solveSummary(r));
   if (!r.note.empty()) md += QString("*%1*\n\n").arg(QString::fromStdString(r.note));
   for (const auto& w : r.scene->warnings) md += QString("- warning: %1\n").arg(QString::fromStdString(w));
   md += "\nChange the parameters on the right; click an element to see its row of the form-factor matrix.\n";
@@ -93,10 +93,7 @@ bool MainWindow::start() {
     lastError_ = tr("--step needs --lesson");
     return false;
   }
-  QSettings settings;
-  const QString remembered = settings.value("position/lesson").toString();
-  if (!remembered.isEmpty() && library_->indexOf(remembered.toStdString()) >= 0)
-    return openLesson(remembered, settings.value("position/step", 0).toInt());
+  if (restoreSession()) return true;
   if (library_->welcomeIndex() >= 0) return openStep(library_->welcomeIndex(), 0);
   return openScene(QString());  // no lessons at all: the built-in Cornell box
 }
@@ -121,9 +118,9 @@ bool MainWindow::openStep(int lessonIndex, int step) {
   if (lessonIndex < 0 || lessonIndex >= static_cast<int>(lessons.size())) return false;
   const lesson::Lesson& lesson = lessons[static_cast<std::size_t>(lessonIndex)];
   if (step < 0 || step >= static_cast<int>(lesson.steps.size())) {
-    showError(tr("lesson '%1' has %2 steps: there is no step %3")
-                  .arg(QString::fromStdString(lesson.id))
-                  .arg(lesson.steps.size())
+    showError(tr("lesson '%1' has %2: there is no step %3")
+                  .arg(QString::fromStdString(lesson.id),
+                       counted(static_cast<long long>(lesson.steps.size()), tr("step")))
                   .arg(step + 1));
     return false;
   }
@@ -132,13 +129,28 @@ bool MainWindow::openStep(int lessonIndex, int step) {
   step_ = step;
   const lesson::Step& s = lesson.steps[static_cast<std::size_t>(step)];
   parameters_ = s.parameters;
+  applySessionParameters();
+  history_->clear();
   newStepPending_ = true;
-  setWindowTitle(tr("%1 - Radiosity Textbook").arg(QString::fromStdString(lesson.title)));
+  setWindowTitle(tr("%1 - Radiosity Textbook").arg(lessonHeading(lesson)));
   contents_->setCurrent(lessonIndex, step);
-  // The text appears at once; numbers quoted from the result are filled in when it arrives.
-  text_->setMarkdown(QString("## %1\n\n*Computing...*").arg(QString::fromStdString(s.title)));
   updateNavigation();
   rememberPosition();
+  const bool defer = deferred_;
+  computeButton_->setVisible(defer);
+  if (defer) {
+    // A long step of the restored session: the reader starts it.
+    setStepMarkdown(tr("## %1\n\n*This step takes a while to compute (%2). It was not started on its own: "
+                       "press **Compute this step** below, or F5, when you want its results.*\n\n%3")
+                        .arg(QString::fromStdString(s.title),
+                             s.stage == lesson::Stage::Benchmark ? tr("it measures every method")
+                                                                 : tr("it took long last time"),
+                             QString::fromStdString(s.text)));
+    statusLabel_->setText(tr("Not computed yet: Go > Compute this step (F5)"));
+    return true;
+  }
+  // The text appears at once; numbers quoted from the result are filled in when it arrives.
+  setStepMarkdown(QString("## %1\n\n*Computing...*").arg(QString::fromStdString(s.title)));
   requestComputation();
   return true;
 }
@@ -175,10 +187,16 @@ bool MainWindow::openScene(const QString& path) {
   parameters_.method = defaultMethod();
   parameters_.solver = chooseSolver(scene_.patches.size() * 16);
   parameters_.subdivide = 4;
+  applySessionParameters();
+  history_->clear();
+  deferred_ = false;
+  computeButton_->hide();
+  scenePath_ = path.isEmpty() ? QString() : QFileInfo(path).absoluteFilePath();
+  if (!path.isEmpty()) addRecentFile(path);
   newStepPending_ = true;
   result_.reset();
   setWindowTitle(tr("%1 - Radiosity Textbook").arg(QString::fromStdString(scene_.name)));
-  text_->setMarkdown(QString("# %1\n\n*Computing...*").arg(QString::fromStdString(scene_.name)));
+  setStepMarkdown(QString("# %1\n\n*Computing...*").arg(QString::fromStdString(scene_.name)));
   updateNavigation();
   requestComputation();
   return true;
@@ -186,12 +204,15 @@ bool MainWindow::openScene(const QString& path) {
 
 void MainWindow::applyParameters(const lesson::StepParameters& parameters) {
   if (mode_ == Mode::None) return;
+  history_->recordChange(parameters_, parameters);
   parameters_ = parameters;
+  saveSession();
   requestComputation();
 }
 
 void MainWindow::requestComputation() {
   lastError_.clear();
+  computeStartedMs_ = QDateTime::currentMSecsSinceEpoch();
   const bool compare = compare_;
   const CompareChoice choice = compare ? compareChoice() : CompareChoice{};
   ComputationRunner::Job job;
@@ -253,27 +274,10 @@ bool MainWindow::waitUntilIdle(int timeoutMs) {
   return true;
 }
 
-// The display keys as the reader has them now (the step's values until the reader changes one).
-void MainWindow::applyStepDisplay(const lesson::Step* step) {
-  viz::SceneViewOptions options = primaryView_->viewOptions();
-  if (step || mode_ == Mode::Scene) {
-    const lesson::StepParameters& p = parameters_;
-    options.image.exposure = p.exposure;
-    options.image.toneMap = viz::toneMapFromName(p.toneMap);
-    options.image.srgbGamma = p.gamma;
-    options.image.smooth = p.smooth;
-    options.image.showEdges = p.edges;
-  } else {
-    options = viz::SceneViewOptions{};
-  }
-  options.colourBar = false;
-  primaryView_->setViewOptions(options);
-  secondaryView_->setViewOptions(options);
-}
-
 void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   const bool newStep = newStepPending_ || !result_;
   newStepPending_ = false;
+  recordComputeTime();
   // The views still point at the previous mesh until they get the new one: keep it alive until then.
   const std::shared_ptr<const PipelineResult> previous = result_;
   result_ = std::move(result);
@@ -287,6 +291,8 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   viewsPane_->setVisible(r.mesh && r.mesh->size() > 0);
   primaryView_->setMaterialView(r.materials);
   primaryView_->setScene(r.mesh.get(), r.B, r.camera, newStep);
+  if (newStep && pendingCamera_ && r.mesh) primaryView_->applyCamera(*pendingCamera_);
+  if (newStep) pendingCamera_.reset();
   primaryView_->setCaption(QString::fromStdString(compare_               ? paneCaption(r, r.compared.get())
                                                   : r.solverName.empty() ? r.title
                                                                          : r.solverName));
@@ -315,7 +321,7 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
     primaryView_->setScalarField(Eigen::VectorXd(), {});
   }
 
-  text_->setMarkdown(mode_ == Mode::Lesson ? QString::fromStdString(r.text) : sceneSummary(r));
+  setStepMarkdown(mode_ == Mode::Lesson ? QString::fromStdString(r.text) : sceneSummary(r));
   std::vector<QString> names{QString::fromStdString(r.solverName)};
   std::vector<std::vector<double>> runs{residualsOf(r)};
   if (compare_ && r.compared && !r.compared->history.empty()) {
@@ -379,78 +385,12 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
     emit resultShown();
     return;
   }
-  QString status = QString("%1 elements").arg(r.mesh->size());
-  if (!r.solverName.empty())
-    status += QString(", %1: %2 after %3 iterations, residual %4")
-                  .arg(QString::fromStdString(r.solverName), QString::fromStdString(toString(r.status)))
-                  .arg(r.iterations)
-                  .arg(r.residual, 0, 'g', 3);
+  QString status = counted(static_cast<long long>(r.mesh->size()), tr("element"));
+  if (!r.solverName.empty()) status += ", " + solveSummary(r);
   if (r.formFactorsReused) status += tr(", form factors reused");
   if (!r.note.empty()) status += " (" + QString::fromStdString(r.note) + ")";
   statusLabel_->setText(status);
   emit resultShown();
-}
-
-void MainWindow::showIteration(int index) {
-  if (!result_) return;
-  auto show = [index](SceneView* view, const PipelineResult& r) {
-    if (r.history.empty()) return;
-    const int i = std::min(index, static_cast<int>(r.history.size()) - 1);
-    view->setRadiosity(r.history[static_cast<std::size_t>(i)].B);
-  };
-  show(primaryView_, *result_);
-  if (compare_ && result_->compared) show(secondaryView_, *result_->compared);
-  chart_->setCurrent(index);
-}
-
-void MainWindow::selectElements(int first, int second) {
-  if (!result_ || !result_->mesh) return;
-  const int n = static_cast<int>(result_->mesh->size());
-  if (first < 0 || first >= n) return;
-  std::vector<int> elements{first};
-  if (second >= 0 && second < n && second != first) elements.push_back(second);
-  primaryView_->setHighlighted(elements);
-  if (compare_) secondaryView_->setHighlighted(elements);
-  if (second < 0) matrix_->selectElementRow(first);
-  const Element& e = result_->mesh->elements[static_cast<std::size_t>(first)];
-  const std::string& surface = result_->scene->surfaces[result_->scene->patches[e.patch].surface].name;
-  QString text = tr("element %1 (patch %2, %3): B = (%4, %5, %6) W/m^2")
-                     .arg(first)
-                     .arg(e.patch)
-                     .arg(QString::fromStdString(surface))
-                     .arg(result_->B(first, 0), 0, 'g', 4)
-                     .arg(result_->B(first, 1), 0, 'g', 4)
-                     .arg(result_->B(first, 2), 0, 'g', 4);
-  if (second >= 0 && result_->F)
-    text += tr("; F[%1][%2] = %3").arg(first).arg(second).arg((*result_->F)(first, second), 0, 'g', 6);
-  statusLabel_->setText(text);
-}
-
-void MainWindow::updateNavigation() {
-  const bool lesson = mode_ == Mode::Lesson;
-  backButton_->setVisible(lesson);
-  nextButton_->setVisible(lesson);
-  if (!lesson) {
-    stepLabel_->setText(tr("Your scene"));
-    return;
-  }
-  const auto& lessons = library_->lessons();
-  const auto& current = lessons[static_cast<std::size_t>(lesson_)];
-  stepLabel_->setText(tr("%1 - step %2 of %3")
-                          .arg(QString::fromStdString(current.title))
-                          .arg(step_ + 1)
-                          .arg(current.steps.size()));
-  backButton_->setEnabled(step_ > 0 || lesson_ > 0);
-  nextButton_->setEnabled(step_ + 1 < static_cast<int>(current.steps.size()) ||
-                          lesson_ + 1 < static_cast<int>(lessons.size()));
-}
-
-void MainWindow::rememberPosition() {
-  if (mode_ != Mode::Lesson || !options_.screenshot.isEmpty()) return;
-  QSettings settings;
-  settings.setValue("position/lesson",
-                    QString::fromStdString(library_->lessons()[static_cast<std::size_t>(lesson_)].id));
-  settings.setValue("position/step", step_);
 }
 
 }  // namespace rt::app

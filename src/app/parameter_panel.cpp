@@ -210,6 +210,19 @@ void ParameterPanel::setStep(const lesson::StepParameters& parameters,
   loading_ = false;
 }
 
+void ParameterPanel::showParameters(const lesson::StepParameters& parameters) {
+  debounce_->stop();
+  parameters_ = parameters;
+  refusal_.clear();
+  const bool wasLoading = loading_;
+  loading_ = true;
+  // Rows the step does not offer keep showing what the step used (setStep).
+  for (const Row& row : rows_)
+    if (row.offered) showValue(row);
+  showSurfaceReflectance();
+  loading_ = wasLoading;
+}
+
 void ParameterPanel::fillWidgets() {
   const bool wasLoading = loading_;
   loading_ = true;

@@ -35,6 +35,9 @@ class ParameterPanel : public QWidget {
   void setStep(const lesson::StepParameters& parameters, const std::vector<std::string>& controls,
                bool allowAll, const std::vector<std::pair<QString, Rgb>>& surfaces);
   const lesson::StepParameters& parameters() const { return parameters_; }
+  // Shows `parameters` in the offered rows without emitting anything (undo, redo, a restored session); the
+  // step's own values stay what "Reset" returns to.
+  void showParameters(const lesson::StepParameters& parameters);
   // Emits parametersChanged now instead of after the pause (the Enter key, tests).
   void applyNow();
   bool anyEnabled() const { return anyEnabled_; }

@@ -1,5 +1,7 @@
 #include "app/pipeline.h"
 
+#include "app/camera_views.h"
+
 namespace rt::app {
 
 void takeSolve(PipelineResult& result, SolveOutcome solve) {
@@ -24,7 +26,7 @@ PipelineResult runScenePipeline(Pipeline& pipeline, const Scene& scene, const Pi
   result.formFactorStats = out.formFactorStats;
   result.formFactorsReused = out.formFactorsReused;
   result.note = out.note;
-  result.camera = out.scene->cameraOrDefault();
+  result.camera = sceneCamera(*out.scene);
   result.title = out.scene->name;
   takeSolve(result, std::move(out.solve));
   return result;

@@ -123,6 +123,10 @@ int ResidualChart::pointsShown(int run) const {
   return run < static_cast<int>(shown_.size()) ? static_cast<int>(shown_[run]->count()) : 0;
 }
 
+QFont ResidualChart::labelsFont() const {
+  return xAxis_->labelsFont();
+}
+
 void ResidualChart::setLargeFonts(bool large) {
   large_ = large;
   // Presenter mode: the chart follows the high-contrast palette (white on black).
@@ -135,8 +139,14 @@ void ResidualChart::setLargeFonts(bool large) {
   }
   chart()->legend()->setLabelColor(foreground);
   if (marker_) marker_->setColor(foreground);
-  QFont font = this->font();
-  font.setPointSizeF(large ? font.pointSizeF() * 1.6 : font.pointSizeF());
+  // From the chart's own normal font, not the widget's: in presenter mode the application font is already
+  // larger, and leaving must give back exactly the font the chart had.
+  if (!normalFontKnown_) {
+    normalFont_ = xAxis_->labelsFont();
+    normalFontKnown_ = true;
+  }
+  QFont font = normalFont_;
+  if (large) font.setPointSizeF(std::max(normalFont_.pointSizeF(), 9.0) * 1.8);
   chart()->setTitleFont(font);
   xAxis_->setLabelsFont(font);
   yAxis_->setLabelsFont(font);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <QChartView>
+#include <QFont>
 #include <QString>
 #include <vector>
 
@@ -25,6 +26,8 @@ class ResidualChart : public QChartView {
   void setCurrent(int index);
   int pointsShown(int run) const;
   void setLargeFonts(bool large);
+  // The axes' label font (presenter mode makes it larger; leaving gives the normal one back).
+  QFont labelsFont() const;
 
  private:
   std::vector<std::vector<double>> residuals_;
@@ -33,6 +36,8 @@ class ResidualChart : public QChartView {
   QValueAxis* xAxis_ = nullptr;
   QLogValueAxis* yAxis_ = nullptr;
   bool large_ = false;
+  QFont normalFont_;
+  bool normalFontKnown_ = false;
 };
 
 }  // namespace rt::app

@@ -39,7 +39,7 @@ struct LessonArguments {
   // The lesson files to work on, in book order.
   std::vector<std::string> files() const {
     const auto f = folders();
-    if (all == !ids.empty()) throw std::runtime_error("name lessons or give --all (not both)");
+    if (all == !ids.empty()) throw CLI::ValidationError("name lessons or give --all (not both)");
     std::vector<std::string> out;
     if (all) {
       for (const auto& l : lesson::loadCatalogue(f)) out.push_back(l.file);
@@ -98,11 +98,12 @@ void check(const LessonArguments& a, bool run) {
       std::cerr << e.what() << "\n";
     }
   }
-  if (failures > 0) throw std::runtime_error(std::to_string(failures) + " lesson(s) have errors");
+  // Errors in lesson files are input errors (exit code 3), as a broken scene is.
+  if (failures > 0) throw InputError({}, std::to_string(failures) + " lesson(s) have errors (listed above)");
 }
 
 void render(const LessonArguments& a, const std::string& output, bool quick, const FigureSettings& figures) {
-  if (output.empty()) throw std::runtime_error("--output DIR is required");
+  if (output.empty()) throw CLI::ValidationError("--output", "an output folder is required");
   const auto folders = a.folders();
 #ifndef RT_HAVE_VIZ
   std::cerr << "radiosity: this build has no viz library: writing the text without figures\n";

@@ -152,7 +152,7 @@ void run(const SolveArguments& a) {
   const std::string formFactors = a.noMatrix && !a.formFactorsGiven ? std::string("hemicube") : a.formFactors;
   if (!solverName.empty()) makeSolver(solverName);  // an unknown name fails before the expensive part
   if (a.noMatrix)
-    if (const char* problem = noMatrixProblem(solverName, formFactors)) throw std::runtime_error(problem);
+    if (const char* problem = noMatrixProblem(solverName, formFactors)) throw CLI::ValidationError(problem);
   const Mesh mesh = buildMesh(scene, a.mesh.options());
   ProgressLine progress(!a.verbose);
 

@@ -79,10 +79,12 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
     c.fail("scene", std::string("the scene does not load: ") + e.what());
   }
   const StepParameters& p = c.parameters;
-  for (const auto& [surface, rho] : p.reflectance)
+  for (const auto& entry : p.reflectance) {
+    const std::string& surface = entry.first;  // a plain name: clang 14 cannot capture a structured binding
     if (std::none_of(result.scene.surfaces.begin(), result.scene.surfaces.end(),
                      [&](const Surface& s) { return s.name == surface; }))
       c.fail("reflectance." + surface, "the scene has no surface '" + surface + "'");
+  }
   result.scene = applyOverrides(result.scene, p.reflectance, p.lightScale);
   c.meshOptions = meshOptionsFor(p);
   result.mesh = buildMesh(result.scene, c.meshOptions);

@@ -72,9 +72,10 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
         o.caption = "Direct light + ambient term";
       } else if (r.B.rows() > 0) {
         data.B = r.B;
-        if (step.stage == lesson::Stage::Bounces)
-          o.caption = "Radiosity after " + std::to_string(r.bounceTerms.size() - 1) + " bounces";
-        else if (step.stage == lesson::Stage::Refine)
+        if (step.stage == lesson::Stage::Bounces) {
+          const std::size_t bounces = r.bounceTerms.size() - 1;
+          o.caption = "Radiosity after " + std::to_string(bounces) + (bounces == 1 ? " bounce" : " bounces");
+        } else if (step.stage == lesson::Stage::Refine)
           o.caption = "Radiosity on the " + step.parameters.refine + " mesh";
         else
           o.caption = r.runs.empty() ? "Radiosity" : "Radiosity (" + r.runs.back().label + ")";
@@ -228,7 +229,10 @@ std::vector<lesson::RenderedFigure> renderStepFigures(const lesson::Lesson& less
                                                       const std::string& dir,
                                                       const StepFigureSettings& settings) {
   std::vector<lesson::RenderedFigure> figures;
-  const auto files = step.figureFiles();
+  auto files = step.figureFiles();
+  for (std::string& file : files)
+    if (settings.format != "png")
+      file = std::filesystem::path(file).replace_extension(settings.format).string();
   std::filesystem::create_directories(dir);
   for (std::size_t k = 0; k < files.size(); ++k) {
     const std::string path = (std::filesystem::path(dir) / files[k]).string();

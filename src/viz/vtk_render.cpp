@@ -199,6 +199,8 @@ void writeContextView(vtkContextView* view, const std::string& path, const std::
     exporter->SetRenderWindow(window);
     exporter->SetFileName(path.c_str());
     exporter->SetDrawBackground(true);
+    // Text as <text>, not as glyph outlines: a reader can search, select and edit the labels of a figure.
+    exporter->SetTextAsPath(false);
     exporter->Write();
     nameSvg(path, title, description);
   } else {

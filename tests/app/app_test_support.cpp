@@ -1,8 +1,13 @@
 #include "app_test_support.h"
 
 #include <QApplication>
+#include <QFileDialog>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
 #include <QMutex>
 #include <QTest>
+#include <QTimer>
 #include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
@@ -72,6 +77,53 @@ void typeInto(QWidget* editor, const QString& text) {
 void waitForApply() {
   QTest::qWait(450);  // the panel applies 350 ms after the last edit
   QTest::qWait(50);   // and the views repaint
+}
+
+void whenModal(std::function<void(QWidget* dialog)> handle) {
+  auto* timer = new QTimer();
+  timer->setInterval(20);
+  QObject::connect(timer, &QTimer::timeout, [timer, handle] {
+    QWidget* dialog = QApplication::activeModalWidget();
+    if (!dialog || !dialog->isVisible()) return;
+    timer->stop();
+    timer->deleteLater();
+    handle(dialog);
+  });
+  timer->start();
+}
+
+void answerSaveDialog(const QString& path, QString* suggested) {
+  whenModal([path, suggested](QWidget* dialog) {
+    auto* files = qobject_cast<QFileDialog*>(dialog);
+    if (!files) {
+      dialog->close();
+      return;
+    }
+    auto* name = files->findChild<QLineEdit*>("fileNameEdit");
+    if (suggested) *suggested = name ? name->text() : QString();
+    if (!name) {
+      files->reject();
+      return;
+    }
+    // The whole path at once (typed letter by letter, the field's completer would open a list that takes
+    // the Enter key), then Enter as the reader presses it.
+    name->setFocus();
+    name->setText(path);
+    QTest::keyClick(name, Qt::Key_Return);
+    // Whatever else the dialog still wants (it should not), it must not hang the test.
+    if (files->isVisible()) files->reject();
+  });
+}
+
+QAction* menuAction(QWidget& window, const QString& menu, const QString& text) {
+  auto* bar = window.findChild<QMenuBar*>();
+  if (!bar) return nullptr;
+  for (QAction* top : bar->actions()) {
+    if (!top->menu() || QString(top->text()).remove('&') != menu) continue;
+    for (QAction* action : top->menu()->actions())
+      if (QString(action->text()).remove('&') == text) return action;
+  }
+  return nullptr;
 }
 
 QRect areaOf(QWidget* window, QWidget* widget) {

@@ -2,9 +2,11 @@
 // window on the repository's lessons (quick parameters), and pixel checks of the 3D views.
 #pragma once
 
+#include <QAction>
 #include <QImage>
 #include <QRect>
 #include <QStringList>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -27,6 +29,16 @@ std::unique_ptr<MainWindow> makeWindow(bool threaded = false, bool quick = true)
 void typeInto(QWidget* editor, const QString& text);
 // Waits until the parameter panel's pause has passed and its change was applied.
 void waitForApply();
+
+// Calls `handle` with the next modal dialog (a file dialog, a message box) once it is open, from the event
+// loop that runs it: the way a test answers a dialog that a menu action opens and waits for.
+void whenModal(std::function<void(QWidget* dialog)> handle);
+// Answers the next save dialog with `path` (typed into its file name field, then Enter) and returns, through
+// `suggested`, the name the dialog proposed before.
+void answerSaveDialog(const QString& path, QString* suggested);
+
+// The action `text` ("&" ignored) of the menu `menu` ("File", "View") of the window's menu bar, or null.
+QAction* menuAction(QWidget& window, const QString& menu, const QString& text);
 
 // The rectangle of `widget` inside the window's grab.
 QRect areaOf(QWidget* window, QWidget* widget);

@@ -9,7 +9,10 @@ namespace rt {
 
 Scene applyOverrides(const Scene& scene, const std::map<std::string, Rgb>& reflectance, double lightScale) {
   Scene result = scene;
-  for (const auto& [surfaceName, rho] : reflectance) {
+  for (const auto& entry : reflectance) {
+    const std::string& surfaceName =
+        entry.first;  // a plain name: clang 14 cannot capture a structured binding
+    const Rgb& rho = entry.second;
     auto it = std::find_if(result.surfaces.begin(), result.surfaces.end(),
                            [&](const Surface& s) { return s.name == surfaceName; });
     if (it == result.surfaces.end())

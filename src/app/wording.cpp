@@ -1,0 +1,41 @@
+#include "app/wording.h"
+
+#include <QCoreApplication>
+
+namespace rt::app {
+
+QString counted(long long n, const QString& singular, const QString& plural) {
+  const QString word = n == 1 ? singular : (plural.isEmpty() ? singular + "s" : plural);
+  return QString("%1 %2").arg(n).arg(word);
+}
+
+bool isStochasticSolver(const std::string& solver) {
+  return solver == "stochastic-jacobi" || solver == "random-walk";
+}
+
+QString iterationUnit(const std::string& solver) {
+  return solver == "bounces" ? QStringLiteral("bounce") : QStringLiteral("iteration");
+}
+
+QString statusText(const std::string& solver, SolverStatus status) {
+  // A stochastic solver runs until its ray budget is spent: that is the end it was built for, and what
+  // remains is noise, not a failure to converge.
+  if (status == SolverStatus::NoConvergence && isStochasticSolver(solver))
+    return QCoreApplication::translate("rt::app", "noise level reached");
+  return QString::fromStdString(toString(status));
+}
+
+QString solveSummary(const std::string& solver, SolverStatus status, int iterations, double residual) {
+  return QString("%1: %2 after %3, residual %4")
+      .arg(QString::fromStdString(solver), statusText(solver, status),
+           counted(iterations, iterationUnit(solver)))
+      .arg(residual, 0, 'g', 3);
+}
+
+QString solveSummary(const PipelineResult& r) {
+  int count = r.iterations;
+  if (r.solverName == "bounces" && !r.history.empty()) count = static_cast<int>(r.history.size()) - 1;
+  return solveSummary(r.solverName, r.status, count, r.residual);
+}
+
+}  // namespace rt::app

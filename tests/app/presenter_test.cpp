@@ -1,0 +1,130 @@
+// Presenter mode at 1920 x 1080, for the back of a lecture hall: body text of 28 px at least, the zoom keys,
+// a step of text over the whole screen, the step's figure large in the main pane, and every font (the chart's
+// too) given back on leaving. Screenshots of a text, an equation, a figure and a chart step are written to
+// build/.../tests/screenshots for a reader to look at.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QDir>
+#include <QMap>
+#include <QTest>
+#include <QTextBlock>
+#include <QTextBrowser>
+
+#include "app/figures_pane.h"
+#include "app/lesson_session.h"
+#include "app/residual_chart.h"
+#include "app/screenshot.h"
+#include "app_test_support.h"
+
+using namespace rt::app;
+
+namespace {
+
+int bodyPixels(MainWindow& window) {
+  return QFontInfo(window.textView()->document()->defaultFont()).pixelSize();
+}
+
+// The smallest size of the step's equations (the Markdown code blocks, in a fixed font), or 0 without any.
+int smallestEquationPixels(MainWindow& window) {
+  int smallest = 0;
+  for (QTextBlock block = window.textView()->document()->begin(); block.isValid(); block = block.next())
+    for (auto it = block.begin(); !it.atEnd(); ++it) {
+      const QTextCharFormat format = it.fragment().charFormat();
+      if (!QFontInfo(format.font()).fixedPitch() && !format.fontFixedPitch()) continue;
+      const int pixels = QFontInfo(format.font()).pixelSize();
+      smallest = smallest == 0 ? pixels : std::min(smallest, pixels);
+    }
+  return smallest;
+}
+
+void shoot(MainWindow& window, const char* name) {
+  QTest::qWait(100);
+  QDir().mkpath(RT_BINARY_DIR "/tests/screenshots");
+  const QImage image = grabWindow(window);
+  image.save(QString(RT_BINARY_DIR "/tests/screenshots/presenter-%1.png").arg(name));
+  EXPECT_GT(pixelStatistics(image).distinctColours, 8) << name;
+}
+
+QMap<QWidget*, QString> fontsOf(QWidget& window) {
+  QMap<QWidget*, QString> fonts;
+  for (QWidget* w : window.findChildren<QWidget*>()) fonts[w] = w->font().toString();
+  return fonts;
+}
+
+void press(MainWindow& window, int key, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+  QTest::keyClick(&window, static_cast<Qt::Key>(key), modifiers);
+}
+
+}  // namespace
+
+TEST(Presenter, LargeTextZoomAndTheWholeScreenForText) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->resize(1920, 1080);
+  ASSERT_TRUE(window->openLesson("hemicube", 0));  // a step of text
+  window->activateWindow();
+  QApplication::setActiveWindow(window.get());
+  const int normal = bodyPixels(*window);
+  press(*window, Qt::Key_F11);
+  ASSERT_TRUE(window->presenterMode());
+  QTest::qWait(200);
+  EXPECT_GE(bodyPixels(*window), 28);
+  EXPECT_GT(bodyPixels(*window), normal);
+  // The step's equations ("delta F_top = ...") are as large as the text.
+  ASSERT_GT(smallestEquationPixels(*window), 0) << "the step has no equation to check";
+  EXPECT_GE(smallestEquationPixels(*window), bodyPixels(*window));
+  // The text of a text step covers the screen, not a column of it.
+  EXPECT_GT(window->textView()->width(), window->width() * 8 / 10);
+  shoot(*window, "text");
+  const int before = bodyPixels(*window);
+  press(*window, Qt::Key_Plus, Qt::ControlModifier);
+  EXPECT_GT(bodyPixels(*window), before);
+  press(*window, Qt::Key_Minus, Qt::ControlModifier);
+  press(*window, Qt::Key_Minus, Qt::ControlModifier);
+  EXPECT_LT(bodyPixels(*window), before);
+  press(*window, Qt::Key_Escape);
+  EXPECT_FALSE(window->presenterMode());
+  EXPECT_EQ(bodyPixels(*window), normal);
+}
+
+TEST(Presenter, EquationFigureAndChartStepsAndEveryFontBack) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->resize(1920, 1080);
+  ASSERT_TRUE(window->openLesson("gathering", 0));
+  QTest::qWait(100);
+  const QMap<QWidget*, QString> fonts = fontsOf(*window);
+  const QString chartFont = window->residualChart()->labelsFont().toString();
+  window->activateWindow();
+  QApplication::setActiveWindow(window.get());
+  press(*window, Qt::Key_F11);
+  ASSERT_TRUE(window->presenterMode());
+  EXPECT_NE(window->residualChart()->labelsFont().toString(), chartFont);
+  shoot(*window, "chart");
+  ASSERT_TRUE(window->openLesson("rendering-equation", 1));
+  shoot(*window, "equation");
+  ASSERT_TRUE(window->openLesson("hemicube", 1));
+  press(*window, Qt::Key_F);  // the step's figure in the main pane
+  EXPECT_TRUE(window->largeFigure());
+  QTest::qWait(100);
+  EXPECT_GT(window->figuresPane()->width(), window->width() / 2);
+  shoot(*window, "figure");
+  press(*window, Qt::Key_Escape);
+  ASSERT_FALSE(window->presenterMode());
+  EXPECT_FALSE(window->largeFigure());
+  ASSERT_TRUE(window->openLesson("gathering", 0));
+  QApplication::processEvents();
+  EXPECT_EQ(window->residualChart()->labelsFont().toString(), chartFont);
+  int differ = 0;
+  for (auto it = fonts.begin(); it != fonts.end(); ++it) {
+    if (!window->findChildren<QWidget*>().contains(it.key())) continue;  // a widget of another step
+    if (it.key()->font().toString() != it.value()) {
+      ++differ;
+      ADD_FAILURE() << it.key()->metaObject()->className() << " " << it.key()->objectName().toStdString()
+                    << ": " << it.value().toStdString() << " -> "
+                    << it.key()->font().toString().toStdString();
+    }
+  }
+  EXPECT_EQ(differ, 0);
+}
