@@ -176,13 +176,6 @@ void chartFigure(const Computed& c, const FigureRequest& a) {
 
 }  // namespace detail
 
-const std::vector<std::string>& figureViewNames() {
-  static const std::vector<std::string> names{"scene",  "formfactor", "hemicube",    "nusselt",
-                                              "rays",   "matrix",     "convergence", "runtime-error",
-                                              "energy", "visibility", "links",       "discontinuity"};
-  return names;
-}
-
 void drawTimingTableFigure(const FigureRequest& a) {
   figureFormatOf(a.output);  // reject an unknown extension before any work
   if (a.view != "runtime-error") throw std::invalid_argument("--input belongs to the runtime-error view");

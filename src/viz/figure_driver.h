@@ -12,9 +12,6 @@
 
 namespace rt::viz {
 
-// The views drawFigure knows, in the order `--help` lists them.
-const std::vector<std::string>& figureViewNames();
-
 // Writes request.output. Throws std::invalid_argument for a request that does not fit the scene (an element
 // out of range, a part the view does not have), std::runtime_error when drawing fails.
 void drawFigure(const Scene& scene, const MeshOptions& mesh, const FigureRequest& request);

@@ -12,6 +12,15 @@
 
 namespace rt::viz {
 
+// The views `radiosity figure` draws, in the order `--help` lists them (here, not in the driver, so that a
+// build without the viz library still parses the option and says it cannot draw).
+inline const std::vector<std::string>& figureViewNames() {
+  static const std::vector<std::string> names{"scene",  "formfactor", "hemicube",    "nusselt",
+                                              "rays",   "matrix",     "convergence", "runtime-error",
+                                              "energy", "visibility", "links",       "discontinuity"};
+  return names;
+}
+
 struct FigureRequest {
   std::string view = "scene", output;  // see figureViewNames(); output: .png, .svg or .pdf
   int width = 1200, height = 900;
