@@ -25,7 +25,9 @@ struct FigureRequest {
   std::string view = "scene", output;  // see figureViewNames(); output: .png, .svg or .pdf
   int width = 1200, height = 900;
   double dpi = 96;
-  std::string formFactors = "analytic-visibility", referenceFormFactors, solver;
+  // The form-factor method: the caller sets it (the CLI from the table of step keys, which holds the
+  // default).
+  std::string formFactors, referenceFormFactors, solver;
   int resolution = 128, samples = 16, maxIterations = 0;
   // Whether the reader gave these (otherwise each view picks a telling default).
   bool solverGiven = false, iterationsGiven = false, referenceGiven = false, resolutionGiven = false,
