@@ -123,6 +123,18 @@ TEST(AnalyticFormFactor, HingedSquaresAtAnyAngle) {
   EXPECT_EQ(hingedSquares(180), 0.0);
 }
 
+TEST(AnalyticFormFactor, AlmostCollinearSharedEdgesEndQuickly) {
+  // Meshing in millimetres rounds a shared edge's ends differently on its two sides, so two edges that should
+  // be collinear meet at an angle of 1e-12 to 1e-9 rad. The integration used to bisect the whole overlap down
+  // to 1e-15 of its length (2^50 panels: a hang); it now grades towards the ends only. The value moves by
+  // about the size of the perturbation.
+  for (double tilt : {1e-12, 1e-10, 1e-8}) {
+    const Polygon source = {{0, 0, 0}, {40, 0, 0}, {40, 40, 0}, {0, 40, 0}};
+    const Polygon receiver = {{tilt, 0, 0}, {0, 40, 0}, {0, 40, 40}, {0, 0, 40}};
+    EXPECT_NEAR(polygonToPolygonFormFactor(source, receiver), 0.20004377607540315424, 1e-7) << tilt;
+  }
+}
+
 TEST(AnalyticFormFactor, SliverTriangleStandingOnASharedEdge) {
   // A 1000:1 triangle standing on the square's edge: its long edges meet the shared edge at 1/500 rad.
   const Polygon square = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};

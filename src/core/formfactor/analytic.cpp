@@ -50,32 +50,43 @@ double innerIntegral(const Vec3& p, const Segment& b) {
   return logLineIntegral(b.length - foot, h) - logLineIntegral(-foot, h);
 }
 
-// Smallest distance between the segments [p0, p1] and b (Ericson, Real-Time Collision Detection, 5.1.9).
-double segmentDistance(const Vec3& p0, const Vec3& p1, const Segment& b) {
-  const Vec3 d1 = p1 - p0, d2 = b.direction * b.length, r = p0 - b.start;
-  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-  double s = 0, t = 0;
-  if (a <= 0 && e <= 0) return r.norm();
-  if (a <= 0) {
-    t = std::clamp(f / e, 0.0, 1.0);
-  } else {
-    const double c = d1.dot(r);
-    if (e <= 0) {
-      s = std::clamp(-c / a, 0.0, 1.0);
-    } else {
-      const double bb = d1.dot(d2), denominator = a * e - bb * bb;
-      s = denominator > 0 ? std::clamp((bb * f - c * e) / denominator, 0.0, 1.0) : 0.0;
-      t = (bb * s + f) / e;
-      if (t < 0) {
-        t = 0;
-        s = std::clamp(-c / a, 0.0, 1.0);
-      } else if (t > 1) {
-        t = 1;
-        s = std::clamp((bb - c) / a, 0.0, 1.0);
-      }
-    }
-  }
-  return (p0 + s * d1 - (b.start + t * d2)).norm();
+// Distance from the point q to the part [s0, s1] of segment a.
+double pointPanelDistance(const Segment& a, double s0, double s1, const Vec3& q) {
+  const double s = std::clamp((q - a.start).dot(a.direction), s0, s1);
+  return (a.start + s * a.direction - q).norm();
+}
+
+// Where the inner integral I(s) = int_b ln |a(s) - q| dq stops being analytic. In closed form (innerIntegral)
+// it depends on s through |a(s) - end|^2 for the two ends of b, and through the distance h(s) of a(s) from
+// b's line, whose square is a quadratic in s. So its complex singularities are (1) at s_e +- i d_e for each
+// end e of b, s_e the foot of e on a and d_e its distance from a's line, and (2) at s* +- i h_min / sine,
+// with s* the closest approach of the two lines. The distance from a real panel to the points of (1) is the
+// 3D distance from the panel to e; for (2) it is hypot(distance from s* to the panel, h_min / sine). These
+// are isolated points, so bisecting towards them ends after a logarithmic number of panels, for every
+// configuration. (Grading towards the whole of b instead never ends for edges that are almost collinear
+// over a long stretch: every panel stays closer to b than its own length.)
+struct Singularities {
+  Vec3 end0, end1;
+  double closest = 0;    // s*
+  double imaginary = 0;  // h_min / sine
+};
+
+Singularities singularitiesOf(const Segment& a, const Segment& b, double sine) {
+  Singularities out{b.start, b.start + b.length * b.direction, 0, 0};
+  const Vec3 w = a.start - b.start;
+  const double cosine = a.direction.dot(b.direction), d = a.direction.dot(w), e = b.direction.dot(w);
+  const double denominator = sine * sine;
+  out.closest = (cosine * e - d) / denominator;
+  const double t = (e - cosine * d) / denominator;
+  const double hMin = (w + out.closest * a.direction - t * b.direction).norm();
+  out.imaginary = hMin / sine;
+  return out;
+}
+
+double singularityDistance(const Segment& a, double s0, double s1, const Singularities& z) {
+  const double real = std::max({0.0, s0 - z.closest, z.closest - s1});
+  return std::min({pointPanelDistance(a, s0, s1, z.end0), pointPanelDistance(a, s0, s1, z.end1),
+                   std::hypot(real, z.imaginary)});
 }
 
 // Number of Gauss-Legendre points for a panel whose nearest singularity is `ratio` panel lengths away: the
@@ -96,18 +107,21 @@ double integratePanel(const Segment& a, const Segment& b, double s0, double s1, 
   return sum * length;
 }
 
-// int over [s0, s1] of the inner integral. The integrand is analytic except where a point of a meets b; its
-// nearest complex singularity is exactly as far from the real axis as the panel is from b. So a panel at
-// least its own length away from b gets one Gauss rule (order from that ratio); closer panels are bisected,
-// which grades them geometrically towards any touching point and keeps every rule converged.
-double integrateAdaptive(const Segment& a, const Segment& b, double s0, double s1, double floor) {
+// int over [s0, s1] of the inner integral. A panel at least its own length away from every singularity of
+// the integrand gets one Gauss rule (order from that ratio); closer panels are bisected, which grades them
+// geometrically towards each singularity and keeps every rule converged. The depth bound is a safety net:
+// with isolated singularities the floor ends the recursion first.
+double integrateAdaptive(const Segment& a, const Segment& b, const Singularities& z, double s0, double s1,
+                         double floor, int depth = 0) {
+  constexpr int kMaxDepth = 64;
   const double length = s1 - s0;
   if (length <= 0) return 0;
-  const Vec3 p0 = a.start + s0 * a.direction, p1 = a.start + s1 * a.direction;
-  const double distance = segmentDistance(p0, p1, b);
-  if (distance >= length || length <= floor) return integratePanel(a, b, s0, s1, distance);
+  const double distance = singularityDistance(a, s0, s1, z);
+  if (distance >= length || length <= floor || depth >= kMaxDepth)
+    return integratePanel(a, b, s0, s1, distance);
   const double middle = 0.5 * (s0 + s1);
-  return integrateAdaptive(a, b, s0, middle, floor) + integrateAdaptive(a, b, middle, s1, floor);
+  return integrateAdaptive(a, b, z, s0, middle, floor, depth + 1) +
+         integrateAdaptive(a, b, z, middle, s1, floor, depth + 1);
 }
 
 // int_a int_b ln r ds dt over two segments (arc length).
@@ -124,7 +138,8 @@ double edgePairIntegral(const Segment& a, const Segment& b) {
     return logLineIntegral2(a.length - lo, h) - logLineIntegral2(-lo, h) -
            logLineIntegral2(a.length - hi, h) + logLineIntegral2(-hi, h);
   }
-  return integrateAdaptive(a, b, 0, a.length, 1e-15 * std::max(a.length, b.length));
+  return integrateAdaptive(a, b, singularitiesOf(a, b, sine), 0, a.length,
+                           1e-15 * std::max(a.length, b.length));
 }
 
 Vec3 unitNormal(const Vec3* v, int n) {
