@@ -56,6 +56,8 @@ QString sceneSummary(const PipelineResult& r) {
   if (!r.solverName.empty()) md += QString("Solver %1.\n\n").arg(solveSummary(r));
   if (!r.note.empty()) md += QString("*%1*\n\n").arg(QString::fromStdString(r.note));
   for (const auto& w : r.scene->warnings) md += QString("- warning: %1\n").arg(QString::fromStdString(w));
+  for (const auto& w : r.formFactorStats.warnings)
+    md += QString("- warning: %1\n").arg(QString::fromStdString(w));
   md += "\nChange the parameters on the right; click an element to see its row of the form-factor matrix.\n";
   return md;
 }

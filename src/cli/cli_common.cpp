@@ -46,8 +46,14 @@ FormFactorMatrix computeFormFactorsReporting(const Mesh& mesh, const std::string
   FormFactorStats stats;
   FormFactorMatrix F = method->compute(mesh, options, progress, stats);
   progress.finish();
-  std::cerr << "form factors (" << method->name() << "): " << stats.summary() << "\n";
+  reportFormFactorStats(std::cerr, "form factors (" + method->name() + ")", stats);
   return F;
+}
+
+void reportFormFactorStats(std::ostream& out, const std::string& method, const FormFactorStats& stats) {
+  out << method << ": " << stats.summary() << "\n";
+  out.flush();
+  for (const std::string& w : stats.warnings) std::cerr << "warning: " << w << "\n";
 }
 
 ProgressLine::ProgressLine(bool enabled) : enabled_(enabled), terminal_(isatty(STDERR_FILENO) != 0) {}

@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <ostream>
 #include <string>
 
 #include "core/formfactor/formfactor_method.h"
@@ -38,6 +39,9 @@ struct MeshArguments {
 Scene loadSceneReportingWarnings(const std::string& path);
 
 class ProgressLine;
+
+// Prints "METHOD: summary" to `out` and the method's warnings to stderr.
+void reportFormFactorStats(std::ostream& out, const std::string& method, const FormFactorStats& stats);
 
 // Computes F with the named method, showing progress, and prints the method's one-line summary to stderr.
 FormFactorMatrix computeFormFactorsReporting(const Mesh& mesh, const std::string& method,

@@ -75,7 +75,7 @@ void run(const FormFactorsArguments& a) {
     normalizeRows(F);
     repairs += " (rows normalised)";
   }
-  std::cout << a.method << ": " << stats.summary() << "\n";
+  reportFormFactorStats(std::cout, a.method, stats);
   std::cout << "diagnostics: " << diagnose(F, areas).summary() << repairs << "\n";
   std::cout.flush();
   if (!a.compareTo.empty()) printComparison(F, reference, a.compareTo);

@@ -189,7 +189,7 @@ void run(const SolveArguments& a) {
   Pipeline pipeline;
   const auto cached = pipeline.formFactors(mesh, formFactors, ffOptions, progress);
   progress.finish();
-  std::cerr << formFactors << ": " << cached->stats.summary() << "\n";
+  reportFormFactorStats(std::cerr, formFactors, cached->stats);
   const SolveOutcome outcome =
       solveRadiosity(RadiositySystem::fromMesh(mesh, cached->F), name, solverOptions(a), false, progress,
                      a.verbose ? std::function<void(const IterationRecord&)>(printIteration)

@@ -29,8 +29,8 @@ class ExactMethod : public FormFactorMethod {
     return "exact reference: visibility by exact 2D Booleans (CGAL), Lambert's formula, adaptive cubature to "
            "--tolerance";
   }
-  FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
-                           FormFactorStats& stats) const override {
+  FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
+                                 FormFactorStats& stats) const override {
     return exactFormFactors(mesh, exactOptionsFor(options.tolerance), progress, &stats, options.threads).F;
   }
 };

@@ -18,6 +18,7 @@ FormFactorMatrix formFactors(const Computed& c, const std::string& name, const F
   options.samples = a.samples;
   const auto cached = c.pipeline.formFactors(c.mesh, name, options, progressOf(a));
   say(a, "form factors (", name, "): ", cached->stats.summary());
+  for (const std::string& w : cached->stats.warnings) say(a, "warning: ", w);
   return cached->F;
 }
 

@@ -51,6 +51,24 @@ std::string matrixCommand(const std::string& scene, const std::string& arguments
   return cliPath() + " matrix " + sourcePath("scenes/" + scene) + " --no-subdivide " + arguments;
 }
 
+TEST(MatrixCommand, AMethodThatIgnoresOccludersWarnsOnTheCornellBox) {
+  // The blocks hide walls from the floor; analytic counts that light anyway. Nothing used to say so.
+  const std::string dir = scratchDir("matrix-occluded");
+  std::string log;
+  ASSERT_EQ(
+      runCommand(matrixCommand("cornell-box.json", "--method analytic --what F --output " + dir + "/F.csv"),
+                 &log),
+      0)
+      << log;
+  EXPECT_NE(log.find("warning: analytic ignored occluders for"), std::string::npos) << log;
+  EXPECT_NE(log.find("rows of F sum to more than 1 (up to 1.2"), std::string::npos) << log;
+  // The default method accounts for the blocks: no warning.
+  ASSERT_EQ(runCommand(matrixCommand("cornell-box.json", "--what F --output " + dir + "/F2.csv"), &log), 0)
+      << log;
+  EXPECT_EQ(log.find("ignored occluders"), std::string::npos) << log;
+  EXPECT_EQ(log.find("more than 1"), std::string::npos) << log;
+}
+
 TEST(MatrixCommand, KOfTheParallelSquaresAsCsvWithItsNumbers) {
   const std::string out = scratchDir("matrix-k") + "/K.csv";
   std::string log;

@@ -107,6 +107,25 @@ TEST(FormFactorMethods, VisibilityReducesOccludedPairsOnly) {
   for (int i = 4; i < 8; ++i) EXPECT_NEAR(shadowed.row(i).sum(), 1.0, 0.03) << i;
 }
 
+TEST(FormFactorMethods, IgnoringOccludersOnAnOccludedSceneWarns) {
+  // The block hides part of the ceiling from the floor: analytic counts that light anyway, so floor rows sum
+  // above 1. Both facts are warnings in the stats every command prints; the visibility-aware method has none.
+  const Mesh mesh = test::meshOf(test::roomWithBlock(), 2);
+  FormFactorStats open, shadowed, closed;
+  runMethod("analytic", mesh, {}, &open);
+  ASSERT_EQ(open.warnings.size(), 2u);
+  EXPECT_GT(open.pairsOccludersIgnored, 0u);
+  EXPECT_NE(open.warnings[0].find("analytic ignored occluders for"), std::string::npos) << open.warnings[0];
+  EXPECT_NE(open.warnings[1].find("rows of F sum to more than 1"), std::string::npos) << open.warnings[1];
+  FormFactorOptions rays;
+  rays.samples = 256;  // visibility noise well under the 1 % a ray-cast row may overshoot without a warning
+  runMethod("analytic-visibility", mesh, rays, &shadowed);
+  EXPECT_TRUE(shadowed.warnings.empty()) << shadowed.warnings.front();
+  // Where nothing can be occluded, analytic is exact and says nothing.
+  runMethod("analytic", test::meshOf(test::closedBox(1, 2, 3), 2), {}, &closed);
+  EXPECT_TRUE(closed.warnings.empty()) << closed.warnings.front();
+}
+
 // raycast: without occluders the estimator is a stratified quadrature of Lambert's point formula, which is
 // bounded but has a logarithmic derivative at edges shared with j: jittered sampling then converges like N^-1
 // (not N^-3/2). With N = 64 the measured worst entry error is ~1e-2 for adjacent elements, so entries are

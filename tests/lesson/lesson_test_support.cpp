@@ -17,8 +17,8 @@ class ClosedFormMethod : public FormFactorMethod {
  public:
   std::string name() const override { return "analytic"; }
   std::string description() const override { return "closed form, unoccluded (test stand-in)"; }
-  FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions&, Progress&,
-                           FormFactorStats& stats) const override {
+  FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions&, Progress&,
+                                 FormFactorStats& stats) const override {
     const auto n = static_cast<Eigen::Index>(mesh.size());
     FormFactorMatrix F = FormFactorMatrix::Zero(n, n);
     for (Eigen::Index i = 0; i < n; ++i)

@@ -35,8 +35,8 @@ class AnalyticMethod : public FormFactorMethod {
                  "possible occluders"
                : "exact contour integral per pair, ignoring every occluder";
   }
-  FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
-                           FormFactorStats& stats) const override {
+  FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
+                                 FormFactorStats& stats) const override {
     const ShaftCulling shafts(mesh);
     std::unique_ptr<PairVisibility> visibility;
     if (visibility_ && shafts.occludablePatchPairs() > 0) visibility = std::make_unique<PairVisibility>(mesh);
@@ -58,6 +58,7 @@ class AnalyticMethod : public FormFactorMethod {
           return result;
         });
     const std::size_t occluded = occludable.load();
+    if (!visibility_) stats.pairsOccludersIgnored = occluded;
     if (!visibility_)
       stats.notes = occluded == 0
                         ? "exact: no pair can be occluded"

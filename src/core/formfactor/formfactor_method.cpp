@@ -22,6 +22,48 @@ std::mutex& registryMutex() {
 // Defined in formfactor_registry.cpp: registers the built-in methods once.
 void registerBuiltinFormFactorMethods();
 
+namespace {
+
+// Rows of F above 1 beyond round-off: the element would pass on more light than leaves it. Methods that cast
+// rays overshoot by their sampling noise (16 rays per pair: a few tenths of a percent in a closed room), which
+// their accuracy knob controls; only an overshoot well beyond that is worth a warning.
+constexpr double kRowSumSlack = 1e-6, kRowSumSlackWithRays = 1e-2;
+
+void addWarnings(const std::string& method, const FormFactorMatrix& F, FormFactorStats& stats) {
+  if (stats.pairsOccludersIgnored > 0)
+    stats.warnings.push_back(method + " ignored occluders for " +
+                             std::to_string(stats.pairsOccludersIgnored) +
+                             " element pairs whose line of sight may be blocked, so their F is too large; "
+                             "analytic-visibility or exact account for occluders");
+  const double slack = stats.raysCast > 0 ? kRowSumSlackWithRays : kRowSumSlack;
+  Eigen::Index above = 0, worst = 0;
+  double largest = 0;
+  for (Eigen::Index i = 0; i < F.rows(); ++i) {
+    const double sum = F.row(i).sum();
+    if (sum > 1 + slack) ++above;
+    if (sum > largest) largest = sum, worst = i;
+  }
+  if (above == 0) return;
+  char line[160];
+  std::snprintf(line, sizeof line, "%ld of %ld rows of F sum to more than 1 (up to %.6g, element %ld)",
+                static_cast<long>(above), static_cast<long>(F.rows()), largest, static_cast<long>(worst));
+  stats.warnings.push_back(std::string(line) +
+                           ": those elements would pass on more light than leaves them, and the solve "
+                           "overestimates. " +
+                           (stats.pairsOccludersIgnored > 0
+                                ? "Occluders were ignored (see above)."
+                                : "A finer method setting (or a finer mesh near shared edges) reduces it."));
+}
+
+}  // namespace
+
+FormFactorMatrix FormFactorMethod::compute(const Mesh& mesh, const FormFactorOptions& options,
+                                           Progress& progress, FormFactorStats& stats) const {
+  FormFactorMatrix F = computeMatrix(mesh, options, progress, stats);
+  addWarnings(name(), F, stats);
+  return F;
+}
+
 std::string FormFactorStats::summary() const {
   char line[512];
   std::snprintf(

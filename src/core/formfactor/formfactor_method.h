@@ -31,8 +31,12 @@ struct FormFactorStats {
   std::size_t pairsUnoccluded = 0;     // shaft proved empty: no visibility work
   std::size_t raysCast = 0;
   double seconds = 0.0;
-  double standardError = 0.0;   // stochastic methods: RMS standard error of the entries (0 otherwise)
-  std::string notes;            // e.g. "visibility by ray casting (16 rays/pair)"
+  double standardError = 0.0;  // stochastic methods: RMS standard error of the entries (0 otherwise)
+  std::size_t pairsOccludersIgnored = 0;  // pairs whose shaft may be blocked, computed as if it were not
+  std::string notes;                      // e.g. "visibility by ray casting (16 rays/pair)"
+  // What a user must know about the result: rows of F summing to more than 1, occluders ignored. Filled by
+  // FormFactorMethod::compute for every method, printed by every command and shown by the app.
+  std::vector<std::string> warnings;
   std::string summary() const;  // one line
 };
 
@@ -58,9 +62,14 @@ class FormFactorMethod {
   virtual std::string name() const = 0;
   virtual std::string description() const = 0;
   virtual AccuracyKnob knob() const { return {}; }
-  // The full n x n matrix for the mesh's elements. May throw Cancelled.
-  virtual FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
-                                   FormFactorStats& stats) const = 0;
+  // The full n x n matrix for the mesh's elements, checked: stats.warnings says what is wrong with it. May
+  // throw Cancelled.
+  FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
+                           FormFactorStats& stats) const;
+
+ protected:
+  virtual FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options,
+                                         Progress& progress, FormFactorStats& stats) const = 0;
 };
 
 using FormFactorMethodFactory = std::function<std::unique_ptr<FormFactorMethod>()>;

@@ -26,8 +26,8 @@ class HemicubeMethod : public FormFactorMethod {
   std::string description() const override {
     return "z-buffered hemicube at each element's centroid (Cohen & Greenberg 1985)";
   }
-  FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
-                           FormFactorStats& stats) const override {
+  FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
+                                 FormFactorStats& stats) const override {
     const int resolution = std::max(2, options.hemicubeResolution);
     for (int f = 0; f < 5; ++f) deltaFormFactors(resolution, static_cast<HemicubeFace>(f));  // warm the cache
     const auto n = static_cast<Eigen::Index>(mesh.size());

@@ -60,8 +60,8 @@ class HybridMethod : public FormFactorMethod {
            "estimate of what is hidden, rays in proportion to the form factor";
   }
 
-  FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
-                           FormFactorStats& stats) const override {
+  FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
+                                 FormFactorStats& stats) const override {
     const PairVisibility visibility(mesh);
     const std::vector<double> radii = elementRadii(mesh);
     const double raysPerUnitF = 100.0 * std::max(1, options.samples);

@@ -26,8 +26,8 @@ class NusseltMethod : public FormFactorMethod {
   std::string description() const override {
     return "Nusselt analog from each centroid: hemisphere projection, area on the base disk (unoccluded)";
   }
-  FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
-                           FormFactorStats& stats) const override {
+  FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
+                                 FormFactorStats& stats) const override {
     const int segments = std::max(4, options.samples);
     const auto n = static_cast<Eigen::Index>(mesh.size());
     FormFactorMatrix F = zeroFormFactorMatrix(n);

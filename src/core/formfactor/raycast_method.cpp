@@ -24,8 +24,8 @@ class RaycastMethod : public FormFactorMethod {
     return "N stratified sample pairs per element pair: Lambert point-to-element less the kernel of the "
            "sample pairs a ray finds hidden";
   }
-  FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
-                           FormFactorStats& stats) const override {
+  FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
+                                 FormFactorStats& stats) const override {
     const PairVisibility visibility(mesh);
     const int samples = std::clamp(options.samples, 1, 1024);
     auto integrate = [&](int i, int j) {
@@ -60,8 +60,8 @@ class MonteCarloMethod : public FormFactorMethod {
   std::string description() const override {
     return "cosine-distributed rays from uniform points on each element; N_ij / N_i estimates F_ij";
   }
-  FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
-                           FormFactorStats& stats) const override {
+  FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
+                                 FormFactorStats& stats) const override {
     const RayScene rays(mesh);
     const auto n = static_cast<Eigen::Index>(mesh.size());
     const int samples = std::max(1, options.samples);
