@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "cli/setting_options.h"
 #include "core/formfactor/formfactor_method.h"
+#include "core/io/scene_loader.h"
 #include "core/solvers/direct_solver.h"
 #include "core/solvers/solver.h"
 #ifdef RT_HAVE_VIZ
@@ -73,6 +74,7 @@ std::string firstBelow(const std::vector<Sample>& samples, double threshold) {
 
 void run(const BenchArguments& a) {
   const Scene scene = loadSceneReportingWarnings(a.scene);
+  requireLight(scene);
   MeshOptions meshOptions = a.mesh.options();
   if (!a.mesh.noSubdivide && a.mesh.subdivide == 0 && a.mesh.maxEdge == 0) {
     meshOptions.mode =

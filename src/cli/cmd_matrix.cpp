@@ -10,6 +10,7 @@
 #include "core/assembly.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/io/matrix_export.h"
+#include "core/io/scene_loader.h"
 #include "core/solvers/direct_solver.h"
 
 namespace rt::cli {
@@ -27,6 +28,7 @@ struct MatrixArguments {
 
 void run(const MatrixArguments& a) {
   const Scene scene = loadSceneReportingWarnings(a.scene);
+  if (a.what == "B") requireLight(scene);
   const Mesh mesh = buildMesh(scene, a.mesh.options());
   const MatrixFormat format = matrixFormatFromPath(a.output);  // fail before the expensive part
   const auto n = static_cast<int>(mesh.size());

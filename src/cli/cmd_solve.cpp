@@ -11,6 +11,7 @@
 #include "cli/output_paths.h"
 #include "cli/setting_options.h"
 #include "core/formfactor/formfactor_method.h"
+#include "core/io/scene_loader.h"
 #include "core/pipeline/pipeline.h"
 #include "core/refine/refine.h"
 #include "core/solvers/row_providers.h"
@@ -145,6 +146,7 @@ const char* noMatrixProblem(const std::string& solverName, const std::string& fo
 void run(const SolveArguments& a) {
   checkOutputPaths({a.output, a.image});  // before the expensive part, not after it
   const Scene scene = loadSceneReportingWarnings(a.scene);
+  requireLight(scene);
   if (!a.refineMode.empty()) return runRefined(a, scene);
   const std::string solverName = !a.solver.empty() ? a.solver
                                  : a.noMatrix      ? std::string("southwell")

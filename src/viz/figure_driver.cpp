@@ -1,4 +1,5 @@
 #include "viz/figure_driver.h"
+#include "core/io/scene_loader.h"
 
 #include <stdexcept>
 
@@ -187,6 +188,10 @@ void drawFigure(const Scene& scene, const MeshOptions& meshOptions, const Figure
   figureFormatOf(a.output);  // reject an unknown extension before any computation
   const Computed c{scene, buildMesh(scene, meshOptions), Pipeline{}};
   const bool refinedView = a.view == "links" || a.view == "discontinuity";
+  // Views of the solution need a light; views of geometry and form factors do not.
+  if ((a.view == "scene" && a.colour == "radiosity") || a.view == "convergence" || a.view == "energy" ||
+      refinedView)
+    requireLight(scene);
   for (auto [value, name] : {std::pair{refinedView ? -1 : a.element, "--element"},
                              {a.target, "--target"},
                              {a.row, "--row"},

@@ -77,5 +77,25 @@ TEST(ExitCodes, LightFacingAwayIsReportedByTheSolve) {
   EXPECT_NE(log.find("warning: no light reaches any surface"), std::string::npos) << log;
 }
 
+TEST(ExitCodes, FormFactorsNeedNoLightButASolveDoes) {
+  // Two parallel squares, neither emitting: F is pure geometry, so formfactors and matrix --what F work;
+  // solve and the radiosity view refuse, naming the file.
+  const std::string path = scratchScene("dark.json", R"({
+  "materials": [{"name": "white", "reflectance": [0.5, 0.5, 0.5]}],
+  "surfaces": [
+    {"name": "lower", "material": "white", "polygons": [[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]]},
+    {"name": "upper", "material": "white", "polygons": [[[0, 0, 1], [0, 1, 1], [1, 1, 1], [1, 0, 1]]]}]
+})");
+  std::string log;
+  EXPECT_EQ(runCommand(cliPath() + " formfactors " + path + " --no-subdivide --quiet", &log), 0) << log;
+  EXPECT_NE(log.find("2 elements"), std::string::npos) << log;
+  EXPECT_EQ(
+      runCommand(cliPath() + " matrix " + path + " --no-subdivide --what F --output " + path + ".csv", &log),
+      0)
+      << log;
+  EXPECT_EQ(runCommand(cliPath() + " solve " + path + " --no-subdivide", &log), kInput) << log;
+  EXPECT_NE(log.find("dark.json: error: no light"), std::string::npos) << log;
+}
+
 }  // namespace
 }  // namespace rt::test

@@ -103,9 +103,16 @@ TEST(SceneJson, RejectsInfiniteEmission) {
                  "bad.json:5", "number overflow parsing '1e999'");
 }
 
-TEST(SceneJson, RejectsSceneWithoutLight) {
-  expectRejected(replaced(kTwoSquares, "\"emission\": [1, 1, 1]", "\"emission\": [0, 0, 0]"), "bad.json",
-                 "no light");
+TEST(SceneJson, SceneWithoutLightLoadsButCannotBeSolved) {
+  const Scene s = parseSceneJson(replaced(kTwoSquares, "\"emission\": [1, 1, 1]", "\"emission\": [0, 0, 0]"),
+                                 "dark.json");
+  EXPECT_EQ(s.patches.size(), 2u);
+  try {
+    requireLight(s);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dark.json: error: no light"), std::string::npos) << e.what();
+  }
 }
 
 TEST(SceneJson, RejectsNaNAsSyntaxErrorWithLine) {

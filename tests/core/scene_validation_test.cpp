@@ -64,10 +64,16 @@ TEST(SceneValidation, RejectsBadMaterials) {
   EXPECT_NE(rejection(s).find("negative"), std::string::npos) << rejection(s);
 }
 
-TEST(SceneValidation, RejectsSceneWithoutLight) {
+TEST(SceneValidation, ASceneWithoutLightIsValidButASolveRefusesIt) {
   Scene s = validScene();
   s.materials[0].emission = Rgb::Zero();
-  EXPECT_NE(rejection(s).find("built.json: error: no light"), std::string::npos) << rejection(s);
+  EXPECT_NO_THROW(validateScene(s));
+  try {
+    requireLight(s);
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("built.json: error: no light"), std::string::npos) << e.what();
+  }
   s.patches.clear();
   EXPECT_NE(rejection(s).find("no polygons"), std::string::npos) << rejection(s);
 }

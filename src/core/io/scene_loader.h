@@ -25,8 +25,11 @@ using MtlSource = std::function<std::optional<std::string>(const std::string& pa
 Scene parseSceneObj(const std::string& text, const std::string& fileName, const MtlSource& mtlText);
 
 // Checks the invariants every loader guarantees (convex planar non-degenerate patches, finite coordinates,
-// reflectance in [0,1), emission >= 0 and finite, at least one emitter). Throws InputError naming the patch's
-// origin.
+// reflectance in [0,1), emission >= 0 and finite). Throws InputError naming the patch's origin.
 void validateScene(const Scene& scene);
+
+// A solve needs a light; form factors do not, so loading does not ask for one. Throws InputError naming the
+// scene file when no patch emits.
+void requireLight(const Scene& scene);
 
 }  // namespace rt

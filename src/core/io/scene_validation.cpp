@@ -64,11 +64,15 @@ void validateScene(const Scene& scene) {
   }
   if (scene.patches.empty()) throw InputError(file, "the scene has no polygons");
   for (std::size_t i = 0; i < scene.patches.size(); ++i) checkPatch(scene, i);
-  if (!scene.hasEmitter())
-    throw InputError(file,
-                     "no light: none of the " + std::to_string(scene.patches.size()) +
-                         " patches has a material with positive emission, so every radiosity would be 0 "
-                         "(give a material an emission > 0 and use it on a surface)");
+}
+
+void requireLight(const Scene& scene) {
+  if (scene.hasEmitter()) return;
+  throw InputError({scene.sourceFile, 0, ""},
+                   "no light: none of the " + std::to_string(scene.patches.size()) +
+                       " patches has a material with positive emission, so every radiosity would be 0 "
+                       "(give a material an emission > 0 and use it on a surface; form factors and the "
+                       "matrix F need no light)");
 }
 
 }  // namespace rt

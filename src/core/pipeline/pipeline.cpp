@@ -4,6 +4,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "core/io/scene_loader.h"
 #include "core/pipeline/scene_overrides.h"
 
 namespace rt {
@@ -59,6 +60,7 @@ RgbField ambientEstimate(const Mesh& mesh) {
 }
 
 PipelineOutput Pipeline::run(const Scene& input, const PipelineSettings& settings, Progress& progress) {
+  requireLight(input);
   PipelineOutput out;
   auto scene = std::make_shared<Scene>(applyOverrides(input, settings.reflectance, settings.lightScale));
   out.scene = scene;
