@@ -249,6 +249,10 @@ void MainWindow::buildUi() {
   statusLabel_ = new QLabel(this);
   statusLabel_->setObjectName("statusMessage");
   progress_ = new ProgressStrip(this);
+  // Presenter mode hides the status bar; the class still has to see that something runs and how to stop it.
+  connect(progress_, &ProgressStrip::appeared, this, [this] {
+    if (presenter_) statusBar()->show();
+  });
   connect(progress_, &ProgressStrip::cancelRequested, this, [this] {
     cancelComputation();
     cancelFigureExport();

@@ -126,9 +126,7 @@ void MainWindow::finishFigureExport(const QString& message, bool ok) {
 }
 
 void MainWindow::showProgressStrip(const QString& what) {
-  progress_->begin(what);
-  // Presenter mode hides the status bar; the class still has to see that something runs and how to stop it.
-  if (presenter_) statusBar()->show();
+  progress_->begin(what);  // it appears after half a second; then appeared() shows the status bar if hidden
 }
 
 void MainWindow::hideProgressStrip() {

@@ -34,6 +34,13 @@ ProgressStrip::ProgressStrip(QWidget* parent) : QWidget(parent) {
     cancel_->setEnabled(false);  // one click is enough; the job stops at its next progress check
     emit cancelRequested();
   });
+  showTimer_.setSingleShot(true);
+  showTimer_.setInterval(kShowDelayMs);
+  connect(&showTimer_, &QTimer::timeout, this, [this] {
+    if (!active_) return;
+    show();
+    emit appeared();
+  });
   hide();
 }
 
@@ -46,7 +53,7 @@ void ProgressStrip::begin(const QString& what) {
   cancel_->setEnabled(true);
   stage_.clear();
   stageTimer_.start();
-  show();
+  showTimer_.start();
 }
 
 void ProgressStrip::setProgress(double fraction, const QString& stage) {
@@ -66,6 +73,7 @@ void ProgressStrip::setProgress(double fraction, const QString& stage) {
 
 void ProgressStrip::end() {
   active_ = false;
+  showTimer_.stop();
   hide();
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <QElapsedTimer>
+#include <QTimer>
 #include <QWidget>
 
 class QLabel;
@@ -18,7 +19,11 @@ class ProgressStrip : public QWidget {
  public:
   explicit ProgressStrip(QWidget* parent = nullptr);
 
-  // Shows the strip for a job called `what` (e.g. "Computing", "Writing the figures"), at 0 %.
+  // A job that ends sooner is not worth a flash of a progress bar.
+  static constexpr int kShowDelayMs = 500;
+
+  // Starts a job called `what` (e.g. "Computing", "Writing the figures") at 0 %; the strip appears when it
+  // is still running kShowDelayMs later.
   void begin(const QString& what);
   // `fraction` in [0, 1] of the job; `stage` names the part running now (e.g. "form factors (hemicube)").
   void setProgress(double fraction, const QString& stage);
@@ -34,6 +39,7 @@ class ProgressStrip : public QWidget {
 
  signals:
   void cancelRequested();
+  void appeared();  // the strip became visible (the window then shows its status bar in presenter mode)
 
  private:
   QString what_;
@@ -43,6 +49,7 @@ class ProgressStrip : public QWidget {
   bool active_ = false;
   QString stage_;
   QElapsedTimer stageTimer_;
+  QTimer showTimer_;
 };
 
 }  // namespace rt::app

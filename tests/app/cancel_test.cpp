@@ -76,10 +76,17 @@ TEST(Cancel, ProgressStripShowsTheJobAndItsButtonCancels) {
   p.subdivide = 24;
   p.method = "hemicube";
   p.resolution = 512;
+  QElapsedTimer sinceStart;
+  sinceStart.start();
   window->applyParameters(p);
   ASSERT_TRUE(window->busy());
+  // Not at once (a short job would only flash it), but after half a second.
   QApplication::processEvents();
+  EXPECT_FALSE(window->progressStrip()->isVisible());
+  while (!window->progressStrip()->isVisible() && sinceStart.elapsed() < 5000) QApplication::processEvents();
+  ASSERT_TRUE(window->busy());
   EXPECT_TRUE(window->progressStrip()->isVisible());
+  EXPECT_GE(sinceStart.elapsed(), ProgressStrip::kShowDelayMs - 10);
   EXPECT_TRUE(window->statusBar()->isVisible());
   QTest::mouseClick(window->progressStrip()->cancelButton(), Qt::LeftButton);
   ASSERT_TRUE(window->waitUntilIdle(60000));
@@ -87,6 +94,27 @@ TEST(Cancel, ProgressStripShowsTheJobAndItsButtonCancels) {
   EXPECT_FALSE(window->statusBar()->isVisible());
   EXPECT_EQ(window->result()->mesh, previousMesh);
   window->setPresenterMode(false);
+}
+
+TEST(Cancel, AShortJobDoesNotFlashTheStrip) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow(/*threaded=*/true);
+  ASSERT_TRUE(window->openScene(QString()));
+  ASSERT_TRUE(window->waitUntilIdle());
+  // A brighter light reuses F: a solve of a few milliseconds.
+  rt::lesson::StepParameters p = window->parameterPanel()->parameters();
+  p.lightScale = 2;
+  QElapsedTimer timer;
+  timer.start();
+  window->applyParameters(p);
+  bool shown = false;
+  while (window->busy() && timer.elapsed() < 60000) {
+    shown = shown || window->progressStrip()->isVisible();
+    QApplication::processEvents(QEventLoop::AllEvents, 5);
+  }
+  ASSERT_LT(timer.elapsed(), ProgressStrip::kShowDelayMs) << "the job was too long for this test";
+  EXPECT_FALSE(shown);
+  EXPECT_FALSE(window->progressStrip()->isVisible());
 }
 
 TEST(Cancel, LessonFigureExportRunsInTheBackgroundAndStopsOnCancel) {

@@ -25,7 +25,7 @@ TEST(ProgressPhases, TheStripShowsThePhaseAndTheMethodThatRuns) {
   subdivide->setFocus();
   QTest::mouseClick(subdivide, Qt::LeftButton);
   QTest::keyClick(subdivide, Qt::Key_A, Qt::ControlModifier);
-  QTest::keyClicks(subdivide, "8");
+  QTest::keyClicks(subdivide, "12");
   QTest::keyClick(subdivide, Qt::Key_Return);
   std::set<std::string> stages;
   bool shownWhileBusy = false;
