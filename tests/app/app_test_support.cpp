@@ -126,6 +126,53 @@ QAction* menuAction(QWidget& window, const QString& menu, const QString& text) {
   return nullptr;
 }
 
+namespace {
+
+QAction* itemNamed(QWidget* menu, const QString& text) {
+  for (QAction* action : menu->actions())
+    if (QString(action->text()).remove('&') == text) return action;
+  return nullptr;
+}
+
+}  // namespace
+
+bool clickMenuPath(QWidget& window, const QStringList& path, QString* why) {
+  auto fail = [why](const QString& reason) {
+    if (why) *why = reason;
+    QWidget* popup = QApplication::activePopupWidget();
+    while (popup) {  // close what opened, so the next test starts clean
+      popup->close();
+      popup = QApplication::activePopupWidget();
+    }
+    return false;
+  };
+  auto* bar = window.findChild<QMenuBar*>();
+  if (!bar || !bar->isVisible()) return fail("no visible menu bar");
+  window.activateWindow();
+  QApplication::setActiveWindow(&window);
+  QAction* top = itemNamed(bar, path.front());
+  if (!top || !top->menu()) return fail("no menu " + path.front());
+  QTest::mouseClick(bar, Qt::LeftButton, {}, bar->actionGeometry(top).center());
+  QMenu* menu = top->menu();
+  if (!QTest::qWaitFor([menu] { return menu->isVisible(); }, 2000))
+    return fail(path.front() + " did not open");
+  for (qsizetype k = 1; k < path.size(); ++k) {
+    QAction* item = itemNamed(menu, path[k]);
+    if (!item || !item->isVisible() || !item->isEnabled())
+      return fail(path[k] + " is missing, hidden or disabled in " + path[k - 1]);
+    const QPoint at = menu->actionGeometry(item).center();
+    QTest::mouseMove(menu, at);
+    QTest::mouseClick(menu, Qt::LeftButton, {}, at);
+    if (k + 1 < path.size()) {
+      menu = item->menu();
+      if (!menu || !QTest::qWaitFor([menu] { return menu->isVisible(); }, 2000))
+        return fail(path[k] + " opened no submenu");
+    }
+  }
+  QApplication::processEvents();
+  return true;
+}
+
 QRect areaOf(QWidget* window, QWidget* widget) {
   return QRect(widget->mapTo(window, QPoint(0, 0)), widget->size());
 }

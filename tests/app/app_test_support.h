@@ -40,6 +40,11 @@ void answerSaveDialog(const QString& path, QString* suggested);
 // The action `text` ("&" ignored) of the menu `menu` ("File", "View") of the window's menu bar, or null.
 QAction* menuAction(QWidget& window, const QString& menu, const QString& text);
 
+// Chooses menu > item (> subitem) as a user does: a mouse click on the menu's title in the menu bar, then on
+// each item in the menus that open. Returns false, with the reason in *why, when a menu did not open or an
+// item is missing, hidden or disabled.
+bool clickMenuPath(QWidget& window, const QStringList& path, QString* why = nullptr);
+
 // The rectangle of `widget` inside the window's grab.
 QRect areaOf(QWidget* window, QWidget* widget);
 

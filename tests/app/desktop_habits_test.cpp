@@ -41,6 +41,25 @@ TEST(DesktopHabits, MenusShowTheirShortcuts) {
   EXPECT_EQ(test::menuAction(*window, "Edit", "Redo")->shortcut(), QKeySequence("Ctrl+Shift+Z"));
 }
 
+TEST(DesktopHabits, MenuItemsChosenWithTheMouseAct) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+  ASSERT_TRUE(window->openLesson("gathering", 0));
+  ASSERT_TRUE(window->waitUntilIdle());
+  QString why;
+  ASSERT_TRUE(test::clickMenuPath(*window, {"Go", "Next step"}, &why)) << why.toStdString();
+  ASSERT_TRUE(window->waitUntilIdle());
+  EXPECT_EQ(window->currentStep(), 1);
+  ASSERT_TRUE(test::clickMenuPath(*window, {"Go", "Previous step"}, &why)) << why.toStdString();
+  ASSERT_TRUE(window->waitUntilIdle());
+  EXPECT_EQ(window->currentStep(), 0);
+  ASSERT_TRUE(test::clickMenuPath(*window, {"View", "Presenter mode"}, &why)) << why.toStdString();
+  EXPECT_TRUE(window->presenterMode());
+  window->setPresenterMode(false);
+}
+
 TEST(DesktopHabits, HelpKeysListsEveryKeyAndFilters) {
   RT_REQUIRE_DISPLAY();
   auto window = test::makeWindow();
@@ -75,9 +94,10 @@ TEST(DesktopHabits, HelpAboutNamesTheProgram) {
     if (auto* box = qobject_cast<QMessageBox*>(dialog)) text = box->text();
     dialog->close();
   });
-  QAction* about = test::menuAction(*window, "Help", "About Radiosity Textbook");
-  ASSERT_NE(about, nullptr);
-  about->trigger();
+  window->show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+  QString why;
+  ASSERT_TRUE(test::clickMenuPath(*window, {"Help", "About Radiosity Textbook"}, &why)) << why.toStdString();
   EXPECT_TRUE(text.contains("Radiosity Textbook")) << text.toStdString();
   EXPECT_TRUE(text.contains("lessons")) << text.toStdString();
 }
@@ -95,7 +115,14 @@ TEST(DesktopHabits, RecentFilesReopenAScene) {
   ASSERT_GE(recent->actions().size(), 1);
   QAction* first = recent->actions().front();
   EXPECT_TRUE(first->text().contains("parallel-squares.json")) << first->text().toStdString();
-  first->trigger();
+  // Chosen with the mouse: File, then the submenu, then the file.
+  window->show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+  QString why;
+  ASSERT_TRUE(test::clickMenuPath(
+      *window, {"File", recent->title().remove('&'), QString(first->text()).remove('&')}, &why))
+      << why.toStdString();
+  ASSERT_TRUE(window->waitUntilIdle());
   ASSERT_NE(window->result(), nullptr);
   EXPECT_EQ(window->result()->scene->patches.size(), 2u);
   QSettings().remove("recent/files");
