@@ -25,7 +25,33 @@ void FiguresPane::clear() {
     delete item;
   }
   figures_.clear();
+  files_.clear();
+  captions_.clear();
   count_ = 0;
+}
+
+bool FiguresPane::addFigure(const QString& path, const QString& text) {
+  QPixmap pixmap(path);
+  if (pixmap.isNull()) return false;  // vector-only formats are not shown here
+  auto* caption = new QLabel(text, content_);
+  caption->setWordWrap(true);
+  auto* image = new QLabel(content_);
+  image->setObjectName("figure");
+  figures_.push_back({image, pixmap});
+  files_.push_back(path);
+  captions_.push_back(text);
+  layout_->insertWidget(layout_->count() - 1, caption);
+  layout_->insertWidget(layout_->count() - 1, image);
+  ++count_;
+  return true;
+}
+
+int FiguresPane::showImages(const QStringList& files, const QStringList& captions) {
+  clear();
+  for (qsizetype k = 0; k < files.size(); ++k)
+    addFigure(files[k], k < captions.size() ? captions[k] : QString());
+  fitFigures();
+  return count_;
 }
 
 int FiguresPane::showStep(const lesson::Lesson& lesson, const lesson::Step& step,
@@ -43,20 +69,9 @@ int FiguresPane::showStep(const lesson::Lesson& lesson, const lesson::Step& step
   settings.height = 680;
   const auto figures = viz::renderStepFigures(lesson, others, result, dir.toStdString(), settings);
   const auto files = others.figureFiles();
-  for (std::size_t k = 0; k < files.size(); ++k) {
-    const QString path = QDir(dir).filePath(QString::fromStdString(files[k]));
-    QPixmap pixmap(path);
-    if (pixmap.isNull()) continue;  // vector-only formats are not shown here
-    auto* caption =
-        new QLabel(k < figures.size() ? QString::fromStdString(figures[k].caption) : QString(), content_);
-    caption->setWordWrap(true);
-    auto* image = new QLabel(content_);
-    image->setObjectName("figure");
-    figures_.push_back({image, pixmap});
-    layout_->insertWidget(layout_->count() - 1, caption);
-    layout_->insertWidget(layout_->count() - 1, image);
-    ++count_;
-  }
+  for (std::size_t k = 0; k < files.size(); ++k)
+    addFigure(QDir(dir).filePath(QString::fromStdString(files[k])),
+              k < figures.size() ? QString::fromStdString(figures[k].caption) : QString());
   fitFigures();
   return count_;
 }

@@ -5,6 +5,7 @@
 #include <QPixmap>
 #include <QScrollArea>
 #include <QString>
+#include <QStringList>
 #include <QTemporaryDir>
 #include <vector>
 
@@ -23,8 +24,13 @@ class FiguresPane : public QScrollArea {
   // Draws every view of the step except the live 3D scene view. Returns how many figures are shown; throws
   // std::runtime_error when drawing fails.
   int showStep(const lesson::Lesson& lesson, const lesson::Step& step, const lesson::StepResult& result);
+  // Shows figure images kept from an earlier run (a restored session's long step), under their captions.
+  int showImages(const QStringList& files, const QStringList& captions);
   void clear();
   int figureCount() const { return count_; }
+  // The image files and captions on show (to keep them with a long step's result).
+  const QStringList& files() const { return files_; }
+  const QStringList& captions() const { return captions_; }
   // Off: figures shrink to the pane's width, never grow past their own. On (a figure in the main pane): each
   // fills the pane's width and height, keeping its proportions.
   void setFillPane(bool fill);
@@ -37,11 +43,13 @@ class FiguresPane : public QScrollArea {
 
  private:
   void fitFigures();
+  bool addFigure(const QString& path, const QString& caption);
   struct Figure {
     QLabel* label;
     QPixmap original;
   };
   std::vector<Figure> figures_;
+  QStringList files_, captions_;
   QTemporaryDir folder_;
   QWidget* content_ = nullptr;
   QVBoxLayout* layout_ = nullptr;

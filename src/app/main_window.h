@@ -16,6 +16,7 @@
 #include "app/keys_dialog.h"
 #include "app/pipeline.h"
 #include "app/presenter_style.h"
+#include "app/step_result_cache.h"
 #include "lesson/lesson.h"
 
 class QAction;
@@ -78,6 +79,9 @@ class MainWindow : public QMainWindow {
   void setCompareChoice(const CompareChoice& choice);
   void setPresenterMode(bool on);
   bool presenterMode() const { return presenter_; }
+  // A restored session's long step shows what it showed last time, kept on disk, until the reader computes
+  // it.
+  bool showingKeptResult() const { return showingKept_; }
 
   // Exports (errors go to lastError() and a message box when visible; false then).
   // `size` empty: the view's size on screen.
@@ -159,8 +163,13 @@ class MainWindow : public QMainWindow {
   bool isLongStep(int lessonIndex, int step) const;
   // The restored session's parameters, over the step's or scene's own (once, by openStep / openScene).
   void applySessionParameters();
-  // How long the shown step took, so that a restored session knows a long one.
-  void recordComputeTime();
+  // How long the shown step took, so that a restored session knows a long one. Returns whether the step
+  // counts as long (a benchmark, or long this time or the last time).
+  bool recordComputeTime();
+  // A long step's text and figures, kept for a restored session (StepResultCache).
+  void keepStepResult();
+  // A restored session's long step: what it showed last time, if kept with the same parameters.
+  bool showKeptResult();
   void requestComputation();
   void showResult(std::shared_ptr<const PipelineResult> result);
   void showIteration(int index);
@@ -232,6 +241,8 @@ class MainWindow : public QMainWindow {
   QAction* largeFigureAction_ = nullptr;
   QMenu* recentMenu_ = nullptr;
   QPushButton* computeButton_ = nullptr;
+  StepResultCache stepCache_;
+  bool showingKept_ = false;
   QLabel* statusLabel_ = nullptr;
   ProgressStrip* progress_ = nullptr;
   LessonFigureExport* figureExport_ = nullptr;

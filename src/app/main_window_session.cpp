@@ -5,6 +5,7 @@
 #include <QDateTime>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLocale>
 #include <QPushButton>
 #include <QSettings>
 #include <QSplitter>
@@ -136,10 +137,38 @@ void MainWindow::applySessionParameters() {
   sessionParameters_.clear();
 }
 
-void MainWindow::recordComputeTime() {
-  if (mode_ != Mode::Lesson || !options_.screenshot.isEmpty()) return;
+bool MainWindow::recordComputeTime() {
+  if (mode_ != Mode::Lesson || !options_.screenshot.isEmpty()) return false;
   const auto& lesson = library_->lessons()[static_cast<std::size_t>(lesson_)];
-  QSettings().setValue(stepKey(lesson.id, step_), QDateTime::currentMSecsSinceEpoch() - computeStartedMs_);
+  const qint64 took = QDateTime::currentMSecsSinceEpoch() - computeStartedMs_;
+  const bool wasLong = isLongStep(lesson_, step_);
+  QSettings().setValue(stepKey(lesson.id, step_), took);
+  return wasLong || took > kLongStepMs;
+}
+
+void MainWindow::keepStepResult() {
+  const auto& lesson = library_->lessons()[static_cast<std::size_t>(lesson_)];
+  CachedStepResult kept;
+  kept.markdown = QString::fromStdString(result_->text);
+  kept.figures = figures_->files();
+  kept.captions = figures_->captions();
+  kept.computed = QDateTime::currentDateTime();
+  stepCache_.store(QString::fromStdString(lesson.id), step_, parameterMap(parameters_), kept);
+}
+
+bool MainWindow::showKeptResult() {
+  const auto& lesson = library_->lessons()[static_cast<std::size_t>(lesson_)];
+  const auto kept = stepCache_.load(QString::fromStdString(lesson.id), step_, parameterMap(parameters_));
+  if (!kept) return false;
+  showingKept_ = true;
+  const QString when = QLocale().toString(kept->computed, QLocale::ShortFormat);
+  setStepMarkdown(
+      tr("*The results of %1, kept from then: press **Compute this step** below, or F5, to run it "
+         "again.*\n\n%2")
+          .arg(when, kept->markdown));
+  if (figures_->showImages(kept->figures, kept->captions) > 0) tabs_->setCurrentWidget(figures_);
+  statusLabel_->setText(tr("Showing the results of %1: Go > Compute this step (F5) to recompute").arg(when));
+  return true;
 }
 
 bool MainWindow::isLongStep(int lessonIndex, int step) const {

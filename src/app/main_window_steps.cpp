@@ -140,6 +140,10 @@ bool MainWindow::openStep(int lessonIndex, int step) {
   rememberPosition();
   const bool defer = deferred_;
   computeButton_->setVisible(defer);
+  showingKept_ = false;
+  // The panel shows the step's own controls and values at once; the scene's surfaces come with the result.
+  if (defer) panel_->setStep(parameters_, s.controls, false, {});
+  if (defer && showKeptResult()) return true;
   if (defer) {
     // A long step of the restored session: the reader starts it.
     setStepMarkdown(tr("## %1\n\n*This step takes a while to compute (%2). It was not started on its own: "
@@ -279,7 +283,8 @@ bool MainWindow::waitUntilIdle(int timeoutMs) {
 void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   const bool newStep = newStepPending_ || !result_;
   newStepPending_ = false;
-  recordComputeTime();
+  showingKept_ = false;
+  const bool longStep = recordComputeTime();
   // The views still point at the previous mesh until they get the new one: keep it alive until then.
   const std::shared_ptr<const PipelineResult> previous = result_;
   result_ = std::move(result);
@@ -360,6 +365,7 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   }
   if (newStep && figures_->figureCount() == 0 && tabs_->currentWidget() == figures_)
     tabs_->setCurrentIndex(0);
+  if (longStep && step) keepStepResult();
 
   if (newStep) {
     std::vector<std::pair<QString, Rgb>> surfaces;

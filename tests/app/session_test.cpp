@@ -4,16 +4,20 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QDir>
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
 #include <QTest>
 #include <QTextBrowser>
 
+#include "app/figures_pane.h"
 #include "app/lesson_session.h"
 #include "app/parameter_panel.h"
 #include "app/scene_view.h"
+#include "app/step_result_cache.h"
 #include "app_test_support.h"
+#include "support/test_paths.h"
 
 using namespace rt::app;
 
@@ -98,4 +102,42 @@ TEST(Session, ABenchmarkWaitsForTheReaderAfterARestart) {
   window->waitUntilIdle();
   EXPECT_FALSE(compute->isVisible());
   QSettings().clear();
+}
+
+TEST(Session, ALongStepShowsWhatItShowedLastTimeAfterARestart) {
+  RT_REQUIRE_DISPLAY();
+  QSettings().clear();
+  const QString timing = "timing/hemicube/1";  // step 0 is the introduction
+  int figures = 0;
+  QString numbersShown;
+  {
+    // The step counts as long (it took 10 s last time): its result is kept when it is computed.
+    QSettings().setValue(timing, 10000);
+    auto window = test::makeWindow();
+    ASSERT_TRUE(window->openLesson("hemicube", 1));
+    ASSERT_TRUE(window->waitUntilIdle());
+    figures = window->figuresPane()->figureCount();
+    ASSERT_GT(figures, 0) << window->lastError().toStdString();
+    numbersShown = window->textView()->toPlainText();
+  }
+  QSettings().setValue(timing, 10000);  // as if it had taken that long again
+  auto window = test::makeWindow(/*threaded=*/true);
+  ASSERT_TRUE(window->start()) << window->lastError().toStdString();
+  EXPECT_TRUE(window->computationDeferred());
+  EXPECT_TRUE(window->showingKeptResult());
+  EXPECT_FALSE(window->busy()) << "the step was computed again on its own";
+  EXPECT_EQ(window->result(), nullptr);
+  // The same figures and the text with its numbers, dated, with the way to recompute.
+  EXPECT_EQ(window->figuresPane()->figureCount(), figures);
+  const QString text = window->textView()->toPlainText();
+  EXPECT_TRUE(text.contains("kept from then")) << text.toStdString();
+  const QString firstLine = numbersShown.section('\n', 2, 2);
+  EXPECT_TRUE(text.contains(firstLine)) << firstLine.toStdString() << "\n---\n" << text.toStdString();
+  auto* compute = window->findChild<QPushButton*>("computeButton");
+  ASSERT_NE(compute, nullptr);
+  EXPECT_TRUE(compute->isVisible());
+  QTest::qWait(100);
+  window->grab().save(QString::fromStdString(rt::test::scratchDir("app-session") + "/kept-result.png"));
+  QSettings().clear();
+  QDir(StepResultCache().folder()).removeRecursively();
 }
