@@ -75,7 +75,7 @@ void run(const BenchArguments& a) {
   ProgressLine progress;
 
   // The reference.
-  const bool occludable = ShaftCulling(mesh).occludablePatchPairs() > 0;
+  const bool occludable = ShaftCulling(mesh).anyOccluder();
   const auto names = formFactorMethodNames();
   const bool haveExact = std::find(names.begin(), names.end(), "exact") != names.end();
   std::string referenceMethod = "analytic";

@@ -39,7 +39,7 @@ class AnalyticMethod : public FormFactorMethod {
                                  FormFactorStats& stats) const override {
     const ShaftCulling shafts(mesh);
     std::unique_ptr<PairVisibility> visibility;
-    if (visibility_ && shafts.occludablePatchPairs() > 0) visibility = std::make_unique<PairVisibility>(mesh);
+    if (visibility_ && shafts.anyOccluder()) visibility = std::make_unique<PairVisibility>(mesh);
     std::atomic<std::size_t> occludable{0};
     const int samples = std::clamp(options.samples, 1, 1024);
     FormFactorMatrix F =

@@ -1,9 +1,48 @@
 #include "core/formfactor/shaft_culling.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <map>
+#include <tuple>
 
 namespace rt {
 namespace {
+
+// Patch pairs are tabulated when there are at most this many patches (the table holds P^2 / 2 lists) and
+// patches have at least two elements on average (otherwise the table is as much work as the pairs
+// themselves).
+constexpr std::size_t kMaxTabulatedPatches = 4096;
+
+double cross2(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
+}
+
+// The extreme points of planar points: Andrew's monotone chain in the plane's own 2D coordinates. A linear
+// function takes its minimum and maximum over the patch at these, so sides need only them.
+std::vector<Vec3> convexOutline(std::vector<Vec3> points, const Vec3& normal) {
+  if (points.size() <= 3) return points;
+  const Vec3 u = normal.unitOrthogonal(), v = normal.normalized().cross(u);
+  std::vector<std::pair<Eigen::Vector2d, int>> flat;
+  for (std::size_t k = 0; k < points.size(); ++k)
+    flat.push_back({{points[k].dot(u), points[k].dot(v)}, static_cast<int>(k)});
+  std::sort(flat.begin(), flat.end(), [](const auto& a, const auto& b) {
+    return std::tie(a.first.x(), a.first.y()) < std::tie(b.first.x(), b.first.y());
+  });
+  std::vector<std::pair<Eigen::Vector2d, int>> hull(2 * flat.size());
+  std::size_t h = 0;
+  for (std::size_t k = 0; k < flat.size(); ++k) {
+    while (h >= 2 && cross2(hull[h - 2].first, hull[h - 1].first, flat[k].first) <= 0) --h;
+    hull[h++] = flat[k];
+  }
+  for (std::size_t k = flat.size() - 1, lower = h + 1; k-- > 0;) {
+    while (h >= lower && cross2(hull[h - 2].first, hull[h - 1].first, flat[k].first) <= 0) --h;
+    hull[h++] = flat[k];
+  }
+  std::vector<Vec3> out;
+  for (std::size_t k = 0; k + 1 < h; ++k) out.push_back(points[static_cast<std::size_t>(hull[k].second)]);
+  return out.size() >= 3 ? out : points;
+}
 
 bool boxesOverlap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, double eps) {
   // Strict overlap: boxes that merely touch (a wall and the floor) do not count.
@@ -12,7 +51,7 @@ bool boxesOverlap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, do
 
 }  // namespace
 
-ShaftCulling::ShaftCulling(const Mesh& mesh) {
+ShaftCulling::ShaftCulling(const Mesh& mesh) : mesh_(mesh) {
   int maxPatch = -1;
   for (const Element& e : mesh.elements) maxPatch = std::max(maxPatch, e.patch);
   patchCount_ = static_cast<std::size_t>(maxPatch + 1);
@@ -24,6 +63,7 @@ ShaftCulling::ShaftCulling(const Mesh& mesh) {
 
   elementBoxes_.resize(n);
   elementPatch_.resize(n);
+  std::vector<std::vector<int>> patchVertices(P);
   for (std::size_t e = 0; e < n; ++e) {
     const Element& element = mesh.elements[e];
     for (int v : element.vertices) elementBoxes_[e].extend(mesh.vertices[v]);
@@ -34,67 +74,102 @@ ShaftCulling::ShaftCulling(const Mesh& mesh) {
       patch.point = mesh.vertices[element.vertices[0]];
     }
     patch.box.extend(elementBoxes_[e]);
+    patchVertices[element.patch].insert(patchVertices[element.patch].end(), element.vertices.begin(),
+                                        element.vertices.end());
+  }
+  for (std::size_t k = 0; k < P; ++k) {
+    auto& ids = patchVertices[k];
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    std::vector<Vec3> points;
+    for (int v : ids) points.push_back(mesh.vertices[v]);
+    patches_[k].outline = convexOutline(std::move(points), patches_[k].normal);
+  }
+  std::vector<Eigen::AlignedBox3d> boxes;
+  for (const PatchInfo& p : patches_) boxes.push_back(p.box);
+  tree_ = BoxTree(std::move(boxes));
+
+  // Nothing can block when every patch has the whole scene in front of or on its plane. Patches in one plane
+  // (a wall split into quads) are tested once.
+  std::map<std::tuple<long long, long long, long long, long long>, int> planes;
+  for (std::size_t k = 0; k < P && !anyOccluder_; ++k) {
+    if (patches_[k].box.isEmpty()) continue;
+    const Vec3& nk = patches_[k].normal;
+    const double scale = 1e6 / (all.isEmpty() ? 1.0 : all.diagonal().norm());
+    const auto key =
+        std::make_tuple(std::llround(nk.x() * 1e9), std::llround(nk.y() * 1e9), std::llround(nk.z() * 1e9),
+                        std::llround(nk.dot(patches_[k].point) * scale));
+    if (!planes.emplace(key, static_cast<int>(k)).second) continue;
+    for (std::size_t other = 0; other < P && !anyOccluder_; ++other)
+      anyOccluder_ = other != k && (sideOfPatch(static_cast<int>(other), static_cast<int>(k)) & kBack);
   }
 
-  // Side of every element with respect to every patch plane.
-  elementSide_.assign(n * P, kOn);
-  for (std::size_t e = 0; e < n; ++e)
-    for (std::size_t k = 0; k < P; ++k) {
-      if (patches_[k].box.isEmpty()) continue;
-      std::uint8_t side = kOn;
-      for (int v : mesh.elements[e].vertices) {
-        const double d = patches_[k].normal.dot(mesh.vertices[v] - patches_[k].point);
-        if (d > eps_) side |= kFront;
-        if (d < -eps_) side |= kBack;
-      }
-      elementSide_[e * P + k] = side;
-    }
-  // Side of every patch (union of its elements) with respect to every patch plane.
-  std::vector<std::uint8_t> patchSide(P * P, kOn);
-  for (std::size_t e = 0; e < n; ++e)
-    for (std::size_t k = 0; k < P; ++k) patchSide[elementPatch_[e] * P + k] |= elementSide_[e * P + k];
+  if (anyOccluder_ && P <= kMaxTabulatedPatches && n >= 2 * P) {
+    pairCandidates_.assign(P * P, {});
+    tbb::parallel_for(std::size_t(0), P, [&](std::size_t a) {
+      for (std::size_t b = a + 1; b < P; ++b)
+        pairCandidates_[a * P + b] = patchPairCandidates(static_cast<int>(a), static_cast<int>(b));
+    });
+  }
+}
 
-  blockers_.assign(P * P, {});
-  for (std::size_t a = 0; a < P; ++a)
-    for (std::size_t b = a + 1; b < P; ++b) {
-      Eigen::AlignedBox3d shaft = patches_[a].box;
-      shaft.extend(patches_[b].box);
-      for (std::size_t k = 0; k < P; ++k) {
-        if (k == a || k == b || patches_[k].box.isEmpty()) continue;
-        if (!boxesOverlap(shaft, patches_[k].box, eps_)) continue;
-        if (!(patchSide[k * P + a] & kFront) || !(patchSide[k * P + b] & kFront)) continue;
-        const std::uint8_t sa = patchSide[a * P + k], sb = patchSide[b * P + k];
-        const bool oneSide =
-            ((sa | sb) & kBoth) != kBoth;  // never both strictly in front and strictly behind
-        if (oneSide) continue;
-        blockers_[a * P + b].push_back(static_cast<int>(k));
-      }
-      blockers_[b * P + a] = blockers_[a * P + b];
-    }
+std::uint8_t ShaftCulling::sideOfPatch(int k, int plane) const {
+  const PatchInfo& p = patches_[static_cast<std::size_t>(plane)];
+  std::uint8_t side = kOn;
+  for (const Vec3& v : patches_[static_cast<std::size_t>(k)].outline) {
+    const double d = p.normal.dot(v - p.point);
+    if (d > eps_) side |= kFront;
+    if (d < -eps_) side |= kBack;
+  }
+  return side;
+}
+
+std::uint8_t ShaftCulling::sideOfElement(int e, int plane) const {
+  const PatchInfo& p = patches_[static_cast<std::size_t>(plane)];
+  std::uint8_t side = kOn;
+  for (int v : mesh_.elements[static_cast<std::size_t>(e)].vertices) {
+    const double d = p.normal.dot(mesh_.vertices[static_cast<std::size_t>(v)] - p.point);
+    if (d > eps_) side |= kFront;
+    if (d < -eps_) side |= kBack;
+  }
+  return side;
+}
+
+bool ShaftCulling::patchMayBlock(int k, int a, int b) const {
+  if (k == a || k == b) return false;
+  if (!(sideOfPatch(k, a) & kFront) || !(sideOfPatch(k, b) & kFront)) return false;
+  // Never both strictly in front of k's plane and strictly behind it: k cannot separate them.
+  return ((sideOfPatch(a, k) | sideOfPatch(b, k)) & kBoth) == kBoth;
+}
+
+std::vector<int> ShaftCulling::patchPairCandidates(int a, int b) const {
+  Eigen::AlignedBox3d shaft = patches_[static_cast<std::size_t>(a)].box;
+  shaft.extend(patches_[static_cast<std::size_t>(b)].box);
+  std::vector<int> out;
+  tree_.anyOverlapping(shaft, eps_, [&](int k) {
+    if (patchMayBlock(k, a, b)) out.push_back(k);
+    return false;
+  });
+  return out;
 }
 
 bool ShaftCulling::mayBeOccluded(int i, int j) const {
-  const std::size_t P = patchCount_;
-  const int a = elementPatch_[i], b = elementPatch_[j];
+  if (!anyOccluder_) return false;
+  const int a = elementPatch_[static_cast<std::size_t>(i)], b = elementPatch_[static_cast<std::size_t>(j)];
   if (a == b) return false;  // one planar patch: its elements cannot see each other at all
-  const auto& candidates = blockers_[a * P + b];
-  if (candidates.empty()) return false;
-  Eigen::AlignedBox3d shaft = elementBoxes_[i];
-  shaft.extend(elementBoxes_[j]);
-  for (int k : candidates) {
-    if (!boxesOverlap(shaft, patches_[k].box, eps_)) continue;
-    const std::uint8_t si = elementSide_[i * P + k], sj = elementSide_[j * P + k];
-    if (((si | sj) & kBoth) != kBoth) continue;
-    return true;
+  Eigen::AlignedBox3d shaft = elementBoxes_[static_cast<std::size_t>(i)];
+  shaft.extend(elementBoxes_[static_cast<std::size_t>(j)]);
+  // The element-level form of (1) and (3) for a patch that passed the patch-level test.
+  auto blocks = [&](int k) {
+    if (!boxesOverlap(shaft, patches_[static_cast<std::size_t>(k)].box, eps_)) return false;
+    return ((sideOfElement(i, k) | sideOfElement(j, k)) & kBoth) == kBoth;
+  };
+  if (!pairCandidates_.empty()) {
+    const auto& candidates = pairCandidates_[static_cast<std::size_t>(std::min(a, b)) * patchCount_ +
+                                             static_cast<std::size_t>(std::max(a, b))];
+    return std::any_of(candidates.begin(), candidates.end(), blocks);
   }
-  return false;
-}
-
-std::size_t ShaftCulling::occludablePatchPairs() const {
-  std::size_t count = 0;
-  for (std::size_t a = 0; a < patchCount_; ++a)
-    for (std::size_t b = a + 1; b < patchCount_; ++b) count += blockers_[a * patchCount_ + b].empty() ? 0 : 1;
-  return count;
+  return tree_.anyOverlapping(shaft, eps_, [&](int k) { return patchMayBlock(k, a, b) && blocks(k); });
 }
 
 }  // namespace rt

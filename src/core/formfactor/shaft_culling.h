@@ -1,13 +1,17 @@
 // Which element pairs can be occluded at all? Every segment from element i to element j lies inside the
 // convex hull of i and j, in front of both planes. A patch k can only block it if (1) its box overlaps the
 // pair's box, (2) it reaches in front of both planes, and (3) its own plane does not have all of i and j on
-// one side. Tested once per patch pair (few patches), then per element pair against the surviving blocker
-// patches only. In a convex enclosure no patch survives, so no ray is ever cast.
+// one side. In a convex enclosure no patch passes, so no ray is ever cast.
+//
+// The candidates k of (1) come from a box tree over the patches, so the cost grows like the number of pairs
+// times log(patches), never like patches^3. When patches are split into several elements each, the patch
+// pairs' candidates are found once (in parallel) and each element pair only re-checks those.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include "core/formfactor/box_tree.h"
 #include "core/mesh.h"
 
 namespace rt {
@@ -15,23 +19,32 @@ namespace rt {
 class ShaftCulling {
  public:
   explicit ShaftCulling(const Mesh& mesh);
-  // False only when no element can possibly lie between i and j.
+  // False only when no element can possibly lie between i and j. Thread-safe.
   bool mayBeOccluded(int i, int j) const;
-  // Number of patch pairs with at least one potential blocker (for notes).
-  std::size_t occludablePatchPairs() const;
+  // False when no patch has anything strictly behind its plane: a convex enclosure, where nothing can block.
+  bool anyOccluder() const { return anyOccluder_; }
 
  private:
   enum Side : std::uint8_t { kOn = 0, kFront = 1, kBack = 2, kBoth = 3 };
   struct PatchInfo {
     Eigen::AlignedBox3d box;
     Vec3 normal, point;
+    std::vector<Vec3> outline;  // the patch's extreme points (its elements' vertices' convex hull)
   };
+  std::uint8_t sideOfPatch(int k, int plane) const;    // patch k against patch plane's plane
+  std::uint8_t sideOfElement(int e, int plane) const;  // element e against a patch's plane
+  bool patchMayBlock(int k, int a, int b) const;       // (2) and (3) for whole patches
+  std::vector<int> patchPairCandidates(int a, int b) const;
+
+  const Mesh& mesh_;
   std::vector<PatchInfo> patches_;
-  std::vector<std::vector<int>> blockers_;  // [a * P + b] -> patches that may block
-  std::vector<std::uint8_t> elementSide_;   // [e * P + k]: side of element e with respect to patch k's plane
+  BoxTree tree_;
   std::vector<Eigen::AlignedBox3d> elementBoxes_;
   std::vector<int> elementPatch_;
+  // Per patch pair a < b (only when patches have several elements each): the patches that may block.
+  std::vector<std::vector<int>> pairCandidates_;
   std::size_t patchCount_ = 0;
+  bool anyOccluder_ = false;
   double eps_ = 0;
 };
 
