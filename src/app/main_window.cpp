@@ -21,7 +21,6 @@
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTabWidget>
-#include <QTextBrowser>
 #include <QVBoxLayout>
 
 #include "app/contents_tree.h"
@@ -116,9 +115,8 @@ void MainWindow::buildUi() {
   auto* textPane = new QWidget(centre);
   auto* textLayout = new QVBoxLayout(textPane);
   textLayout->setContentsMargins(4, 4, 4, 4);
-  text_ = new QTextBrowser(textPane);
+  text_ = new LessonTextView(textPane);
   text_->setObjectName("stepText");
-  text_->setOpenExternalLinks(true);
   text_->installEventFilter(this);
   text_->viewport()->installEventFilter(this);
   auto* navigation = new QHBoxLayout();
