@@ -6,6 +6,7 @@
 #include <QEventLoop>
 #include <QFile>
 #include <QGuiApplication>
+#include <QLoggingCategory>
 #include <QPageLayout>
 #include <QPageSize>
 #include <QTimer>
@@ -68,6 +69,7 @@ WebSession::WebSession() {
   static char name[] = "radiosity";
   static char* argv[] = {name, nullptr};
   app_ = std::make_unique<QGuiApplication>(argc, argv);
+  QLoggingCategory::setFilterRules("qt.webenginecontext.info=false\nqt.webenginecontext.debug=false");
 }
 
 WebSession::~WebSession() = default;
