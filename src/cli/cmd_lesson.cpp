@@ -48,7 +48,7 @@ void check(const LessonArguments& a, bool run) {
       const auto maths = mathsProblems(l);
       if (!maths.empty()) {
         for (const auto& problem : maths) std::cerr << problem << "\n";
-        throw InputError({l.file, 0}, std::to_string(maths.size()) + " formula(s) with errors");
+        throw InputError({l.file, 0}, std::to_string(maths.size()) + " problem(s) in its maths");
       }
       if (run) {
         for (const auto& step : l.steps) {

@@ -158,6 +158,13 @@ std::string prepareMaths(const std::string& markdown, int firstLine, const std::
       edits.push_back({open, open, "<span class=\"eq-anchor\" id=\"eq-" + mark.label + "\"></span>"});
   }
   for (const auto& [begin, end] : s.plain) {
+    // A $$ left in the text is maths the parser did not take as maths: unclosed, or cut by a line that is
+    // Markdown of its own (a line of '=' or '-' under text is a heading, a blank line ends the paragraph).
+    const std::size_t dollars = markdown.find("$$", begin);
+    if (dollars != std::string::npos && dollars + 2 <= end)
+      throw InputError({file, lineAt(markdown, dollars, firstLine)},
+                       "'$$' does not start or end a displayed formula here: close it, and keep its lines "
+                       "free of blank lines and of lines that Markdown reads as headings, lists or quotes");
     std::size_t at = begin;
     while ((at = markdown.find("@eq:", at)) != std::string::npos && at < end) {
       std::size_t q = at + 4;

@@ -41,6 +41,8 @@ QString typesetScript() {
       span.title = String(e.message);
       span.textContent = tex;
     }
+    // HTML needs no namespace on <math>: without it the page names no address at all.
+    Array.prototype.forEach.call(span.querySelectorAll('math'), function (m) { m.removeAttribute('xmlns'); });
     node.parentNode.replaceChild(span, node);
   });
   window.rtMaths = {formulas: nodes.length, errors: errors};
