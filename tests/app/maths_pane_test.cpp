@@ -77,3 +77,18 @@ TEST(MathsPane, PresenterModeScalesTheEquationsWithTheText) {
   QTest::keyClick(window.get(), Qt::Key_Escape);
   EXPECT_FALSE(window->presenterMode());
 }
+
+TEST(MathsPane, AFormulaThatDoesNotTypesetIsReportedNotHidden) {
+  RT_REQUIRE_DISPLAY();
+  LessonTextView view;
+  view.resize(600, 400);
+  view.show();
+  view.setMarkdown("Fine $a^2$, broken $\\frac{1}{2$.");
+  const auto state = view.mathsState();
+  ASSERT_TRUE(state.ready);
+  EXPECT_EQ(state.formulas, 2);
+  EXPECT_EQ(state.katexNodes, 1);
+  ASSERT_EQ(state.errors.size(), 1);
+  EXPECT_TRUE(state.errors.first().contains("KaTeX parse error")) << state.errors.first().toStdString();
+  test::takeWarnings();
+}
