@@ -191,6 +191,20 @@ void clipInPageUnits(std::string& svg) {
   }
 }
 
+// vtkSVGExporter places text with alignment-baseline, which SVG applies to <tspan> but not to <text>, and
+// with the value "top", which SVG does not have: browsers draw a title meant to hang from the top edge above
+// it, outside the picture. dominant-baseline says the same on <text>.
+void placeTextOnItsBaseline(std::string& svg) {
+  const std::pair<const char*, const char*> baselines[] = {
+      {"top", "hanging"}, {"central", "central"}, {"bottom", "text-after-edge"}};
+  for (const auto& [vtk, svgName] : baselines) {
+    const std::string from = std::string("alignment-baseline=\"") + vtk + "\"";
+    const std::string to = from + " dominant-baseline=\"" + svgName + "\"";
+    for (std::size_t at = 0; (at = svg.find(from, at)) != std::string::npos; at += to.size())
+      svg.replace(at, from.size(), to);
+  }
+}
+
 // vtkSVGExporter writes "VTK Exported Scene" as both the <title> and the <desc>: put the figure's own there.
 void tidySvg(const std::string& path, const std::string& title, const std::string& description) {
   std::string svg;
@@ -210,6 +224,7 @@ void tidySvg(const std::string& path, const std::string& title, const std::strin
     at += replacement.size();
   }
   clipInPageUnits(svg);
+  placeTextOnItsBaseline(svg);
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << svg;
   if (!out) throw std::runtime_error(path + ": cannot write the file");
