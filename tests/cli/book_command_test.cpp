@@ -152,6 +152,8 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
   EXPECT_NE(flat.find("Contents"), std::string::npos);
   EXPECT_NE(flat.find("Chapter 17"), std::string::npos);
   EXPECT_NE(flat.find("Figure 5.1."), std::string::npos);
+  EXPECT_NE(flat.find("Radiosity after 1 bounce"), std::string::npos);
+  EXPECT_EQ(flat.find("after 1 bounces"), std::string::npos) << "one bounce is singular";
 
   // Its figures are not blank: the area just above every caption "Figure N.M." (where the figure is) shows
   // something on the rendered page. Word positions come from pdftotext -bbox, in points.
