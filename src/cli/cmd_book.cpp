@@ -71,7 +71,7 @@ void book(BookOptions o) {
   copyKatex(out);
   write(out / lesson::kBookStyleFile, lesson::bookStyleSheet());
   std::vector<fs::path> pages{out / lesson::kBookIndexFile};
-  write(pages.front(), lesson::indexPageHtml(lessons));
+  write(pages.front(), lesson::indexPageHtml(lessons, o.pdf));
   for (const auto& l : lessons) {
     pages.push_back(out / lesson::lessonPageFile(l));
     write(pages.back(), lesson::lessonPageHtml(l, lessons));

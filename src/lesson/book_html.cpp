@@ -111,14 +111,14 @@ std::string lessonPageHtml(const RenderedLesson& lesson, const std::vector<Rende
   return html;
 }
 
-std::string indexPageHtml(const std::vector<RenderedLesson>& lessons) {
+std::string indexPageHtml(const std::vector<RenderedLesson>& lessons, bool withPdf) {
   std::string html = head(bookTitle());
   html += "<body>\n<main>\n<h1 class=\"book-title\">" + escapeHtml(bookTitle()) + "</h1>\n";
   html +=
       "<p class=\"summary\">An interactive textbook of the radiosity method. Every number in the text and "
-      "every "
-      "figure was computed when this book was built. The whole book is also one PDF: "
-      "<a href=\"book.pdf\">book.pdf</a>.</p>\n<h2>Contents</h2>\n<div class=\"toc\">\n";
+      "every figure was computed when this book was built.";
+  if (withPdf) html += " The whole book is also one PDF: <a href=\"book.pdf\">book.pdf</a>.";
+  html += "</p>\n<h2>Contents</h2>\n<div class=\"toc\">\n";
   html += contents(
       lessons,
       [](const RenderedLesson& l, const std::string& anchor) { return lessonPageFile(l) + "#" + anchor; },

@@ -23,7 +23,8 @@ std::string bookTitle();
 // A lesson's page; `lessons` (in order) gives the chapter navigation. The steps' text is Markdown whose maths
 // prepareMaths() has numbered.
 std::string lessonPageHtml(const RenderedLesson& lesson, const std::vector<RenderedLesson>& lessons);
-std::string indexPageHtml(const std::vector<RenderedLesson>& lessons);
+// `withPdf`: the index links to book.pdf beside it.
+std::string indexPageHtml(const std::vector<RenderedLesson>& lessons, bool withPdf = true);
 // The whole book in one document: a title page, the contents (page numbers filled in when it is laid out
 // into pages) and every chapter. Its blocks are the children of <div id="flow">, for the page layout.
 std::string printBookHtml(const std::vector<RenderedLesson>& lessons);
