@@ -115,6 +115,7 @@ void addLessonCommand(CLI::App& app) {
   renderCommand->callback([=] {
     RenderSettings settings = *figures;
     settings.quick = *quick;
+    settings.prepareMaths = true;  // numbered equations and linked references in the Markdown too
     if (*quick) {
       settings.width = std::min(settings.width, 320);
       settings.height = std::min(settings.height, 240);
