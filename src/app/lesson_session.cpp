@@ -5,6 +5,7 @@
 
 #include "core/input_error.h"
 #include "core/solvers/radiosity_system.h"
+#include "lesson/maths.h"
 #include "lesson/step_result.h"
 
 namespace rt::app {
@@ -108,9 +109,14 @@ PipelineResult LessonLibrary::runOne(const lesson::Lesson& lesson, const lesson:
     takeSolve(out, std::move(stepResult->replay));
   }
   try {
-    std::string text = "## " + step.title + "\n\n" + lesson::resolvedText(lesson, step, *stepResult);
+    // Equations are numbered over the whole lesson, so that a step shows the numbers the book prints.
+    const lesson::EquationNumbers equations = lesson::numberEquations(lesson);
+    std::string text = "## " + step.title + "\n\n" +
+                       lesson::prepareMaths(lesson::resolvedText(lesson, step, *stepResult), step.textLine,
+                                            lesson.file, equations);
     if (step.index == 0 && !lesson.intro.empty())
-      text = "# " + lesson.title + "\n\n" + lesson.intro + "\n\n" + text;
+      text = "# " + lesson.title + "\n\n" +
+             lesson::prepareMaths(lesson.intro, lesson.introLine, lesson.file, equations) + "\n\n" + text;
     out.text = text;
   } catch (const InputError& e) {
     out.text = step.text;

@@ -9,10 +9,13 @@
 #include "app/main_window.h"
 #include "app/screenshot.h"
 #include "app/vtk_widget.h"
+#include "typeset/web_engine.h"
 
 int main(int argc, char** argv) {
   // VTK needs its GL context profile decided before any Qt GL object exists.
   rt::app::VtkWidget::setDefaultSurfaceFormat();
+  // The text pane is a web view (typeset maths): WebEngine's settings come before the application object too.
+  rt::typeset::prepareWebEngine();
   QApplication app(argc, argv);
   QApplication::setOrganizationName("RadiosityTextbook");
   QApplication::setApplicationName("radiosity-textbook");

@@ -21,7 +21,6 @@
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTabWidget>
-#include <QTextBrowser>
 #include <QVBoxLayout>
 
 #include "app/contents_tree.h"
@@ -116,9 +115,8 @@ void MainWindow::buildUi() {
   auto* textPane = new QWidget(centre);
   auto* textLayout = new QVBoxLayout(textPane);
   textLayout->setContentsMargins(4, 4, 4, 4);
-  text_ = new QTextBrowser(textPane);
+  text_ = new LessonTextView(textPane);
   text_->setObjectName("stepText");
-  text_->setOpenExternalLinks(true);
   text_->installEventFilter(this);
   text_->viewport()->installEventFilter(this);
   auto* navigation = new QHBoxLayout();
@@ -259,6 +257,13 @@ void MainWindow::buildUi() {
   });
   statusBar()->addWidget(statusLabel_, 1);
   statusBar()->addPermanentWidget(progress_);
+  // `radiosity lesson check` reports a broken formula at its line; a lesson opened without that check still
+  // says so here (the page shows the formula's TeX in red) rather than leaving a reader to guess.
+  connect(text_, &LessonTextView::typeset, this, [this](int, const QStringList& errors) {
+    if (errors.isEmpty()) return;
+    statusLabel_->setText(tr("A formula on this page does not typeset: %1").arg(errors.first()));
+    qWarning("radiosity-textbook: a formula does not typeset: %s", qPrintable(errors.first()));
+  });
 }
 
 void MainWindow::setCompareMode(bool on) {

@@ -14,6 +14,7 @@
 #include "app/compare_choice.h"
 #include "app/computation_runner.h"
 #include "app/keys_dialog.h"
+#include "app/lesson_text_view.h"
 #include "app/pipeline.h"
 #include "app/presenter_style.h"
 #include "app/step_result_cache.h"
@@ -28,7 +29,6 @@ class QMenu;
 class QPushButton;
 class QSplitter;
 class QTabWidget;
-class QTextBrowser;
 
 namespace rt::app {
 
@@ -127,7 +127,7 @@ class MainWindow : public QMainWindow {
   bool busy() const;
   SceneView* primaryView() const { return primaryView_; }
   SceneView* secondaryView() const { return secondaryView_; }
-  QTextBrowser* textView() const { return text_; }
+  LessonTextView* textView() const { return text_; }
   IterationPlayer* player() const { return player_; }
   ResidualChart* residualChart() const { return chart_; }
   MatrixView* matrixView() const { return matrix_; }
@@ -158,7 +158,6 @@ class MainWindow : public QMainWindow {
   void saveSession();
   // The step's text; its equations (code blocks, set in a fixed font of their own size) at the text's size.
   void setStepMarkdown(const QString& markdown);
-  void fitEquationsToText();
   bool restoreSession();
   bool isLongStep(int lessonIndex, int step) const;
   // The restored session's parameters, over the step's or scene's own (once, by openStep / openScene).
@@ -213,7 +212,7 @@ class MainWindow : public QMainWindow {
   AppLook normalLook_;
 
   ContentsTree* contents_ = nullptr;
-  QTextBrowser* text_ = nullptr;
+  LessonTextView* text_ = nullptr;
   QLabel* stepLabel_ = nullptr;
   QPushButton* backButton_ = nullptr;
   QPushButton* nextButton_ = nullptr;

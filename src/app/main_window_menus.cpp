@@ -10,7 +10,6 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
-#include <QTextBrowser>
 
 #include "app/camera_views.h"
 #include "app/contents_tree.h"

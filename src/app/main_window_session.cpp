@@ -10,10 +10,6 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QTabWidget>
-#include <QTextBlock>
-#include <QTextBrowser>
-#include <QTextCursor>
-#include <QTextDocument>
 
 #include "app/contents_tree.h"
 #include "app/figures_pane.h"
@@ -208,35 +204,11 @@ void MainWindow::zoomText(int steps) {
   const int normalPixels = QFontInfo(normalTextFont_).pixelSize();
   const int base = presenter_ ? std::max(32, normalPixels * 2) : normalPixels;
   font.setPixelSize(std::max(6, static_cast<int>(std::lround(base * textZoom_))));
-  text_->setFont(font);  // the document's default font follows the widget's
-  fitEquationsToText();
+  text_->setFont(font);  // the page's text and its equations follow the widget's font
 }
 
 void MainWindow::setStepMarkdown(const QString& markdown) {
   text_->setMarkdown(markdown);
-  fitEquationsToText();
-}
-
-void MainWindow::fitEquationsToText() {
-  // Markdown's code blocks and spans (the lessons' equations) come in the system's fixed font at its own
-  // size, which stays small when the text grows: give them the body text's size.
-  const QFontInfo body(text_->document()->defaultFont());
-  QTextCursor cursor(text_->document());
-  for (QTextBlock block = text_->document()->begin(); block.isValid(); block = block.next()) {
-    for (auto it = block.begin(); !it.atEnd(); ++it) {
-      const QTextFragment fragment = it.fragment();
-      QTextCharFormat format = fragment.charFormat();
-      const bool code = format.fontFixedPitch() || QFontInfo(format.font()).fixedPitch() ||
-                        block.blockFormat().hasProperty(QTextFormat::BlockCodeFence) ||
-                        block.blockFormat().hasProperty(QTextFormat::BlockCodeLanguage);
-      if (!code) continue;
-      format.clearProperty(QTextFormat::FontPointSize);
-      format.setProperty(QTextFormat::FontPixelSize, body.pixelSize());
-      cursor.setPosition(fragment.position());
-      cursor.setPosition(fragment.position() + fragment.length(), QTextCursor::KeepAnchor);
-      cursor.setCharFormat(format);
-    }
-  }
 }
 
 void MainWindow::setLargeFigure(bool on) {

@@ -9,7 +9,6 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QTabWidget>
-#include <QTextBrowser>
 #include <QThread>
 #include <algorithm>
 

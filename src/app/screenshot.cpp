@@ -1,5 +1,7 @@
 #include "app/screenshot.h"
 
+#include "app/lesson_text_view.h"
+
 #include <QApplication>
 #include <QOpenGLWidget>
 #include <QSet>
@@ -38,6 +40,9 @@ PixelStatistics pixelStatistics(const QImage& input, const QRect& area) {
 }
 
 QImage grabWindow(QWidget& window) {
+  // The text pane's page is typeset asynchronously: the picture waits for its maths.
+  for (LessonTextView* text : window.findChildren<LessonTextView*>())
+    if (text->isVisible()) text->waitUntilShown();
   // Two rounds of events: layouts settle, then every QOpenGLWidget runs paintGL into its framebuffer.
   for (int round = 0; round < 2; ++round) {
     QApplication::processEvents();

@@ -6,60 +6,19 @@
 
 #include "cli/cli_common.h"
 #include "cli/commands.h"
+#include "cli/lesson_rendering.h"
 #include "core/input_error.h"
 #include "lesson/book.h"
 #include "lesson/lesson_loader.h"
 #include "lesson/step_keys.h"
 #include "lesson/step_numbers.h"
 #include "lesson/step_runner.h"
-#ifdef RT_HAVE_VIZ
-#include "viz/lesson_figures.h"
+#ifdef RT_HAVE_TYPESET
+#include "typeset/web_engine.h"
 #endif
 
 namespace rt::cli {
 namespace {
-
-struct FigureSettings {
-  int width = 900;
-  int height = 700;
-};
-
-struct LessonArguments {
-  std::vector<std::string> ids;
-  bool all = false;
-  std::string root;  // repository root holding lessons/ and scenes/; empty = the default
-  lesson::LessonFolders folders() const {
-    return root.empty() ? lesson::defaultFolders() : lesson::foldersUnder(root);
-  }
-  void add(CLI::App* command) {
-    command->add_option("lessons", ids, "Lesson ids (file names in lessons/ without .md)");
-    command->add_flag("--all", all, "Every lesson in lessons/");
-    command->add_option("--root", root, "Folder holding lessons/ and scenes/ (default: the current folder)");
-  }
-  // The lesson files to work on, in book order.
-  std::vector<std::string> files() const {
-    const auto f = folders();
-    if (all == !ids.empty()) throw CLI::ValidationError("name lessons or give --all (not both)");
-    std::vector<std::string> out;
-    if (all) {
-      for (const auto& l : lesson::loadCatalogue(f)) out.push_back(l.file);
-    } else {
-      for (const auto& id : ids) out.push_back(lesson::lessonPath(f, id));
-    }
-    return out;
-  }
-};
-
-lesson::RenderedLesson renderedHeader(const lesson::Lesson& l) {
-  lesson::RenderedLesson r;
-  r.id = l.id;
-  r.title = l.title;
-  r.chapter = l.chapter;
-  r.summary = l.summary;
-  r.order = l.order;
-  r.intro = l.intro;
-  return r;
-}
 
 void list(const LessonArguments& a) {
   for (const auto& l : lesson::loadCatalogue(a.folders()))
@@ -79,10 +38,18 @@ void check(const LessonArguments& a, bool run) {
   lesson::RunOptions options;
   options.quick = true;
   lesson::StepRunner runner(folders.scenes, options);
+#ifdef RT_HAVE_TYPESET
+  const typeset::WebSession session;  // KaTeX checks the formulas
+#endif
   for (const auto& file : files) {
     try {
       const lesson::Lesson l = lesson::loadLesson(file, folders.scenes);
       lesson::checkAgainstScenes(l, folders.scenes);
+      const auto maths = mathsProblems(l);
+      if (!maths.empty()) {
+        for (const auto& problem : maths) std::cerr << problem << "\n";
+        throw InputError({l.file, 0}, std::to_string(maths.size()) + " problem(s) in its maths");
+      }
       if (run) {
         for (const auto& step : l.steps) {
           try {
@@ -100,70 +67,6 @@ void check(const LessonArguments& a, bool run) {
   }
   // Errors in lesson files are input errors (exit code 3), as a broken scene is.
   if (failures > 0) throw InputError({}, std::to_string(failures) + " lesson(s) have errors (listed above)");
-}
-
-void render(const LessonArguments& a, const std::string& output, bool quick, const FigureSettings& figures) {
-  if (output.empty()) throw CLI::ValidationError("--output", "an output folder is required");
-  const auto folders = a.folders();
-#ifndef RT_HAVE_VIZ
-  std::cerr << "radiosity: this build has no viz library: writing the text without figures\n";
-#endif
-  lesson::RunOptions options;
-  options.quick = quick;
-  std::vector<lesson::RenderedLesson> rendered;
-  ProgressLine progress(true);
-  std::filesystem::create_directories(output);
-  std::ofstream skipped(std::filesystem::path(output) / "skipped.txt");  // figures this build could not draw
-  for (const auto& file : a.files()) {
-    const lesson::Lesson l = lesson::loadLesson(file, folders.scenes);
-    options.outputDir = (std::filesystem::path(output) / l.id).string();
-    lesson::StepRunner runner(folders.scenes, options);
-    lesson::RenderedLesson page = renderedHeader(l);
-    // The numbers behind every step, for checking against the app and for answer keys.
-    std::filesystem::create_directories(options.outputDir);
-    std::ofstream numbers(std::filesystem::path(options.outputDir) / "numbers.json");
-    numbers << "[\n";
-    bool firstNumbers = true;
-    for (const auto& step : l.steps) {
-      progress.report(static_cast<double>(step.index) / static_cast<double>(l.steps.size()), l.id);
-      lesson::StepResult result;
-      try {
-        result = runner.run(l, step, progress);
-      } catch (const lesson::MethodUnavailable& e) {
-        // Built without an optional library: say so on the page and in skipped.txt, keep going.
-        std::cerr << "radiosity: " << e.what() << " (step skipped)\n";
-        page.steps.push_back({step.title, "*" + e.message() + ": this step was not computed.*\n", {}});
-        for (const auto& f : step.figureFiles()) skipped << l.id << "/" << f << "\n";
-        continue;
-      }
-      numbers << (firstNumbers ? "" : ",\n") << "{\"step\": " << step.index
-              << ", \"numbers\": " << lesson::stepNumbersJson(result) << "}";
-      firstNumbers = false;
-      lesson::RenderedStep s{step.title, lesson::resolvedText(l, step, result), {}};
-      try {
-#ifdef RT_HAVE_VIZ
-        s.figures =
-            viz::renderStepFigures(l, step, result, options.outputDir, {figures.width, figures.height});
-#else
-        (void)figures;
-#endif
-      } catch (const std::exception& e) {
-        throw InputError({l.file, step.line}, "step '" + step.title + "': " + e.what());
-      }
-      page.steps.push_back(std::move(s));
-    }
-    numbers << "\n]\n";
-    rendered.push_back(std::move(page));
-  }
-  progress.finish();
-  std::stable_sort(rendered.begin(), rendered.end(),
-                   [](const auto& x, const auto& y) { return x.order < y.order; });
-  for (std::size_t i = 0; i < rendered.size(); ++i) {
-    const auto* previous = i > 0 ? &rendered[i - 1] : nullptr;
-    const auto* next = i + 1 < rendered.size() ? &rendered[i + 1] : nullptr;
-    std::cout << lesson::writeLessonPage(rendered[i], output, previous, next) << "\n";
-  }
-  std::cout << lesson::writeBookIndex(rendered, output) << "\n";
 }
 
 }  // namespace
@@ -198,7 +101,7 @@ void addLessonCommand(CLI::App& app) {
   auto renderArgs = std::make_shared<LessonArguments>();
   auto output = std::make_shared<std::string>();
   auto quick = std::make_shared<bool>(false);
-  auto figures = std::make_shared<FigureSettings>();
+  auto figures = std::make_shared<RenderSettings>();
   auto* renderCommand = command->add_subcommand(
       "render",
       "Run every step, write its figures (DIR/<lesson>/<figure>.png) and the book (DIR/<lesson>.md, "
@@ -210,12 +113,20 @@ void addLessonCommand(CLI::App& app) {
   renderCommand->add_option("--height", figures->height, "Figure height in pixels")
       ->check(CLI::Range(64, 8192));
   renderCommand->callback([=] {
-    FigureSettings settings = *figures;
+    RenderSettings settings = *figures;
+    settings.quick = *quick;
+    settings.prepareMaths = true;  // numbered equations and linked references in the Markdown too
     if (*quick) {
       settings.width = std::min(settings.width, 320);
       settings.height = std::min(settings.height, 240);
     }
-    render(*renderArgs, *output, *quick, settings);
+    const auto rendered = renderLessons(renderArgs->files(), renderArgs->folders(), *output, settings);
+    for (std::size_t i = 0; i < rendered.size(); ++i) {
+      const auto* previous = i > 0 ? &rendered[i - 1] : nullptr;
+      const auto* next = i + 1 < rendered.size() ? &rendered[i + 1] : nullptr;
+      std::cout << lesson::writeLessonPage(rendered[i], *output, previous, next) << "\n";
+    }
+    std::cout << lesson::writeBookIndex(rendered, *output) << "\n";
   });
 }
 

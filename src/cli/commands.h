@@ -11,6 +11,7 @@ void addSolveCommand(CLI::App& app);
 void addMatrixCommand(CLI::App& app);
 void addFigureCommand(CLI::App& app);
 void addLessonCommand(CLI::App& app);
+void addBookCommand(CLI::App& app);
 // `radiosity bench formfactors` and `radiosity bench solvers` share the `bench` parent.
 void addBenchFormFactorsCommand(CLI::App& bench);
 void addBenchSolversCommand(CLI::App& bench);

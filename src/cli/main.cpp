@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   rt::cli::addMatrixCommand(app);
   rt::cli::addFigureCommand(app);
   rt::cli::addLessonCommand(app);
+  rt::cli::addBookCommand(app);
   auto* bench = app.add_subcommand("bench", "Run time against error (prints CSV, writes plots)");
   bench->require_subcommand(1);
   rt::cli::addBenchFormFactorsCommand(*bench);

@@ -157,9 +157,56 @@ std::string xmlEscaped(const std::string& text) {
   return out;
 }
 
+// vtkSVGExporter clips a chart's plotted lines with a <g> that has both a transform (data to page) and a
+// clip-path whose rectangle is in page units. SVG applies the clip in the group's own, transformed, units,
+// so browsers (and the book's PDF) clip every line away. Splitting the group in two, the clip outside and the
+// transform inside, clips in page units as the exporter meant.
+// The "</g>" that closes the group whose content starts at `from`, or npos.
+std::size_t matchingGroupEnd(const std::string& svg, std::size_t from) {
+  int depth = 1;
+  for (std::size_t at = from; (at = svg.find('<', at)) != std::string::npos; ++at) {
+    if (svg.compare(at, 4, "</g>") == 0 && --depth == 0) return at;
+    if (svg.compare(at, 3, "<g ") == 0 || svg.compare(at, 3, "<g>") == 0) ++depth;
+  }
+  return std::string::npos;
+}
+
+void clipInPageUnits(std::string& svg) {
+  const std::string open = "<g transform=\"";
+  for (std::size_t at = 0; (at = svg.find(open, at)) != std::string::npos;) {
+    const std::size_t tagEnd = svg.find('>', at);
+    const std::size_t clip = svg.find("\" clip-path=\"", at);
+    const std::size_t close = tagEnd == std::string::npos ? tagEnd : matchingGroupEnd(svg, tagEnd + 1);
+    if (tagEnd == std::string::npos || clip == std::string::npos || clip > tagEnd ||
+        close == std::string::npos) {
+      at += open.size();
+      continue;
+    }
+    const std::string transform = svg.substr(at + 3, clip + 1 - (at + 3));   // transform="..."
+    const std::string clipPath = svg.substr(clip + 2, tagEnd - (clip + 2));  // clip-path="..."
+    svg.replace(close, 4, "</g></g>");
+    const std::string replacement = "<g " + clipPath + "><g " + transform + ">";
+    svg.replace(at, tagEnd + 1 - at, replacement);
+    at += replacement.size();
+  }
+}
+
+// vtkSVGExporter places text with alignment-baseline, which SVG applies to <tspan> but not to <text>, and
+// with the value "top", which SVG does not have: browsers draw a title meant to hang from the top edge above
+// it, outside the picture. dominant-baseline says the same on <text>.
+void placeTextOnItsBaseline(std::string& svg) {
+  const std::pair<const char*, const char*> baselines[] = {
+      {"top", "hanging"}, {"central", "central"}, {"bottom", "text-after-edge"}};
+  for (const auto& [vtk, svgName] : baselines) {
+    const std::string from = std::string("alignment-baseline=\"") + vtk + "\"";
+    const std::string to = from + " dominant-baseline=\"" + svgName + "\"";
+    for (std::size_t at = 0; (at = svg.find(from, at)) != std::string::npos; at += to.size())
+      svg.replace(at, from.size(), to);
+  }
+}
+
 // vtkSVGExporter writes "VTK Exported Scene" as both the <title> and the <desc>: put the figure's own there.
-void nameSvg(const std::string& path, const std::string& title, const std::string& description) {
-  if (title.empty() && description.empty()) return;
+void tidySvg(const std::string& path, const std::string& title, const std::string& description) {
   std::string svg;
   {
     std::ifstream in(path, std::ios::binary);
@@ -170,11 +217,14 @@ void nameSvg(const std::string& path, const std::string& title, const std::strin
                                        xmlEscaped(description.empty() ? title : description)};
   std::size_t at = 0;
   for (const std::string& replacement : replacements) {
+    if (title.empty() && description.empty()) break;
     at = svg.find(placeholder, at);
     if (at == std::string::npos) break;
     svg.replace(at, placeholder.size(), replacement);
     at += replacement.size();
   }
+  clipInPageUnits(svg);
+  placeTextOnItsBaseline(svg);
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << svg;
   if (!out) throw std::runtime_error(path + ": cannot write the file");
@@ -202,7 +252,7 @@ void writeContextView(vtkContextView* view, const std::string& path, const std::
     // Text as <text>, not as glyph outlines: a reader can search, select and edit the labels of a figure.
     exporter->SetTextAsPath(false);
     exporter->Write();
-    nameSvg(path, title, description);
+    tidySvg(path, title, description);
   } else {
     auto exporter = vtkSmartPointer<vtkPDFExporter>::New();
     exporter->SetRenderWindow(window);

@@ -16,6 +16,7 @@
 
 #include "app/vtk_widget.h"
 #include "app_test_support.h"
+#include "typeset/web_engine.h"
 
 namespace {
 
@@ -55,6 +56,7 @@ int main(int argc, char** argv) {
     setenv("XDG_RUNTIME_DIR", dir.c_str(), 1);
   }
   rt::app::VtkWidget::setDefaultSurfaceFormat();
+  rt::typeset::prepareWebEngine();
   QApplication app(argc, argv);
   // Settings (the remembered position) go to a test location, never the user's, and one file per process:
   // ctest runs the tests of this binary as concurrent processes, which must not see each other's position.

@@ -8,8 +8,6 @@
 #include <QDir>
 #include <QMap>
 #include <QTest>
-#include <QTextBlock>
-#include <QTextBrowser>
 
 #include "app/figures_pane.h"
 #include "app/lesson_session.h"
@@ -22,20 +20,12 @@ using namespace rt::app;
 namespace {
 
 int bodyPixels(MainWindow& window) {
-  return QFontInfo(window.textView()->document()->defaultFont()).pixelSize();
+  return window.textView()->textPixelSize();
 }
 
-// The smallest size of the step's equations (the Markdown code blocks, in a fixed font), or 0 without any.
+// The smallest size of the step's typeset equations on the page (KaTeX's nodes), or 0 without any.
 int smallestEquationPixels(MainWindow& window) {
-  int smallest = 0;
-  for (QTextBlock block = window.textView()->document()->begin(); block.isValid(); block = block.next())
-    for (auto it = block.begin(); !it.atEnd(); ++it) {
-      const QTextCharFormat format = it.fragment().charFormat();
-      if (!QFontInfo(format.font()).fixedPitch() && !format.fontFixedPitch()) continue;
-      const int pixels = QFontInfo(format.font()).pixelSize();
-      smallest = smallest == 0 ? pixels : std::min(smallest, pixels);
-    }
-  return smallest;
+  return static_cast<int>(window.textView()->mathsState().smallestEquationPixels);
 }
 
 void shoot(MainWindow& window, const char* name) {
@@ -71,6 +61,7 @@ TEST(Presenter, LargeTextZoomAndTheWholeScreenForText) {
   QTest::qWait(200);
   EXPECT_GE(bodyPixels(*window), 28);
   EXPECT_GT(bodyPixels(*window), normal);
+  EXPECT_GE(window->textView()->mathsState().bodyPixels, 28) << "the page's text follows the widget's font";
   // The step's equations ("delta F_top = ...") are as large as the text.
   ASSERT_GT(smallestEquationPixels(*window), 0) << "the step has no equation to check";
   EXPECT_GE(smallestEquationPixels(*window), bodyPixels(*window));

@@ -1,0 +1,190 @@
+#include "app/lesson_text_view.h"
+
+#include <QChildEvent>
+#include <QDesktopServices>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QKeyEvent>
+#include <QTimer>
+#include <QUrl>
+#include <QVBoxLayout>
+#include <QWebEnginePage>
+#include <QWebEngineView>
+
+#include "lesson/markdown_html.h"
+#include "typeset/web_engine.h"
+
+namespace rt::app {
+namespace {
+
+// Links to a place on the page stay in the view; any other link opens in the reader's browser, never here.
+class LessonPage : public QWebEnginePage {
+ public:
+  using QWebEnginePage::QWebEnginePage;
+
+ protected:
+  bool acceptNavigationRequest(const QUrl& url, NavigationType type, bool) override {
+    if (type != NavigationTypeLinkClicked) return true;
+    if (url.hasFragment() && url.adjusted(QUrl::RemoveFragment) == this->url().adjusted(QUrl::RemoveFragment))
+      return true;
+    QDesktopServices::openUrl(url);
+    return false;
+  }
+};
+
+QString cssColour(const QColor& c) {
+  return c.name(QColor::HexRgb);
+}
+
+}  // namespace
+
+LessonTextView::LessonTextView(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  view_ = new QWebEngineView(this);
+  view_->setPage(new LessonPage(view_));
+  view_->setContextMenuPolicy(Qt::NoContextMenu);
+  layout->addWidget(view_);
+  setFocusProxy(view_);
+  watchChildren(view_);
+  connect(view_, &QWebEngineView::loadFinished, this, [this](bool) {
+    loaded_ = true;
+    applyStyle();
+    const int generation = generation_;
+    view_->page()->runJavaScript(typeset::typesetScript(), [this, generation](const QVariant& value) {
+      if (generation != generation_) return;
+      const QJsonObject o = QJsonDocument::fromJson(value.toString().toUtf8()).object();
+      formulas_ = o.value("formulas").toInt();
+      errors_.clear();
+      for (const auto& e : o.value("errors").toArray()) errors_ << e.toString();
+      typesetGeneration_ = generation;
+      emit typeset(formulas_, errors_);
+    });
+  });
+}
+
+void LessonTextView::setMarkdown(const QString& markdown) {
+  markdown_ = markdown;
+  loaded_ = false;
+  ++generation_;
+  const QString body = QString::fromStdString(lesson::markdownToHtml(markdown.toStdString()));
+  view_->setHtml(pageHtml(body), QUrl::fromLocalFile(typeset::katexDirectory() + "/"));
+}
+
+QString LessonTextView::pageHtml(const QString& body) const {
+  return "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">"
+         "<link rel=\"stylesheet\" href=\"katex.min.css\"><script src=\"katex.min.js\"></script>"
+         "<style id=\"look\">" +
+         styleSheet() + "</style></head><body>\n" + body + "\n</body></html>\n";
+}
+
+int LessonTextView::textPixelSize() const {
+  const QFontInfo info(font());
+  return std::max(6, info.pixelSize());
+}
+
+QString LessonTextView::styleSheet() const {
+  // The widget's font and palette, so that presenter mode (larger, white on black) and the zoom keys reach
+  // the page; KaTeX sizes its maths relative to the text around it.
+  const QPalette& p = palette();
+  return QString(
+             "body { font-family: '%1', 'DejaVu Sans', sans-serif; font-size: %2px; line-height: 1.45; "
+             "color: %3; background: %4; margin: 6px 10px; }"
+             "a { color: %5; } h1 { font-size: 1.45em; } h2 { font-size: 1.25em; }"
+             "pre, code { font-family: 'DejaVu Sans Mono', monospace; font-size: 0.95em; }"
+             "pre { white-space: pre-wrap; } .katex-display { overflow-x: auto; overflow-y: hidden; "
+             "padding: 0.1em 0; } .katex-error { color: #d00; } table { border-collapse: collapse; }"
+             "th, td { border: 1px solid %6; padding: 0.15em 0.5em; }"
+             "blockquote { border-left: 3px solid %6; margin-left: 0; padding-left: 0.8em; }")
+      .arg(font().family())
+      .arg(textPixelSize())
+      .arg(cssColour(p.color(QPalette::Text)), cssColour(p.color(QPalette::Base)),
+           cssColour(p.color(QPalette::Link)), cssColour(p.color(QPalette::Mid)));
+}
+
+void LessonTextView::applyStyle() {
+  view_->page()->setBackgroundColor(palette().color(QPalette::Base));
+  if (!loaded_) return;
+  QString css = styleSheet();
+  css.replace('\\', "\\\\").replace('\'', "\\'");
+  view_->page()->runJavaScript("document.getElementById('look').textContent = '" + css + "';");
+}
+
+void LessonTextView::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::FontChange || event->type() == QEvent::PaletteChange) applyStyle();
+  QWidget::changeEvent(event);
+}
+
+QWidget* LessonTextView::viewport() const {
+  return view_->focusProxy() ? view_->focusProxy() : view_;
+}
+
+void LessonTextView::watchChildren(QObject* object) {
+  object->installEventFilter(this);
+  for (QObject* child : object->children())
+    if (child->isWidgetType()) watchChildren(child);
+}
+
+bool LessonTextView::eventFilter(QObject* watched, QEvent* event) {
+  // WebEngine makes its own widget for the page later: it must pass the navigation keys on too.
+  if (event->type() == QEvent::ChildAdded) {
+    QObject* child = static_cast<QChildEvent*>(event)->child();
+    if (child->isWidgetType()) watchChildren(child);
+  }
+  if (event->type() == QEvent::ShortcutOverride) {
+    auto* key = static_cast<QKeyEvent*>(event);
+    const bool navigation = key->key() == Qt::Key_Left || key->key() == Qt::Key_Right ||
+                            key->key() == Qt::Key_PageUp || key->key() == Qt::Key_PageDown ||
+                            key->key() == Qt::Key_Space;
+    if (navigation && key->modifiers() == Qt::NoModifier) {
+      event->ignore();  // the window's step shortcuts run, not the page's scrolling
+      return true;
+    }
+  }
+  return QWidget::eventFilter(watched, event);
+}
+
+bool LessonTextView::waitUntilShown(int timeoutMs) {
+  QElapsedTimer clock;
+  clock.start();
+  auto wait = [](int ms) {
+    QEventLoop loop;
+    QTimer::singleShot(ms, &loop, &QEventLoop::quit);
+    loop.exec();
+  };
+  while (typesetGeneration_ != generation_ && clock.elapsed() < timeoutMs) wait(20);
+  if (typesetGeneration_ != generation_) return false;
+  wait(250);  // Chromium composites the typeset page in its own time
+  return true;
+}
+
+LessonTextView::MathsState LessonTextView::mathsState(int timeoutMs) {
+  MathsState state;
+  if (!waitUntilShown(timeoutMs)) return state;
+  QEventLoop loop;
+  QVariant answer;
+  view_->page()->runJavaScript(
+      "(function () { var eq = Array.prototype.map.call(document.querySelectorAll('.katex'), function (e) {"
+      " return parseFloat(getComputedStyle(e).fontSize); });"
+      " return JSON.stringify({katex: eq.length, body: parseFloat(getComputedStyle(document.body).fontSize),"
+      " smallest: eq.length ? Math.min.apply(null, eq) : 0}); })()",
+      [&](const QVariant& value) {
+        answer = value;
+        loop.quit();
+      });
+  QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+  loop.exec();
+  const QJsonObject o = QJsonDocument::fromJson(answer.toString().toUtf8()).object();
+  state.ready = !o.isEmpty();
+  state.formulas = formulas_;
+  state.errors = errors_;
+  state.katexNodes = o.value("katex").toInt();
+  state.bodyPixels = o.value("body").toDouble();
+  state.smallestEquationPixels = o.value("smallest").toDouble();
+  return state;
+}
+
+}  // namespace rt::app

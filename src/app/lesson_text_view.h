@@ -1,0 +1,66 @@
+// The step's text pane: the lesson's Markdown as HTML (md4c) in a web view, its maths typeset by KaTeX from
+// the local libjs-katex (nothing is fetched from the network). The page follows the widget's font and
+// palette, so presenter mode and the zoom keys scale the equations with the text.
+#pragma once
+
+#include <QPalette>
+#include <QString>
+#include <QStringList>
+#include <QWidget>
+
+class QWebEngineView;
+
+namespace rt::app {
+
+class LessonTextView : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit LessonTextView(QWidget* parent = nullptr);
+
+  // Shows Markdown whose maths is ready (lesson::prepareMaths: numbered equations, linked references).
+  void setMarkdown(const QString& markdown);
+  // The text shown, as Markdown (the words a reader sees, for tests and for copying).
+  QString toPlainText() const { return markdown_; }
+  // The size of the body text on the page, in CSS pixels (from the widget's font).
+  int textPixelSize() const;
+  // The widget that takes the mouse and the keys (WebEngine's own, once the page exists; else the view).
+  QWidget* viewport() const;
+
+  // What the page shows once its maths is typeset: waits (up to timeoutMs) for the page to be ready.
+  struct MathsState {
+    bool ready = false;
+    int formulas = 0;       // <x-equation> elements the page had
+    int katexNodes = 0;     // elements KaTeX produced (.katex)
+    QStringList errors;     // KaTeX's messages for formulas that failed
+    double bodyPixels = 0;  // computed font sizes on the page
+    double smallestEquationPixels = 0;
+  };
+  MathsState mathsState(int timeoutMs = 15000);
+  // Waits until the page of the last setMarkdown is typeset and has had time to be drawn (screenshots).
+  bool waitUntilShown(int timeoutMs = 15000);
+
+ signals:
+  // The page of the last setMarkdown is shown and its maths set.
+  void typeset(int formulas, const QStringList& errors);
+
+ protected:
+  void changeEvent(QEvent* event) override;
+  bool eventFilter(QObject* watched, QEvent* event) override;
+
+ private:
+  QString pageHtml(const QString& body) const;
+  QString styleSheet() const;
+  void applyStyle();
+  void watchChildren(QObject* object);
+
+  QWebEngineView* view_ = nullptr;
+  QString markdown_;
+  bool loaded_ = false;
+  int generation_ = 0;  // of the page shown, so that a late answer for an older page is ignored
+  int typesetGeneration_ = -1;
+  int formulas_ = 0;
+  QStringList errors_;
+};
+
+}  // namespace rt::app

@@ -1,0 +1,134 @@
+#include "cli/lesson_rendering.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "cli/cli_common.h"
+#include "core/input_error.h"
+#include "lesson/maths.h"
+#include "lesson/step_numbers.h"
+#include "lesson/step_runner.h"
+#ifdef RT_HAVE_VIZ
+#include "viz/lesson_figures.h"
+#endif
+#ifdef RT_HAVE_TYPESET
+#include "typeset/typesetter.h"
+#endif
+
+namespace rt::cli {
+namespace {
+
+lesson::RenderedLesson renderedHeader(const lesson::Lesson& l) {
+  lesson::RenderedLesson r;
+  r.id = l.id;
+  r.title = l.title;
+  r.chapter = l.chapter;
+  r.summary = l.summary;
+  r.order = l.order;
+  r.intro = l.intro;
+  return r;
+}
+
+}  // namespace
+
+lesson::LessonFolders LessonArguments::folders() const {
+  return root.empty() ? lesson::defaultFolders() : lesson::foldersUnder(root);
+}
+
+void LessonArguments::add(CLI::App* command) {
+  command->add_option("lessons", ids, "Lesson ids (file names in lessons/ without .md)");
+  command->add_flag("--all", all, "Every lesson in lessons/");
+  command->add_option("--root", root, "Folder holding lessons/ and scenes/ (default: the current folder)");
+}
+
+std::vector<std::string> LessonArguments::files() const {
+  const auto f = folders();
+  if (all == !ids.empty()) throw CLI::ValidationError("name lessons or give --all (not both)");
+  std::vector<std::string> out;
+  if (all) {
+    for (const auto& l : lesson::loadCatalogue(f)) out.push_back(l.file);
+  } else {
+    for (const auto& id : ids) out.push_back(lesson::lessonPath(f, id));
+  }
+  return out;
+}
+
+std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>& files,
+                                                  const lesson::LessonFolders& folders,
+                                                  const std::string& output, const RenderSettings& settings) {
+#ifndef RT_HAVE_VIZ
+  std::cerr << "radiosity: this build has no viz library: writing the text without figures\n";
+#endif
+  lesson::RunOptions options;
+  options.quick = settings.quick;
+  std::vector<lesson::RenderedLesson> rendered;
+  ProgressLine progress(true);
+  std::filesystem::create_directories(output);
+  std::ofstream skipped(std::filesystem::path(output) / "skipped.txt");  // figures this build could not draw
+  for (const auto& file : files) {
+    const lesson::Lesson l = lesson::loadLesson(file, folders.scenes);
+    const lesson::EquationNumbers equations = lesson::numberEquations(l);
+    options.outputDir = (std::filesystem::path(output) / l.id).string();
+    lesson::StepRunner runner(folders.scenes, options);
+    lesson::RenderedLesson page = renderedHeader(l);
+    if (settings.prepareMaths) page.intro = lesson::prepareMaths(l.intro, l.introLine, l.file, equations);
+    // The numbers behind every step, for checking against the app and for answer keys.
+    std::filesystem::create_directories(options.outputDir);
+    std::ofstream numbers(std::filesystem::path(options.outputDir) / "numbers.json");
+    numbers << "[\n";
+    bool firstNumbers = true;
+    for (const auto& step : l.steps) {
+      progress.report(static_cast<double>(step.index) / static_cast<double>(l.steps.size()), l.id);
+      lesson::StepResult result;
+      try {
+        result = runner.run(l, step, progress);
+      } catch (const lesson::MethodUnavailable& e) {
+        // Built without an optional library: say so on the page and in skipped.txt, keep going.
+        std::cerr << "radiosity: " << e.what() << " (step skipped)\n";
+        page.steps.push_back({step.title, "*" + e.message() + ": this step was not computed.*\n", {}});
+        for (const auto& f : step.figureFiles()) skipped << l.id << "/" << f << "\n";
+        continue;
+      }
+      numbers << (firstNumbers ? "" : ",\n") << "{\"step\": " << step.index
+              << ", \"numbers\": " << lesson::stepNumbersJson(result) << "}";
+      firstNumbers = false;
+      std::string text = lesson::resolvedText(l, step, result);
+      if (settings.prepareMaths) text = lesson::prepareMaths(text, step.textLine, l.file, equations);
+      lesson::RenderedStep s{step.title, text, {}};
+      try {
+#ifdef RT_HAVE_VIZ
+        s.figures = viz::renderStepFigures(l, step, result, options.outputDir,
+                                           {settings.width, settings.height, settings.format});
+#endif
+      } catch (const std::exception& e) {
+        throw InputError({l.file, step.line}, "step '" + step.title + "': " + e.what());
+      }
+      page.steps.push_back(std::move(s));
+    }
+    numbers << "\n]\n";
+    rendered.push_back(std::move(page));
+  }
+  progress.finish();
+  std::stable_sort(rendered.begin(), rendered.end(),
+                   [](const auto& x, const auto& y) { return x.order < y.order; });
+  return rendered;
+}
+
+std::vector<std::string> mathsProblems(const lesson::Lesson& l) {
+  std::vector<std::string> problems;
+  try {
+    const lesson::EquationNumbers numbers = lesson::numberEquations(l);
+    lesson::prepareMaths(l.intro, l.introLine, l.file, numbers);
+    for (const auto& step : l.steps) lesson::prepareMaths(step.text, step.textLine, l.file, numbers);
+  } catch (const InputError& e) {
+    problems.push_back(e.what());
+  }
+#ifdef RT_HAVE_TYPESET
+  for (auto& p : typeset::checkFormulas(lesson::lessonFormulas(l), l.file)) problems.push_back(std::move(p));
+#endif
+  return problems;
+}
+
+}  // namespace rt::cli

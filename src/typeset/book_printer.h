@@ -1,0 +1,20 @@
+// The printed book: the one-document HTML of the whole book (lesson::printBookHtml) with its maths set, laid
+// out into numbered A4 pages (chapters start a page, headings stay with what follows, the contents get their
+// page numbers) and printed to PDF by WebEngine, text and vector figures as vectors.
+#pragma once
+
+#include <QString>
+
+#include "typeset/typesetter.h"
+
+namespace rt::typeset {
+
+struct PrintedBook {
+  int pages = 0;
+  MathsReport maths;
+};
+
+// Throws std::runtime_error when the document cannot be loaded or the PDF cannot be written.
+PrintedBook printBook(const QString& htmlFile, const QString& pdfFile);
+
+}  // namespace rt::typeset

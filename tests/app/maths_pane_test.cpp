@@ -1,0 +1,94 @@
+// The step's text pane typesets its maths with KaTeX: the page reports KaTeX's nodes for every formula and no
+// error, at normal size and in presenter mode, where the equations grow with the text. Screenshots of both
+// are written to build/.../tests/screenshots for a reader to look at.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QDir>
+#include <QTest>
+
+#include "app/lesson_text_view.h"
+#include "app/screenshot.h"
+#include "app_test_support.h"
+
+using namespace rt::app;
+
+namespace {
+
+void shoot(MainWindow& window, const char* name) {
+  QDir().mkpath(RT_BINARY_DIR "/tests/screenshots");
+  const QImage image = grabWindow(window);
+  image.save(QString(RT_BINARY_DIR "/tests/screenshots/maths-%1.png").arg(name));
+  // The text pane shows dark text on light (or light on dark): more than one colour, not one flat area.
+  const QRect pane = test::areaOf(&window, window.textView());
+  EXPECT_GT(pixelStatistics(image, pane).distinctColours, 8) << name;
+}
+
+}  // namespace
+
+TEST(MathsPane, TheLessonPaneShowsTypesetMathsWithoutErrors) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->resize(1600, 1000);
+  window->show();
+  ASSERT_TRUE(window->openLesson("rendering-equation", 2));  // the radiosity equation, displayed and numbered
+  const LessonTextView::MathsState state = window->textView()->mathsState();
+  ASSERT_TRUE(state.ready) << "the page was not typeset in time";
+  EXPECT_GE(state.formulas, 5);
+  EXPECT_EQ(state.katexNodes, state.formulas) << "every formula set by KaTeX";
+  EXPECT_TRUE(state.errors.isEmpty()) << state.errors.join("; ").toStdString();
+  EXPECT_TRUE(window->textView()->toPlainText().contains("\\tag{2.3}")) << "numbered by the lesson";
+  shoot(*window, "normal");
+}
+
+TEST(MathsPane, EveryLessonsMathsTypesetsInThePane) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->show();
+  for (const char* lesson :
+       {"form-factor", "hemicube", "radiosity-matrix", "gathering", "patches-to-pixels"}) {
+    ASSERT_TRUE(window->openLesson(lesson, 0)) << lesson;
+    const auto state = window->textView()->mathsState();
+    ASSERT_TRUE(state.ready) << lesson;
+    EXPECT_TRUE(state.errors.isEmpty()) << lesson << ": " << state.errors.join("; ").toStdString();
+    EXPECT_EQ(state.katexNodes, state.formulas) << lesson;
+  }
+}
+
+TEST(MathsPane, PresenterModeScalesTheEquationsWithTheText) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->resize(1920, 1080);
+  window->show();
+  ASSERT_TRUE(window->openLesson("rendering-equation", 2));
+  const auto normal = window->textView()->mathsState();
+  ASSERT_GT(normal.smallestEquationPixels, 0);
+  window->activateWindow();
+  QApplication::setActiveWindow(window.get());
+  QTest::keyClick(window.get(), Qt::Key_F11);
+  ASSERT_TRUE(window->presenterMode());
+  QTest::qWait(200);
+  const auto presenter = window->textView()->mathsState();
+  EXPECT_GE(presenter.bodyPixels, 28);
+  EXPECT_GT(presenter.smallestEquationPixels, normal.smallestEquationPixels * 1.5);
+  EXPECT_GE(presenter.smallestEquationPixels, presenter.bodyPixels) << "KaTeX sets maths at 1.21 em";
+  EXPECT_TRUE(presenter.errors.isEmpty());
+  shoot(*window, "presenter");
+  QTest::keyClick(window.get(), Qt::Key_Escape);
+  EXPECT_FALSE(window->presenterMode());
+}
+
+TEST(MathsPane, AFormulaThatDoesNotTypesetIsReportedNotHidden) {
+  RT_REQUIRE_DISPLAY();
+  LessonTextView view;
+  view.resize(600, 400);
+  view.show();
+  view.setMarkdown("Fine $a^2$, broken $\\frac{1}{2$.");
+  const auto state = view.mathsState();
+  ASSERT_TRUE(state.ready);
+  EXPECT_EQ(state.formulas, 2);
+  EXPECT_EQ(state.katexNodes, 1);
+  ASSERT_EQ(state.errors.size(), 1);
+  EXPECT_TRUE(state.errors.first().contains("KaTeX parse error")) << state.errors.first().toStdString();
+  test::takeWarnings();
+}
