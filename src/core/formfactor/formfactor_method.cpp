@@ -25,8 +25,8 @@ void registerBuiltinFormFactorMethods();
 namespace {
 
 // Rows of F above 1 beyond round-off: the element would pass on more light than leaves it. Methods that cast
-// rays overshoot by their sampling noise (16 rays per pair: a few tenths of a percent in a closed room), which
-// their accuracy knob controls; only an overshoot well beyond that is worth a warning.
+// rays overshoot by their sampling noise (16 rays per pair: a few tenths of a percent in a closed room),
+// which their accuracy knob controls; only an overshoot well beyond that is worth a warning.
 constexpr double kRowSumSlack = 1e-6, kRowSumSlackWithRays = 1e-2;
 
 void addWarnings(const std::string& method, const FormFactorMatrix& F, FormFactorStats& stats) {
