@@ -124,6 +124,7 @@ void ParameterPanel::addRow(const StepKey& key) {
     auto* spin = new QSpinBox(this);
     spin->setRange(clampToInt(key.min), clampToInt(key.max));
     spin->setSingleStep(static_cast<int>(std::max(1.0, key.step)));
+    if (!key.zeroText.empty()) spin->setSpecialValueText(tr(key.zeroText.c_str()));
     connect(spin, &QSpinBox::valueChanged, this, changed);
     editor = spin;
   } else if (key.type == KeyType::Double && !key.logScale) {

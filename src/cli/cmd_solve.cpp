@@ -31,7 +31,7 @@ struct SolveArguments {
   std::string solver;                                   // empty: chosen by size
   std::string formFactors = defaultFormFactorMethod();  // handles occluders
   double tolerance = 1e-6;
-  int maxIterations = 1000;
+  int maxIterations = 0;  // automatic
   std::uint64_t seed = 1;
   int resolution = 128;
   int samples = 16;
@@ -104,9 +104,11 @@ void runRefined(const SolveArguments& a, const Scene& scene) {
 
 // Status check and outputs shared by both ways of solving.
 void finish(const SolveArguments& a, const Scene& scene, const Mesh& mesh, SolverStatus status, double error,
-            const RgbField& B) {
+            int iterations, const RgbField& B) {
   if (status == SolverStatus::NoConvergence)
-    std::cerr << "warning: not converged: the iteration cap (--iterations " << a.maxIterations
+    std::cerr << "warning: not converged: the iteration cap ("
+              << (a.maxIterations > 0 ? "--iterations " + std::to_string(a.maxIterations)
+                                      : std::to_string(iterations) + ", automatic; --iterations raises it")
               << ") was reached with relative residual " << error << "\n";
   if (status != SolverStatus::Success && status != SolverStatus::NoConvergence)
     throw std::runtime_error("the solver failed: " + toString(status));
@@ -184,7 +186,7 @@ void run(const SolveArguments& a) {
     std::cerr << "solve (" << name << ", rows on demand): " << toString(solver->info()) << " after "
               << solver->iterations() << " shots, " << rows << " rows computed, unshot residual "
               << solver->error() << "\n";
-    finish(a, scene, mesh, solver->info(), solver->error(), B);
+    finish(a, scene, mesh, solver->info(), solver->error(), solver->iterations(), B);
     return;
   }
   // The pipeline's form factors and solve, as the lessons and the app compute them.
@@ -200,7 +202,7 @@ void run(const SolveArguments& a) {
   std::cerr << "solve (" << name << "): " << toString(outcome.status) << " after " << outcome.iterations
             << " " << (outcome.iterations == 1 ? "iteration" : "iterations") << ", relative residual "
             << outcome.residual << "\n";
-  finish(a, scene, mesh, outcome.status, outcome.error, outcome.B);
+  finish(a, scene, mesh, outcome.status, outcome.error, outcome.iterations, outcome.B);
 }
 
 }  // namespace

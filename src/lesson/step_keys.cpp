@@ -157,13 +157,16 @@ std::vector<StepKey> makeTable() {
        .slot = &P::solvers});
   add({.name = "iterations",
        .type = KeyType::Int,
-       .min = 1,
+       .min = 0,
        .max = 1000000,
-       .defaultText = "1000",
+       .defaultText = "0",
        .label = "Max iterations",
-       .tooltip = "Iterations (sweeps, shots or rounds) after which a solver stops unconverged.",
+       .tooltip =
+           "Iterations (sweeps, shots or rounds) after which a solver stops unconverged. 0 is automatic: "
+           "1000 sweeps or rounds; shooting, 100 shots per element.",
        .control = true,
        .step = 1,
+       .zeroText = "automatic",
        .stages = solving,
        .slot = &P::iterations});
   add({.name = "tolerance",

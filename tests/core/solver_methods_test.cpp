@@ -47,6 +47,23 @@ TEST(Shooting, RowsOnDemandGiveTheMatrixAnswer) {
   EXPECT_EQ(solver.history().front().shooter, 0);  // the brightest emitter shoots first
 }
 
+TEST(Shooting, TheDefaultCapScalesWithTheElements) {
+  // 700 elements: a fixed cap of 1000 shots is less than two sweeps' worth; the automatic cap (100 shots per
+  // element) lets Southwell reach a tight tolerance and the direct solution.
+  const test::OwnedSystem s = test::randomSystem(700, 3);
+  SolverOptions o;
+  o.tolerance = 1e-10;
+  ASSERT_EQ(o.maxIterations, 0);
+  EXPECT_EQ(shotCap(o, 700), 70000);
+  EXPECT_EQ(sweepCap(o), 1000);
+  RgbField shot, exact;
+  ASSERT_EQ(southwell(s.system, shot, o), SolverStatus::Success);
+  ASSERT_EQ(directSolve(s.system, exact, o, {}), SolverStatus::Success);
+  EXPECT_LT((shot - exact).norm(), 1e-8 * exact.norm());
+  o.maxIterations = 1000;  // the old fixed cap stops far from it
+  EXPECT_EQ(southwell(s.system, shot, o), SolverStatus::NoConvergence);
+}
+
 TEST(Shooting, AmbientTermFollowsCohenEtAl) {
   const test::OwnedSystem s = test::colouredCube();
   const RgbField unshot = s.system.emission;

@@ -12,7 +12,7 @@ SolverStatus neumannSeries(const RadiositySystem& system, RgbField& B, const Sol
   if (terms) terms->push_back(system.emission);
   const Stopwatch clock;
   RgbField term = system.emission;
-  for (int k = 1; k <= options.maxIterations; ++k) {
+  for (int k = 1, cap = sweepCap(options); k <= cap; ++k) {
     term = (system.reflectance.array() * ((*system.F) * term).array()).matrix();  // one more bounce
     if (!term.allFinite()) return SolverStatus::NumericalIssue;
     B += term;

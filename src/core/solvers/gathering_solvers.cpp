@@ -27,7 +27,7 @@ SolverStatus iterate(const RadiositySystem& system, RgbField& B, const SolverOpt
   if ((divisor.array() <= 0.0).any()) return SolverStatus::NumericalIssue;  // rho = 1 and F_ii = 1
   const Stopwatch clock;
   RgbField previous;
-  for (int k = 1; k <= options.maxIterations; ++k) {
+  for (int k = 1, cap = sweepCap(options); k <= cap; ++k) {
     previous = B;
     sweep(B, divisor);
     if (!B.allFinite()) {

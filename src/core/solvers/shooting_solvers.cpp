@@ -31,7 +31,8 @@ SolverStatus shoot(const RadiositySystem& system, const FormFactorRowProvider* r
   const double eNorm = system.emission.norm();
   Eigen::VectorXd fraction(n), row;
 
-  for (int k = 1; k <= options.maxIterations; ++k) {
+  const int cap = shotCap(options, n);
+  for (int k = 1; k <= cap; ++k) {
     Eigen::Index shooter = 0;
     const double shotPower = power.maxCoeff(&shooter);
     if (shotPower <= 0.0) return SolverStatus::Success;  // everything shot (possible when all rho are 0)
@@ -70,7 +71,7 @@ SolverStatus shoot(const RadiositySystem& system, const FormFactorRowProvider* r
     r.absorbedPower = absorbed;
     r.escapedPower = escaped;
     const bool done = r.unshotPower <= options.tolerance * emitted;
-    const bool last = done || k == options.maxIterations;
+    const bool last = done || k == cap;
     r.B = B;
     if (withAmbient) {
       const Rgb ambient = ambientTerm(system, unshot);

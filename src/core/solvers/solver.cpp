@@ -1,5 +1,6 @@
 #include "core/solvers/solver.h"
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -19,6 +20,15 @@ std::string toString(SolverStatus status) {
       return "cancelled";
   }
   return "unknown";
+}
+
+int sweepCap(const SolverOptions& options) {
+  return options.maxIterations > 0 ? options.maxIterations : 1000;
+}
+
+int shotCap(const SolverOptions& options, long long elements) {
+  if (options.maxIterations > 0) return options.maxIterations;
+  return static_cast<int>(std::clamp<long long>(100 * elements, 1000, 100'000'000));
 }
 
 void Solver::record(IterationRecord r) {

@@ -66,7 +66,7 @@ SolverStatus stochasticJacobi(const RadiositySystem& system, RgbField& B, const 
   std::vector<double> sourceCumulative(static_cast<std::size_t>(n));
   RgbField received(n, 3), receivedSquares(n, 3);
 
-  for (int k = 1; k <= options.maxIterations; ++k) {
+  for (int k = 1, cap = sweepCap(options); k <= cap; ++k) {
     double total = 0.0;
     for (Eigen::Index j = 0; j < n; ++j)
       sourceCumulative[std::size_t(j)] = total += unshot.row(j).sum() * A(j);
@@ -170,7 +170,7 @@ SolverStatus randomWalk(const RadiositySystem& system, RgbField& B, const Solver
     scores.emplace_back(k, s);
   };
 
-  for (int it = 1; it <= options.maxIterations; ++it) {
+  for (int it = 1, cap = sweepCap(options); it <= cap; ++it) {
     for (long w = 0; w < batch; ++w) {
       scores.clear();
       const std::size_t picked = sampleCumulative(sourceCumulative, random.uniform() * emitted);
