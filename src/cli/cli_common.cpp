@@ -34,6 +34,19 @@ MeshOptions MeshArguments::options() const {
   return o;
 }
 
+MeshOptions MeshArguments::optionsFor(const Scene& scene) const {
+  if (noSubdivide || subdivide > 0 || maxEdge > 0) return options();
+  const MeshOptions chosen = defaultMeshOptions(scene);
+  if (chosen.mode != MeshOptions::Mode::MaxEdge) return chosen;
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "mesh: no mesh option given: --max-edge %g (%s) for about %.0f elements "
+                "(--no-subdivide: one element per polygon; --max-edge or --subdivide: your own)",
+                chosen.maxEdge, scene.unit.c_str(), estimatedElementCount(scene, chosen));
+  std::cerr << line << "\n";
+  return chosen;
+}
+
 Scene loadSceneReportingWarnings(const std::string& path) {
   Scene scene = loadScene(path);
   for (const std::string& w : scene.warnings) std::cerr << w << "\n";

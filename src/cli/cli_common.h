@@ -33,6 +33,9 @@ struct MeshArguments {
   double maxEdge = 0.0;
   void add(CLI::App& command);
   MeshOptions options() const;
+  // options(), except that a scene given without any mesh option gets defaultMeshOptions, and stderr says
+  // which element size was chosen and how to choose another (solve: a solution needs a mesh).
+  MeshOptions optionsFor(const Scene& scene) const;
 };
 
 // Loads and validates the scene, printing its warnings to stderr.

@@ -157,7 +157,7 @@ void run(const SolveArguments& a) {
   if (!solverName.empty()) makeSolver(solverName);  // an unknown name fails before the expensive part
   if (a.noMatrix)
     if (const char* problem = noMatrixProblem(solverName, formFactors)) throw CLI::ValidationError(problem);
-  const Mesh mesh = buildMesh(scene, a.mesh.options());
+  const Mesh mesh = buildMesh(scene, a.mesh.optionsFor(scene));
   ProgressLine progress(!a.verbose);
 
   FormFactorOptions ffOptions;

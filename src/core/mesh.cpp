@@ -92,8 +92,7 @@ constexpr double kBytesPerElement = 400;
 
 // Refuses, before any allocation, a mesh that cannot fit in memory, with the numbers and what to do instead.
 void checkMeshSize(const Scene& scene, const MeshOptions& options) {
-  double elements = 0;
-  for (const Patch& patch : scene.patches) elements += elementCount(patch.vertices, options);
+  const double elements = estimatedElementCount(scene, options);
   const double bytes = elements * kBytesPerElement, budget = memoryBudgetBytes();
   // Element and vertex indices are ints.
   const double indexLimit = static_cast<double>(std::numeric_limits<int>::max()) / 8;
@@ -282,6 +281,30 @@ void refreshMaterials(Mesh& mesh, const Scene& scene) {
     mesh.reflectance.row(i) = m.reflectance.matrix().transpose();
     mesh.emission.row(i) = m.emission.matrix().transpose();
   }
+}
+
+double estimatedElementCount(const Scene& scene, const MeshOptions& options) {
+  double elements = 0;
+  for (const Patch& patch : scene.patches) elements += elementCount(patch.vertices, options);
+  return elements;
+}
+
+MeshOptions defaultMeshOptions(const Scene& scene, double elements) {
+  if (static_cast<double>(scene.patches.size()) >= elements) return {};
+  double longest = 0;
+  for (const Patch& patch : scene.patches) longest = std::max(longest, maxEdgeLength(patch.vertices));
+  MeshOptions options;
+  options.mode = MeshOptions::Mode::MaxEdge;
+  // The count only grows as the edge shrinks: bisect on the edge (in log scale) for the largest edge that
+  // still gives `elements`, then round it down to two significant digits, which a reader can retype.
+  double coarse = longest, fine = longest / std::sqrt(elements) / 4;
+  for (int k = 0; k < 60; ++k) {
+    options.maxEdge = std::sqrt(coarse * fine);
+    (estimatedElementCount(scene, options) >= elements ? fine : coarse) = options.maxEdge;
+  }
+  const double scale = std::pow(10.0, std::floor(std::log10(fine)) - 1);
+  options.maxEdge = std::floor(fine / scale) * scale;
+  return options;
 }
 
 }  // namespace rt

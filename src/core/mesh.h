@@ -52,6 +52,13 @@ struct Mesh {
 // allocating anything, for a mesh that would not fit in memory (the message gives the element count, the
 // memory it needs and a coarser setting).
 Mesh buildMesh(const Scene& scene, const MeshOptions& options = {});
+
+// How many elements buildMesh would make, without making them.
+double estimatedElementCount(const Scene& scene, const MeshOptions& options);
+// A mesh for a scene given without mesh options: the largest --max-edge (to 2 significant digits) that gives
+// at least `elements` elements, or one element per patch when the scene has that many patches already. One
+// element per polygon is rarely right (the JSON Cornell box: 20 elements, 55 % error on the floor).
+MeshOptions defaultMeshOptions(const Scene& scene, double elements = 800);
 // Copies reflectance/emission from the scene into an existing mesh (after a material-only change).
 void refreshMaterials(Mesh& mesh, const Scene& scene);
 

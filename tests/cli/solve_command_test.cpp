@@ -48,6 +48,26 @@ TEST(SolveCommand, FurnaceCubeGivesEOverOneMinusRho) {
     for (int c = 4; c < 7; ++c) EXPECT_NEAR(std::stod(rows[r][c]), 2.0, 1e-6) << "row " << r;
 }
 
+TEST(SolveCommand, ASceneWithoutMeshOptionsGetsAMeshAndSaysWhich) {
+  // One element per polygon gave the JSON Cornell box 20 elements and 55 % error on the floor.
+  const std::string out = scratchDir("solve-default-mesh") + "/B.csv";
+  std::string log;
+  ASSERT_EQ(
+      runCommand(cliPath() + " solve " + sourcePath("scenes/cornell-box.json") + " --output " + out, &log), 0)
+      << log;
+  EXPECT_NE(log.find("mesh: no mesh option given: --max-edge 69 (mm) for about"), std::string::npos) << log;
+  const auto rows = readCsv(out);
+  EXPECT_GE(rows.size(), 1u + 800u);
+  // --no-subdivide still means one element per polygon, and says nothing.
+  ASSERT_EQ(runCommand(cliPath() + " solve " + sourcePath("scenes/cornell-box.json") +
+                           " --no-subdivide --output " + out,
+                       &log),
+            0)
+      << log;
+  EXPECT_EQ(log.find("no mesh option given"), std::string::npos) << log;
+  EXPECT_EQ(readCsv(out).size(), 1u + 20u);
+}
+
 TEST(SolveCommand, MissingSceneIsAClearError) {
   std::string log;
   EXPECT_NE(runCommand(cliPath() + " solve /nonexistent/scene.json", &log), 0);

@@ -100,3 +100,30 @@ TEST(Mesh, RejectsImpossibleOptions) {
 
 }  // namespace
 }  // namespace rt
+
+namespace rt {
+namespace {
+
+TEST(DefaultMesh, TheLargestRoundEdgeThatGivesTheElementsAsked) {
+  Scene s;
+  s.materials.push_back({"grey", Rgb(0.5, 0.5, 0.5), Rgb(1, 1, 1)});
+  s.surfaces.push_back({"square", 0});
+  Patch p;
+  p.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  p.normal = Vec3(0, 0, 1);
+  p.area = 1;
+  p.surface = 0;
+  s.patches.push_back(p);
+  // A unit square: 100 elements need 10 divisions, which every edge from 0.1 to just under 1/9 gives; the
+  // largest with two digits is 0.11 (0.12 gives 9 x 9 = 81).
+  const MeshOptions chosen = defaultMeshOptions(s, 100);
+  ASSERT_EQ(chosen.mode, MeshOptions::Mode::MaxEdge);
+  EXPECT_NEAR(chosen.maxEdge, 0.11, 1e-12);
+  EXPECT_EQ(estimatedElementCount(s, chosen), 100);
+  EXPECT_EQ(buildMesh(s, chosen).size(), 100u);
+  // A scene with as many patches as asked keeps one element per patch.
+  EXPECT_EQ(defaultMeshOptions(s, 1).mode, MeshOptions::Mode::None);
+}
+
+}  // namespace
+}  // namespace rt
