@@ -17,7 +17,13 @@ std::string point(const Vec3& p) {
 
 }  // namespace
 
-std::string sceneJsonText(const std::string& title, const std::vector<NamedPolygon>& surfaces) {
+std::string sceneJsonText(const std::string& title, const std::vector<NamedPolygon>& given) {
+  // The program solves only scenes with a light: when no surface emits, the first one does (form factors do
+  // not depend on it).
+  std::vector<NamedPolygon> surfaces = given;
+  bool lit = false;
+  for (const NamedPolygon& s : surfaces) lit = lit || s.emission > 0;
+  if (!lit && !surfaces.empty()) surfaces.front().emission = 1;
   std::string materials, list;
   for (std::size_t k = 0; k < surfaces.size(); ++k) {
     const NamedPolygon& s = surfaces[k];

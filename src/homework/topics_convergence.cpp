@@ -86,6 +86,7 @@ std::optional<Exercise> generateSpectralRadius(Draw& draw) {
   const int m = static_cast<int>(std::ceil(ratio));
   Exercise e;
   e.title = "Spectral radius and iteration count";
+  e.given = {{"exponent", exponent}};
   e.statement =
       ductStatement(*d) +
       " The error of Jacobi's iteration shrinks like $r^m$, with $r$ the spectral "

@@ -116,13 +116,22 @@ std::optional<Exercise> generateNusselt(Draw& draw) {
   s.push_back(
       "Project each corner onto the unit hemisphere, $\\hat R_k = R_k/|R_k|$; dropping it onto the base "
       "disk keeps its $(x, y)$.");
-  double sum = 0, beta1 = 0;
+  // cos gamma_k carries a sign: an edge seen "backwards" (the zenith outside the polygon) takes area away.
+  // The polygon's orientation fixes the overall sign, made positive afterwards.
+  std::vector<double> betas, cosines;
+  double signedSum = 0;
   for (std::size_t k = 0; k < p.size(); ++k) {
     const Vec3 a = p[k].normalized(), b = p[(k + 1) % p.size()].normalized();
     const Vec3 c = a.cross(b);
-    const double beta = std::atan2(c.norm(), a.dot(b)), cosGamma = std::abs(n.dot(c.normalized()));
-    if (k == 0) beta1 = beta;
-    sum += beta * cosGamma;
+    betas.push_back(std::atan2(c.norm(), a.dot(b)));
+    cosines.push_back(n.dot(c.normalized()));
+    signedSum += betas.back() * cosines.back();
+  }
+  const double orientation = signedSum < 0 ? -1 : 1;
+  const double sum = std::abs(signedSum), beta1 = betas[0];
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const Vec3 a = p[k].normalized();
+    const double cosGamma = orientation * cosines[k], beta = betas[k];
     s.push_back("Corner " + std::to_string(k + 1) + ": $\\hat R = " + vectorLatex(a, 5) + "$, disk point $(" +
                 num(a.x(), 5) + ", " + num(a.y(), 5) + ")$; edge " + std::to_string(k + 1) + ": $\\beta_" +
                 std::to_string(k + 1) + " = " + num(beta, 6) + "$ rad, $\\cos\\gamma_" +
