@@ -62,13 +62,6 @@ std::string svgColour(const std::string& fill) {
   return "none";
 }
 
-std::string tikzColour(const std::string& fill) {
-  if (fill == "grey") return "black!27";
-  if (fill == "light") return "blue!6";
-  if (fill == "accent") return "orange!60";
-  return "";
-}
-
 }  // namespace
 
 std::string toSvg(const Figure& figure, double widthPixels) {
@@ -95,24 +88,30 @@ std::string toSvg(const Figure& figure, double widthPixels) {
   return out + "</svg>\n";
 }
 
-std::string toTikz(const Figure& figure, double widthCm) {
+std::string toLatexPicture(const Figure& figure, double widthMm) {
   const Bounds b = boundsOf(figure);
-  const double scale = widthCm / std::max(b.hi.x() - b.lo.x(), 1e-9);
+  const double scale = widthMm / std::max(b.hi.x() - b.lo.x(), 1e-9);
   auto P = [&](const Vec2& p) {
     return "(" + fmt((p.x() - b.lo.x()) * scale) + "," + fmt((p.y() - b.lo.y()) * scale) + ")";
   };
-  std::string out = "\\begin{tikzpicture}\n";
+  const double height = (b.hi.y() - b.lo.y()) * scale;
+  std::string out =
+      "\\setlength{\\unitlength}{1mm}\n\\begin{picture}(" + fmt(widthMm) + "," + fmt(height) + ")\n";
   for (const auto& s : figure.shapes) {
-    std::string options = s.dashed ? "dashed" : "";
-    const std::string colour = tikzColour(s.fill);
-    if (!colour.empty()) options += std::string(options.empty() ? "" : ",") + "fill=" + colour;
-    out += "\\draw" + (options.empty() ? std::string() : "[" + options + "]") + " ";
-    for (std::size_t k = 0; k < s.points.size(); ++k) out += (k ? " -- " : "") + P(s.points[k]);
-    out += s.closed ? " -- cycle;\n" : ";\n";
+    // Filled shapes (the part the exercise is about) are drawn with thick lines: the picture environment
+    // cannot fill, and its \\line takes only a few slopes, so every segment is a straight \\qbezier.
+    out += s.fill == "accent" ? "\\thicklines\n" : "\\thinlines\n";
+    const std::size_t count = s.points.size(), segments = s.closed ? count : count - 1;
+    for (std::size_t k = 0; k < segments; ++k) {
+      const Vec2& p = s.points[k];
+      const Vec2& q = s.points[(k + 1) % count];
+      if ((q - p).norm() * scale < 0.05) continue;  // LaTeX's \qbezier overflows on a zero-length segment
+      out += "\\qbezier" + P(p) + P(0.5 * (p + q)) + P(q) + "\n";
+    }
   }
   for (const auto& l : figure.labels)
-    out += "\\node[font=\\small] at " + P(l.at) + " {" + escapeTex(l.text) + "};\n";
-  return out + "\\end{tikzpicture}\n";
+    out += "\\put" + P(l.at) + "{\\makebox(0,0){\\small " + escapeTex(l.text) + "}}\n";
+  return out + "\\end{picture}\n";
 }
 
 }  // namespace rt::homework

@@ -1,5 +1,5 @@
 // A small 2D drawing (y up) that a handout shows: written once by the generator, rendered as SVG for the
-// Markdown handout and as TikZ for the LaTeX source, so the two never disagree.
+// Markdown handout and as a LaTeX picture for the LaTeX source, so the two never disagree.
 #pragma once
 
 #include <string>
@@ -36,7 +36,7 @@ struct Figure {
 
 // Scaled to `widthPixels` wide, with a margin for labels.
 std::string toSvg(const Figure& figure, double widthPixels = 360);
-// A tikzpicture scaled to `widthCm` wide.
-std::string toTikz(const Figure& figure, double widthCm = 7);
+// A LaTeX picture environment (no package needed) scaled to `widthMm` wide.
+std::string toLatexPicture(const Figure& figure, double widthMm = 70);
 
 }  // namespace rt::homework

@@ -44,7 +44,7 @@ std::optional<Exercise> generateClosure(Draw& draw) {
       "and $F_{16} = F_{15}$; reciprocity: $A_iF_{ij} = A_jF_{ji}$.";
   auto& s = e.solution;
   s.push_back("Areas: $A_1 = A_2 = " + num(A1) + "$, $A_3 = A_4 = " + num(A3) + "$, $A_5 = A_6 = " + num(A5) +
-              "$ m².");
+              "$ $\\mathrm{m}^2$.");
   s.push_back("Row 1: $F_{12} + 2F_{13} + 2F_{15} = 1$, so $F_{15} = (1 - " + num(F12) + " - 2 \\times " +
               num(F13) + ")/2 = " + num(F15, 6) + "$.");
   s.push_back("Reciprocity: $F_{51} = A_1F_{15}/A_5 = " + num(A1) + " \\times " + num(F15, 6) + " / " +
