@@ -7,6 +7,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "core/input_error.h"
+#include "homework/handout.h"
 #include "lesson/book.h"
 #include "lesson/lesson_loader.h"
 #include "lesson/step_keys.h"
@@ -111,6 +112,7 @@ void render(const LessonArguments& a, const std::string& output, bool quick, con
   lesson::RunOptions options;
   options.quick = quick;
   std::vector<lesson::RenderedLesson> rendered;
+  std::vector<homework::AppendixEntry> appendix;  // the exercises, answered at the back of the book
   ProgressLine progress(true);
   std::filesystem::create_directories(output);
   std::ofstream skipped(std::filesystem::path(output) / "skipped.txt");  // figures this build could not draw
@@ -140,6 +142,11 @@ void render(const LessonArguments& a, const std::string& output, bool quick, con
               << ", \"numbers\": " << lesson::stepNumbersJson(result) << "}";
       firstNumbers = false;
       lesson::RenderedStep s{step.title, lesson::resolvedText(l, step, result), {}};
+      if (result.exercise) {
+        s.text += homework::exerciseBookText(*result.exercise);
+        appendix.push_back({std::to_string(l.order) + "." + std::to_string(step.index + 1) + " " + step.title,
+                            *result.exercise});
+      }
       try {
 #ifdef RT_HAVE_VIZ
         s.figures =
@@ -164,6 +171,11 @@ void render(const LessonArguments& a, const std::string& output, bool quick, con
     std::cout << lesson::writeLessonPage(rendered[i], output, previous, next) << "\n";
   }
   std::cout << lesson::writeBookIndex(rendered, output) << "\n";
+  if (!appendix.empty()) {
+    const std::string path = (std::filesystem::path(output) / "exercise-answers.md").string();
+    std::ofstream(path, std::ios::binary) << homework::answersAppendix(appendix);
+    std::cout << path << "\n";
+  }
 }
 
 }  // namespace

@@ -51,6 +51,23 @@ std::string handoutMarkdown(const StudentExercises& s, std::uint64_t seed) {
   return out;
 }
 
+std::string exerciseBookText(const Exercise& e) {
+  std::string out = "\n" + e.statement + "\n\n";
+  for (const Question& q : e.questions) out += "- " + q.label + "\n";
+  return out + "\n*Answers and the worked solution: [appendix](exercise-answers.md).*\n";
+}
+
+std::string answersAppendix(const std::vector<AppendixEntry>& entries) {
+  std::string out = "# Appendix: answers to the exercises\n";
+  for (const AppendixEntry& entry : entries) {
+    out += "\n## " + entry.where + "\n\n";
+    for (const Question& q : entry.exercise.questions) out += "- " + q.label + ": " + num(q.answer, 6) + "\n";
+    out += "\nWorked solution:\n\n";
+    for (const std::string& step : entry.exercise.solution) out += "- " + step + "\n";
+  }
+  return out;
+}
+
 std::vector<std::string> writeAssignment(const Assignment& a, const std::string& directory) {
   std::vector<std::string> latex;
   const fs::path root(directory);

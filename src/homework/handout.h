@@ -14,6 +14,15 @@ namespace rt::homework {
 // The handout of one student as Markdown (figures and data referenced relative to the student's folder).
 std::string handoutMarkdown(const StudentExercises& student, std::uint64_t seed);
 
+// An exercise as a book prints it: the statement and the questions, answers in the appendix.
+std::string exerciseBookText(const Exercise& exercise);
+struct AppendixEntry {
+  std::string where;  // e.g. "3.6 Exercise: Two rectangles"
+  Exercise exercise;
+};
+// The book's appendix: every exercise's answers and worked solution.
+std::string answersAppendix(const std::vector<AppendixEntry>& entries);
+
 // Writes DIR/<student>/{handout.md, handout.tex, answers.txt, figures/, data/} for every student and
 // DIR/key.{json,md,tex}. Returns the LaTeX files written (for an optional PDF step). Throws InputError naming
 // a path that cannot be written.
