@@ -105,8 +105,12 @@ std::vector<std::string> exerciseProblems(const Exercise& e) {
 
 std::string topicTableMarkdown() {
   std::string out = "| topic | title | practises | lessons |\n|---|---|---|---|\n";
-  for (const Topic& t : topicTable())
-    out += std::string("| `") + t.id + "` | " + t.title + " | " + t.practises + " | " + t.lessons + " |\n";
+  for (const Topic& t : topicTable()) {
+    std::string lessons = t.lessons;
+    for (std::size_t k = lessons.find(','); k != std::string::npos; k = lessons.find(',', k + 2))
+      lessons.replace(k, 1, ", ");
+    out += std::string("| `") + t.id + "` | " + t.title + " | " + t.practises + " | " + lessons + " |\n";
+  }
   return out;
 }
 

@@ -2,9 +2,12 @@
 // students get different numbers.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <set>
+#include <sstream>
 
 #include "homework/topic_table.h"
+#include "support/test_paths.h"
 
 namespace rt::homework {
 namespace {
@@ -47,9 +50,15 @@ TEST(HomeworkTopics, SameSeedSameVariantOtherStudentOtherNumbers) {
   }
 }
 
-TEST(HomeworkTopics, TableMarkdownListsEveryTopic) {
+TEST(HomeworkTopics, TableMarkdownListsEveryTopicAndTheDocsHoldIt) {
   const std::string md = topicTableMarkdown();
   for (const Topic& t : topicTable()) EXPECT_NE(md.find(std::string("`") + t.id + "`"), std::string::npos);
+  std::ifstream in(test::sourcePath("docs/homework.md"));
+  std::stringstream docs;
+  docs << in.rdbuf();
+  EXPECT_NE(docs.str().find(md), std::string::npos)
+      << "docs/homework.md should hold the output of `radiosity homework topics`:\n"
+      << md;
 }
 
 }  // namespace
