@@ -156,7 +156,7 @@ std::string keyMarkdown(const Assignment& a) {
       out += "\n| answer id | answer | tolerance |\n|---|---|---|\n";
       for (const Question& q : e.questions)
         out +=
-            "| `" + e.topic + "." + q.id + "` | " + num(q.answer, 6) + " | " + num(q.tolerance, 2) + " |\n";
+            "| `" + e.topic + "." + q.id + "` | $" + num(q.answer, 6) + "$ | $" + num(q.tolerance, 2) + "$ |\n";
     }
   }
   return out;

@@ -86,15 +86,15 @@ std::optional<Exercise> generateHemicube(Draw& draw) {
       "of the rectangle's plane.";
   e.solution.push_back("$\\Delta A = " + num(dA, 6) + "$. (a) $\\Delta F = \\frac{" + num(dA, 6) + "}{\\pi(" +
                        num(x * x + y * y + 1, 6) + ")^2} = " + num(dTop, 6) +
-                       "$ (exact over the pixel: " + num(exactTop, 6) + ").");
+                       "$ (exact over the pixel: $" + num(exactTop, 6) + "$).");
   e.solution.push_back("(b) $\\Delta F = \\frac{" + num(zs) + " \\times " + num(dA, 6) + "}{\\pi(" +
                        num(ys * ys + zs * zs + 1, 6) + ")^2} = " + num(dSide, 6) +
-                       "$ (exact: " + num(exactSide, 6) + ").");
+                       "$ (exact: $" + num(exactSide, 6) + "$).");
   e.solution.push_back("(c) The projection onto $z = 1$ is $" + num(x0 / H, 5) + " \\le x \\le " +
                        num(x1 / H, 5) + "$, $" + num(y0 / H, 5) + " \\le y \\le " + num(y1 / H, 5) + "$; " +
                        std::to_string(pixels) + " pixel centres fall inside (first: " + list + ").");
   e.solution.push_back("(d) Their delta form factors sum to $F = " + num(F, 6) +
-                       "$ (the exact pixel integrals sum to " + num(exactF, 6) + ").");
+                       "$ (the exact pixel integrals sum to $" + num(exactF, 6) + "$).");
   e.questions = {
       {"dTop",
        "(a) $\\Delta F$ of the top pixel",
