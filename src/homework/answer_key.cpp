@@ -155,8 +155,8 @@ std::string keyMarkdown(const Assignment& a) {
       for (const std::string& step : e.solution) out += "- " + step + "\n";
       out += "\n| answer id | answer | tolerance |\n|---|---|---|\n";
       for (const Question& q : e.questions)
-        out +=
-            "| `" + e.topic + "." + q.id + "` | $" + num(q.answer, 6) + "$ | $" + num(q.tolerance, 2) + "$ |\n";
+        out += "| `" + e.topic + "." + q.id + "` | $" + num(q.answer, 6) + "$ | $" + num(q.tolerance, 2) +
+               "$ |\n";
     }
   }
   return out;

@@ -42,6 +42,18 @@ std::string matrixLatex(const Eigen::MatrixXd& m, int digits) {
   return out + "\\end{bmatrix}";
 }
 
+std::string markdownTable(const Eigen::MatrixXd& m, const std::vector<std::string>& columns, int digits) {
+  std::string out = "| $k$ |", rule = "|---|";
+  for (const std::string& c : columns) out += " " + c + " |", rule += "---|";
+  out += "\n" + rule + "\n";
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    out += "| " + std::to_string(i + 1) + " |";
+    for (Eigen::Index j = 0; j < m.cols(); ++j) out += " " + num(m(i, j), digits) + " |";
+    out += "\n";
+  }
+  return out;
+}
+
 double tolerance(double answer, double relative, double absolute) {
   return std::max(std::abs(answer) * relative, absolute);
 }

@@ -72,6 +72,9 @@ std::string vectorLatex(const Eigen::VectorXd& v, int digits = 4);
 // A small matrix as a LaTeX bmatrix.
 std::string matrixLatex(const Eigen::MatrixXd& m, int digits = 4);
 
+// A Markdown table of `m` with a first column k = 1, 2, ... and the given column headings (Markdown).
+std::string markdownTable(const Eigen::MatrixXd& m, const std::vector<std::string>& columns, int digits = 4);
+
 // The tolerance of a computed real answer: `relative` of its size, at least `absolute`.
 double tolerance(double answer, double relative, double absolute);
 // Keeps only the mistakes that the tolerance can tell apart from the answer (and from each other's names).

@@ -61,7 +61,8 @@ std::string answersAppendix(const std::vector<AppendixEntry>& entries) {
   std::string out = "# Appendix: answers to the exercises\n";
   for (const AppendixEntry& entry : entries) {
     out += "\n## " + entry.where + "\n\n";
-    for (const Question& q : entry.exercise.questions) out += "- " + q.label + ": $" + num(q.answer, 6) + "$\n";
+    for (const Question& q : entry.exercise.questions)
+      out += "- " + q.label + ": $" + num(q.answer, 6) + "$\n";
     out += "\nWorked solution:\n\n";
     for (const std::string& step : entry.exercise.solution) out += "- " + step + "\n";
   }

@@ -85,11 +85,11 @@ std::optional<Exercise> generateHemicube(Draw& draw) {
       "H)$ "
       "of the rectangle's plane.";
   e.solution.push_back("$\\Delta A = " + num(dA, 6) + "$. (a) $\\Delta F = \\frac{" + num(dA, 6) + "}{\\pi(" +
-                       num(x * x + y * y + 1, 6) + ")^2} = " + num(dTop, 6) +
-                       "$ (exact over the pixel: $" + num(exactTop, 6) + "$).");
+                       num(x * x + y * y + 1, 6) + ")^2} = " + num(dTop, 6) + "$ (exact over the pixel: $" +
+                       num(exactTop, 6) + "$).");
   e.solution.push_back("(b) $\\Delta F = \\frac{" + num(zs) + " \\times " + num(dA, 6) + "}{\\pi(" +
-                       num(ys * ys + zs * zs + 1, 6) + ")^2} = " + num(dSide, 6) +
-                       "$ (exact: $" + num(exactSide, 6) + "$).");
+                       num(ys * ys + zs * zs + 1, 6) + ")^2} = " + num(dSide, 6) + "$ (exact: $" +
+                       num(exactSide, 6) + "$).");
   e.solution.push_back("(c) The projection onto $z = 1$ is $" + num(x0 / H, 5) + " \\le x \\le " +
                        num(x1 / H, 5) + "$, $" + num(y0 / H, 5) + " \\le y \\le " + num(y1 / H, 5) + "$; " +
                        std::to_string(pixels) + " pixel centres fall inside (first: " + list + ").");
@@ -131,7 +131,105 @@ std::optional<Exercise> generateHemicube(Draw& draw) {
   return e;
 }
 
+namespace {
+
+// Two parallel patches facing each other: i at z = 0 from the origin, j at z = h, shifted along x.
+struct FacingPatches {
+  double a, b, c, w, h, shift;
+  std::vector<NamedPolygon> surfaces() const {
+    return {{"patch-i", {{0, 0, 0}, {a, 0, 0}, {a, b, 0}, {0, b, 0}}},
+            {"patch-j", {{shift, 0, h}, {shift, c, h}, {shift + w, c, h}, {shift + w, 0, h}}}};
+  }
+  std::string describe() const {
+    return "Patch $i$ is the rectangle $0 \\le x \\le " + num(a) + "$, $0 \\le y \\le " + num(b) +
+           "$ at $z = 0$ facing up; patch $j$ is $" + num(shift) + " \\le x \\le " + num(shift + w) +
+           "$, $0 \\le y \\le " + num(c) + "$ at $z = " + num(h) + "$ facing down.";
+  }
+};
+
+FacingPatches drawFacingPatches(Draw& draw) {
+  FacingPatches p;
+  p.a = draw.value(0.5, 1.5, 0.1);
+  p.b = draw.value(0.5, 1.5, 0.1);
+  p.c = draw.value(0.6, 1.5, 0.1);
+  p.w = draw.value(0.4, 1.5, 0.1);
+  p.h = draw.value(0.8, 2, 0.1);
+  p.shift = draw.value(-0.5, 0.5, 0.1);
+  return p;
+}
+
+// The local-line estimate: N lines leave i from uniform points in cosine-distributed directions; the share
+// that reaches j first estimates F_ij (a binomial proportion, with its standard error).
+std::optional<Exercise> generateLocalLines(Draw& draw) {
+  const FacingPatches g = drawFacingPatches(draw);
+  const int N = draw.integer(12, 20);
+  Eigen::MatrixXd table(N, 4);
+  std::vector<std::string> steps;
+  int hits = 0, first = 0;
+  for (int k = 0; k < N; ++k) {
+    for (int m = 0; m < 4; ++m) table(k, m) = std::round(1000 * draw.uniform()) / 1000;
+    const Vec3 x(g.a * table(k, 0), g.b * table(k, 1), 0);
+    const double r = std::sqrt(table(k, 2)), phi = 2 * kPi * table(k, 3);
+    const Vec3 d(r * std::cos(phi), r * std::sin(phi), std::sqrt(1 - table(k, 2)));
+    if (d.z() < 1e-3) return std::nullopt;  // a line along the plane never reaches j
+    const Vec3 p = x + (g.h / d.z()) * d;
+    const double margin = std::min(
+        {std::abs(p.x() - g.shift), std::abs(p.x() - g.shift - g.w), std::abs(p.y()), std::abs(p.y() - g.c)});
+    if (margin < 2e-3)
+      return std::nullopt;  // a line grazing j's outline: hit or miss is a matter of rounding
+    const bool hit = p.x() > g.shift && p.x() < g.shift + g.w && p.y() > 0 && p.y() < g.c;
+    hits += hit;
+    if (k == 0) first = hit;
+    steps.push_back("Line " + std::to_string(k + 1) + ": $x = " + vectorLatex(x, 5) +
+                    "$, $d = " + vectorLatex(d, 5) + "$, meets $z = " + num(g.h) + "$ at $" +
+                    vectorLatex(p, 5) + "$: " + (hit ? "hits $j$." : "misses."));
+  }
+  if (hits == 0 || hits == N) return std::nullopt;  // a standard error of 0 says nothing
+  const double p = static_cast<double>(hits) / N;
+  const double sd = std::sqrt(p * (1 - p) * N / (N - 1)), se = sd / std::sqrt(N);
+  Exercise e;
+  e.title = "A local-line estimate and its standard error";
+  e.given = {{"a", g.a}, {"b", g.b},         {"c", g.c}, {"w", g.w},
+             {"h", g.h}, {"shift", g.shift}, {"N", N},   {"lines", 1}};
+  e.statement =
+      g.describe() + " Estimate $F_{ij}$ with the " + std::to_string(N) +
+      " local lines of the table `samples` (columns $u_1, v_1, u_2, v_2$): line $k$ leaves $x_k = (" +
+      num(g.a) + "u_1, " + num(g.b) +
+      "v_1, 0)$ in the cosine-distributed direction $d_k = (\\sqrt{u_2}"
+      "\\cos 2\\pi v_2, \\sqrt{u_2}\\sin 2\\pi v_2, \\sqrt{1 - u_2})$ and counts when it reaches $j$. "
+      "Give whether line 1 hits (1/0), the number of hits, $\\hat F = \\text{hits}/N$ and its standard "
+      "error $s/\\sqrt N$ ($s$ the sample standard deviation of the 0/1 scores, divisor $N - 1$).";
+  e.hint = "Follow each line to the plane $z = " + num(g.h) +
+           "$: $x_k + (h/d_z)\\,d_k$, then check the rectangle. "
+           "For 0/1 scores, $s^2 = \\frac{N}{N-1}\\hat F(1 - \\hat F)$.";
+  e.solution = steps;
+  e.solution.push_back(std::to_string(hits) + " hits: $\\hat F = " + std::to_string(hits) + "/" +
+                       std::to_string(N) + " = " + num(p, 6) + "$, $s = " + num(sd, 6) +
+                       "$, standard error $" + num(se, 6) + "$.");
+  e.questions = {
+      {"hit1", "line 1 hits $j$ (1 = yes, 0 = no)", static_cast<double>(first), 0.5, true, {}},
+      {"hits", "hits", static_cast<double>(hits), 0.5, true, {}},
+      {"F", "$\\hat F$", p, tolerance(p, 0.002, 1e-5), false, {{"misses counted instead of hits", 1 - p}}},
+      {"SE",
+       "standard error",
+       se,
+       tolerance(se, 0.005, 1e-5),
+       false,
+       {{"standard deviation given for the standard error (not divided by sqrt N)", sd},
+        {"divisor N instead of N - 1", std::sqrt(p * (1 - p) / N)}}},
+  };
+  e.data.push_back({"samples", table});
+  e.statement += "\n\n" + markdownTable(table, {"$u_1$", "$v_1$", "$u_2$", "$v_2$"}) + "\n";
+  e.sceneJson = sceneJsonText("Local lines", g.surfaces());
+  e.sceneObj = sceneObjText(g.surfaces());
+  return e;
+}
+
+}  // namespace
+
 std::optional<Exercise> generateRaycast(Draw& draw) {
+  // Half the variants estimate with local lines, half by sampling point pairs and the kernel.
+  if (draw.uniform() < 0.5) return generateLocalLines(draw);
   const double a = draw.value(0.5, 1.5, 0.1), b = draw.value(0.5, 1.5, 0.1);  // patch i at z = 0
   const double c = draw.value(0.6, 1.5, 0.1), w = draw.value(0.4, 1.5, 0.1);  // patch j at z = h, w x c
   const double h = draw.value(0.8, 2, 0.1), shift = draw.value(-0.5, 0.5, 0.1);
@@ -193,6 +291,7 @@ std::optional<Exercise> generateRaycast(Draw& draw) {
         {"divisor N instead of N - 1", std::sqrt(ss / N) / std::sqrt(N)}}},
   };
   e.data.push_back({"samples", table});
+  e.statement += "\n\n" + markdownTable(table, {"$u_1$", "$v_1$", "$u_2$", "$v_2$"}) + "\n";
   const std::vector<NamedPolygon> surfaces{
       {"patch-i", {{0, 0, 0}, {a, 0, 0}, {a, b, 0}, {0, b, 0}}},
       {"patch-j", {{shift, 0, h}, {shift, c, h}, {shift + w, c, h}, {shift + w, 0, h}}}};

@@ -12,6 +12,7 @@
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/hemicube.h"
 #include "core/formfactor/nusselt.h"
+#include "core/formfactor/sampling.h"
 #include "core/io/scene_loader.h"
 #include "core/refine/refine.h"
 #include "core/solvers/bounces_solver.h"
@@ -118,12 +119,33 @@ TEST(HomeworkIndependent, HemicubeAgreesWithTheProgramsHemicube) {
   });
 }
 
-TEST(HomeworkIndependent, RaycastAgreesWithTheProgramsKernel) {
-  int outside = 0;
+TEST(HomeworkIndependent, RaycastAgreesWithTheProgramsKernelAndSampling) {
+  int outside = 0, lineVariants = 0;
   forEachVariant("raycast", [&](const Exercise& e) {
     const Scene s = parseSceneJson(e.sceneJson);
     const Eigen::MatrixXd& table = data(e, "samples");
     const auto& g = e.given;
+    const double exact = polygonToPolygonFormFactor(s.patches[0].vertices, s.patches[1].vertices);
+    if (g.count("lines")) {
+      // Local lines: the core's cosine-distributed direction, followed to j's plane.
+      ++lineVariants;
+      int hits = 0;
+      for (Eigen::Index k = 0; k < table.rows(); ++k) {
+        const Vec3 x(g.at("a") * table(k, 0), g.at("b") * table(k, 1), 0);
+        const Vec3 d = cosineDirection(s.patches[0].normal, table(k, 2), table(k, 3));
+        const Vec3 p = x + (g.at("h") / d.z()) * d;
+        const bool hit =
+            p.x() > g.at("shift") && p.x() < g.at("shift") + g.at("w") && p.y() > 0 && p.y() < g.at("c");
+        hits += hit;
+        if (k == 0) {
+          EXPECT_EQ(answer(e, "hit1"), hit ? 1.0 : 0.0) << "seed " << e.seed;
+        }
+      }
+      EXPECT_EQ(answer(e, "hits"), hits) << "seed " << e.seed;
+      EXPECT_AGREES(e, "F", hits / static_cast<double>(table.rows()), 0.01);
+      outside += std::abs(answer(e, "F") - exact) > 3 * answer(e, "SE");
+      return;
+    }
     const double Aj = s.patches[1].area;
     double sum = 0;
     for (Eigen::Index k = 0; k < table.rows(); ++k) {
@@ -137,10 +159,10 @@ TEST(HomeworkIndependent, RaycastAgreesWithTheProgramsKernel) {
     }
     EXPECT_AGREES(e, "F", sum / static_cast<double>(table.rows()), 0.01);
     // The estimate scatters about the exact F by about its standard error.
-    const double exact = polygonToPolygonFormFactor(s.patches[0].vertices, s.patches[1].vertices);
     outside += std::abs(answer(e, "F") - exact) > 3 * answer(e, "SE");
   });
-  EXPECT_LE(outside, kSeeds / 20);
+  EXPECT_GT(lineVariants, kSeeds / 4);
+  EXPECT_LE(outside, kSeeds / 10);
 }
 
 RadiositySystem systemOf(const Exercise& e, FormFactorMatrix& F) {
