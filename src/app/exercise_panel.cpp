@@ -14,10 +14,13 @@
 namespace rt::app {
 namespace {
 
-// Labels are Markdown with $...$ maths: a plain label shows them without the dollars.
+// Labels are Markdown with $...$ maths: a plain label shows them without dollars, braces and backslashes
+// (F_{12} reads F_12).
 QString plain(const std::string& label) {
   QString text = QString::fromStdString(label);
   text.remove('$');
+  text.remove('{');
+  text.remove('}');
   return text.replace("\\", "");
 }
 

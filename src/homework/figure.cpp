@@ -66,7 +66,7 @@ std::string svgColour(const std::string& fill) {
 
 std::string toSvg(const Figure& figure, double widthPixels) {
   const Bounds b = boundsOf(figure);
-  const double margin = 28;
+  const double margin = 40;  // room for labels, which the bounds only count by their anchor
   const double span = std::max(b.hi.x() - b.lo.x(), 1e-9);
   const double scale = (widthPixels - 2 * margin) / span;
   const double height = (b.hi.y() - b.lo.y()) * scale + 2 * margin;

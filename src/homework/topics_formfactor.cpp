@@ -73,7 +73,7 @@ std::optional<Exercise> generateRectangles(Draw& draw) {
     fig.line({0, 0}, {w, 0});
     fig.line({0, 0}, {h * d.y(), h * d.z()});
     fig.label({w / 2, -0.25}, "1 (w = " + num(w) + ")");
-    fig.label({h * d.y() * 0.5 - 0.3, h * d.z() * 0.5}, "2 (h = " + num(h) + ")");
+    fig.label({h * d.y(), h * d.z() + 0.15 * std::max(w, h)}, "2 (h = " + num(h) + ")");
     fig.label({0.35 * std::cos(r / 2), 0.35 * std::sin(r / 2)}, num(phi) + " deg");
     fig.caption = "Seen along the common edge (length " + num(l) + " m).";
   }
