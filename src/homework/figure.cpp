@@ -99,14 +99,18 @@ std::string toLatexPicture(const Figure& figure, double widthMm) {
       "\\setlength{\\unitlength}{1mm}\n\\begin{picture}(" + fmt(widthMm) + "," + fmt(height) + ")\n";
   for (const auto& s : figure.shapes) {
     // Filled shapes (the part the exercise is about) are drawn with thick lines: the picture environment
-    // cannot fill, and its \\line takes only a few slopes, so every segment is a straight \\qbezier.
+    // cannot fill, and its \line takes only a few slopes, so every segment is a straight \qbezier.
     out += s.fill == "accent" ? "\\thicklines\n" : "\\thinlines\n";
-    const std::size_t count = s.points.size(), segments = s.closed ? count : count - 1;
-    for (std::size_t k = 0; k < segments; ++k) {
-      const Vec2& p = s.points[k];
-      const Vec2& q = s.points[(k + 1) % count];
-      if ((q - p).norm() * scale < 0.05) continue;  // LaTeX's \qbezier overflows on a zero-length segment
-      out += "\\qbezier" + P(p) + P(0.5 * (p + q)) + P(q) + "\n";
+    // Points closer than a millimetre to the last one drawn are merged into the next segment: \qbezier
+    // overflows TeX's arithmetic on very short segments.
+    const std::size_t count = s.points.size();
+    Vec2 last = s.points.front();
+    for (std::size_t k = 1; k <= count; ++k) {
+      if (k == count && !s.closed) break;
+      const Vec2& q = s.points[k % count];
+      if ((q - last).norm() * scale < 1.0) continue;
+      out += "\\qbezier" + P(last) + P(0.5 * (last + q)) + P(q) + "\n";
+      last = q;
     }
   }
   for (const auto& l : figure.labels)

@@ -66,5 +66,21 @@ TEST(HomeworkCli, NewWritesHandoutsDataAndKeyAndCheckGradesTheClass) {
   EXPECT_EQ(runCommand(cliPath() + " homework new --topics no-such --output " + dir + "/x", &log), 2) << log;
 }
 
+// The LaTeX sources typeset for a whole class: a figure or a number that TeX cannot take fails here. Skipped
+// where pdflatex is not installed (it is optional: the handouts are complete without a PDF).
+TEST(HomeworkCli, EveryHandoutAndTheKeyTypesetWithPdflatex) {
+  if (runCommand("command -v pdflatex") != 0) GTEST_SKIP() << "pdflatex is not installed";
+  const std::string dir = scratchDir("homework-pdf");
+  std::string log;
+  ASSERT_EQ(runCommand(cliPath() + " homework new --seed 2026 --count 30 --pdf --output " + dir, &log), 0)
+      << log;
+  EXPECT_EQ(log.find("pdflatex failed"), std::string::npos) << log;
+  for (int s = 1; s <= 30; ++s) {
+    const std::string id = homework::studentId(s, 30);
+    EXPECT_TRUE(std::filesystem::exists(dir + "/" + id + "/handout.pdf")) << id;
+  }
+  EXPECT_TRUE(std::filesystem::exists(dir + "/key.pdf"));
+}
+
 }  // namespace
 }  // namespace rt::test
