@@ -88,13 +88,24 @@ const nlohmann::json& array(const nlohmann::json& object, const std::string& key
 
 }  // namespace
 
+// The key from its parsed JSON; nlohmann's type errors escape to parseKeyJson, which names the file.
+static Assignment keyFromJson(const nlohmann::json& root, const std::string& file);
+
 Assignment parseKeyJson(const std::string& text, const std::string& file) {
   nlohmann::json root;
   try {
     root = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // a syntax error, or a number too large for a double
     throw InputError({file, 0, {}}, std::string("not a key file (JSON): ") + e.what());
   }
+  try {
+    return keyFromJson(root, file);
+  } catch (const nlohmann::json::exception& e) {  // a field of the wrong type that value() read
+    throw InputError({file, 0, {}}, std::string("malformed key: ") + e.what());
+  }
+}
+
+static Assignment keyFromJson(const nlohmann::json& root, const std::string& file) {
   if (!root.is_object() || root.value("format", "") != "radiosity homework key")
     throw InputError({file, 0, "/format"},
                      "not a radiosity homework key (written by `radiosity homework new`)");

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/input_error.h"
 #include "core/io/matrix_export.h"
 #include "homework/grader.h"
 #include "homework/topic_table.h"
@@ -163,6 +164,20 @@ TEST(HomeworkGrader, MalformedAndMissingSubmissionsAreReportedAndTheRestGraded) 
   EXPECT_NE(book.find("missing: no submission found"), std::string::npos);
   EXPECT_NE(book.find("graded with 2 file problem(s)"), std::string::npos);
   EXPECT_NE(feedbackMarkdown(grades[3]).find("No submission was found."), std::string::npos);
+}
+
+TEST(HomeworkGrader, AMalformedKeyIsAnInputErrorNamingTheFile) {
+  for (const char* text :
+       {"{", "[1e2965]", "{\"format\": 5}",
+        "{\"format\": \"radiosity homework key\", \"seed\": 1, \"topics\": [], \"students\": "
+        "[{\"id\": \"s01\", \"exercises\": [{\"topic\": \"x\", \"title\": 5, \"questions\": []}]}]}"}) {
+    try {
+      parseKeyJson(text, "bad-key.json");
+      ADD_FAILURE() << "accepted " << text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("bad-key.json"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace
