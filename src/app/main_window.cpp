@@ -24,6 +24,7 @@
 #include <QVBoxLayout>
 
 #include "app/contents_tree.h"
+#include "app/exercise_panel.h"
 #include "app/exports.h"
 #include "app/figure_export.h"
 #include "app/figures_pane.h"
@@ -137,6 +138,8 @@ void MainWindow::buildUi() {
   computeButton_->hide();
   connect(computeButton_, &QPushButton::clicked, this, &MainWindow::computeNow);
   textLayout->addWidget(text_, 1);
+  exercise_ = new ExercisePanel(textPane);
+  textLayout->addWidget(exercise_);
   textLayout->addWidget(computeButton_);
   textLayout->addWidget(stepLabel_);
   textLayout->addLayout(navigation);

@@ -33,6 +33,7 @@ class QTabWidget;
 namespace rt::app {
 
 class ContentsTree;
+class ExercisePanel;
 class FiguresPane;
 class IterationPlayer;
 class LessonFigureExport;
@@ -128,6 +129,7 @@ class MainWindow : public QMainWindow {
   SceneView* primaryView() const { return primaryView_; }
   SceneView* secondaryView() const { return secondaryView_; }
   LessonTextView* textView() const { return text_; }
+  ExercisePanel* exercisePanel() const { return exercise_; }
   IterationPlayer* player() const { return player_; }
   ResidualChart* residualChart() const { return chart_; }
   MatrixView* matrixView() const { return matrix_; }
@@ -213,6 +215,7 @@ class MainWindow : public QMainWindow {
 
   ContentsTree* contents_ = nullptr;
   LessonTextView* text_ = nullptr;
+  ExercisePanel* exercise_ = nullptr;  // the answer fields of an exercise step
   QLabel* stepLabel_ = nullptr;
   QPushButton* backButton_ = nullptr;
   QPushButton* nextButton_ = nullptr;

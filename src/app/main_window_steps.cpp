@@ -14,6 +14,7 @@
 
 #include "app/builtin_scene.h"
 #include "app/contents_tree.h"
+#include "app/exercise_panel.h"
 #include "app/figures_pane.h"
 #include "app/iteration_player.h"
 #include "app/lesson_session.h"
@@ -327,7 +328,12 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
     primaryView_->setScalarField(Eigen::VectorXd(), {});
   }
 
-  setStepMarkdown(mode_ == Mode::Lesson ? QString::fromStdString(r.text) : sceneSummary(r));
+  // An exercise step: its question below the step's text, the answer fields under both.
+  const bool exercise = step && stepResult && stepResult->exercise;
+  exercise_->setExercise(exercise ? stepResult->exercise : std::nullopt);
+  QString markdown = mode_ == Mode::Lesson ? QString::fromStdString(r.text) : sceneSummary(r);
+  if (exercise) markdown += "\n\n" + QString::fromStdString(stepResult->exercise->statement);
+  setStepMarkdown(markdown);
   std::vector<QString> names{QString::fromStdString(r.solverName)};
   std::vector<std::vector<double>> runs{residualsOf(r)};
   if (compare_ && r.compared && !r.compared->history.empty()) {
@@ -388,7 +394,8 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   }
 
   if (!r.mesh || r.mesh->size() == 0) {
-    statusLabel_->setText(tr("A step of text: Right or Page Down for the next step"));
+    statusLabel_->setText(exercise ? tr("An exercise: type the answers, then Check (or Enter in a field)")
+                                   : tr("A step of text: Right or Page Down for the next step"));
     emit resultShown();
     return;
   }

@@ -15,5 +15,9 @@ void addBookCommand(CLI::App& app);
 // `radiosity bench formfactors` and `radiosity bench solvers` share the `bench` parent.
 void addBenchFormFactorsCommand(CLI::App& bench);
 void addBenchSolversCommand(CLI::App& bench);
+// `radiosity homework new`, `check` and `topics` share the `homework` parent.
+void addHomeworkNewCommand(CLI::App& homework);
+void addHomeworkCheckCommand(CLI::App& homework);
+void addHomeworkTopicsCommand(CLI::App& homework);
 
 }  // namespace rt::cli

@@ -7,6 +7,7 @@
 
 #include "cli/cli_common.h"
 #include "core/input_error.h"
+#include "homework/handout.h"
 #include "lesson/maths.h"
 #include "lesson/step_numbers.h"
 #include "lesson/step_runner.h"
@@ -64,6 +65,7 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
   lesson::RunOptions options;
   options.quick = settings.quick;
   std::vector<lesson::RenderedLesson> rendered;
+  std::vector<homework::AppendixEntry> appendix;  // the exercises, answered at the back of the book
   ProgressLine progress(true);
   std::filesystem::create_directories(output);
   std::ofstream skipped(std::filesystem::path(output) / "skipped.txt");  // figures this build could not draw
@@ -96,6 +98,11 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
       firstNumbers = false;
       std::string text = lesson::resolvedText(l, step, result);
       if (settings.prepareMaths) text = lesson::prepareMaths(text, step.textLine, l.file, equations);
+      if (result.exercise) {
+        text += homework::exerciseBookText(*result.exercise);
+        appendix.push_back({std::to_string(l.order) + "." + std::to_string(step.index + 1) + " " + step.title,
+                            *result.exercise});
+      }
       lesson::RenderedStep s{step.title, text, {}};
       try {
 #ifdef RT_HAVE_VIZ
@@ -113,6 +120,17 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
   progress.finish();
   std::stable_sort(rendered.begin(), rendered.end(),
                    [](const auto& x, const auto& y) { return x.order < y.order; });
+  if (!appendix.empty()) {
+    // The answers close the book: one more page after the last lesson, in the Markdown, HTML and PDF.
+    lesson::RenderedLesson answers;
+    answers.id = homework::kAnswersAppendixId;
+    answers.title = "Answers to the exercises";
+    answers.chapter = "Appendix";
+    answers.summary = "The answer and the worked solution of every exercise, lesson by lesson.";
+    answers.order = rendered.back().order + 1;
+    answers.intro = homework::answersAppendix(appendix);
+    rendered.push_back(std::move(answers));
+  }
   return rendered;
 }
 

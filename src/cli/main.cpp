@@ -55,6 +55,11 @@ int main(int argc, char** argv) {
   bench->require_subcommand(1);
   rt::cli::addBenchFormFactorsCommand(*bench);
   rt::cli::addBenchSolversCommand(*bench);
+  auto* homework = app.add_subcommand("homework", "Randomised exercises with answer keys, and their grading");
+  homework->require_subcommand(1);
+  rt::cli::addHomeworkNewCommand(*homework);
+  rt::cli::addHomeworkCheckCommand(*homework);
+  rt::cli::addHomeworkTopicsCommand(*homework);
   reportMissingFilesAsInputErrors(app);
   try {
     app.parse(argc, argv);

@@ -70,6 +70,10 @@ const std::vector<StageInfo>& stageTable() {
        "run time and error of `methods` over `sweep`",
        {V::Scene, V::FormFactor, V::Matrix, V::RuntimeError, V::SweepError}},
       {Stage::Refine, "refine", "an adaptive, discontinuity or hierarchical mesh and its B", {V::Scene}},
+      {Stage::Exercise,
+       "exercise",
+       "a homework exercise of `topic` drawn with `seed`: questions, Check, hint, worked solution",
+       {}},
   };
   return table;
 }

@@ -29,6 +29,7 @@ enum class Stage {
   Bounces,      // B after 0, 1, 2 ... bounces (Neumann series)
   Benchmark,    // run time against error for methods over a parameter sweep
   Refine,       // meshes that follow the light: adaptive, discontinuity or hierarchical (core/refine)
+  Exercise,     // a homework exercise (src/homework) the reader answers: questions, Check, hint, solution
 };
 
 // The figures a step can ask for; the names match the viz layer's views.
@@ -112,6 +113,7 @@ struct StepParameters {
   std::string exportMatrix;  // matrix stage: file name (csv, mtx, npy, tex) written beside the figures
   std::string matrix = "F";  // matrix stage: the matrix shown, F, rhoF or K = I - rho F
   std::string from;          // the element or surface a hemicube/Nusselt/rays view is seen from
+  std::string topic;         // exercise stage: the homework topic (src/homework/topic_table.h)
 };
 
 struct Step {

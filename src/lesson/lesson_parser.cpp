@@ -261,9 +261,12 @@ class Parser {
     };
     if (!step.fields.count("stage")) fail(step.line, "step '" + step.title + "' has no 'stage'");
     const StepParameters& p = step.parameters;
-    if (step.stage == Stage::Text) {
+    if (step.stage == Stage::Text || step.stage == Stage::Exercise) {
       if (!step.views.empty())
-        fail(lineOf("views"), "a text step has no figures: remove 'views' or choose a stage");
+        fail(lineOf("views"),
+             "a " + toString(step.stage) + " step has no figures: remove 'views' or choose a stage");
+      if (step.stage == Stage::Exercise && p.topic.empty())
+        fail(lineOf("stage"), "an exercise step needs a 'topic' (see `radiosity homework topics`)");
     } else if (step.scene.empty()) {
       fail(lineOf("stage"), "stage '" + toString(step.stage) + "' needs a 'scene'");
     }

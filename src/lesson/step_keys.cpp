@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "homework/topic_table.h"
 #include "lesson/lesson_parser.h"
 #include "lesson/value_parsing.h"
 
@@ -17,6 +18,10 @@ const std::vector<std::string>& toneMaps() {
 }
 const std::vector<std::string>& refineModes() {
   static const std::vector<std::string> values{"uniform", "adaptive", "discontinuity", "hierarchical"};
+  return values;
+}
+const std::vector<std::string>& homeworkTopics() {
+  static const std::vector<std::string> values = homework::topicIds();
   return values;
 }
 const std::vector<std::string>& matrixKinds() {
@@ -102,7 +107,8 @@ std::vector<StepKey> makeTable() {
        .max = 2000000000,
        .defaultText = "1",
        .label = "Seed",
-       .tooltip = "Random seed of the stochastic methods and solvers: the same seed gives the same numbers.",
+       .tooltip = "Random seed of the stochastic methods and solvers, and of an exercise's numbers: the same "
+                  "seed gives the same numbers.",
        .control = true,
        .slot = &P::seed});
   add({.name = "subdivide",
@@ -285,6 +291,13 @@ std::vector<StepKey> makeTable() {
        .control = true,
        .stages = seen,
        .slot = &P::from});
+  add({.name = "topic",
+       .type = KeyType::Choice,
+       .choices = &homeworkTopics,
+       .label = "Exercise",
+       .tooltip = "The homework topic an exercise step draws its question from (docs/homework.md).",
+       .stages = {Stage::Exercise},
+       .slot = &P::topic});
   add({.name = "exposure",
        .type = KeyType::Double,
        .min = 0,

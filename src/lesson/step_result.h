@@ -12,6 +12,7 @@
 #include "core/mesh.h"
 #include "core/pipeline/pipeline.h"
 #include "core/scene.h"
+#include "homework/exercise.h"
 
 namespace rt::lesson {
 
@@ -63,6 +64,9 @@ struct StepResult {
   std::shared_ptr<const Eigen::MatrixXd> shownMatrix;
   // The solver run a reader replays iteration by iteration (RunOptions::recordHistory): its B per iteration.
   SolveOutcome replay;
+
+  // Exercise stage: the question, its answers and worked solution (values: given.<name>, answer.<id>).
+  std::optional<homework::Exercise> exercise;
 
   std::map<std::string, double> values;  // named numbers, see value()
 

@@ -7,6 +7,7 @@
 #include "core/formfactor/formfactor_matrix.h"
 #include "core/io/scene_loader.h"
 #include "core/pipeline/scene_overrides.h"
+#include "homework/topic_table.h"
 #include "lesson/placeholders.h"
 #include "lesson/step_settings.h"
 #include "lesson/step_stages.h"
@@ -72,6 +73,15 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
   detail::StageContext c{lesson, step, step.parameters, *this, progress, result, {}, {}};
   if (options_.quick) quickCaps(c.parameters);
   if (step.stage == Stage::Text) return result;
+  if (step.stage == Stage::Exercise) {
+    // No scene: the exercise brings its own numbers, drawn from the step's seed (student 0: the book's).
+    const homework::Topic* topic = homework::findTopic(step.parameters.topic);
+    if (!topic) c.fail("topic", "unknown homework topic '" + step.parameters.topic + "'");
+    result.exercise = homework::generateExercise(*topic, step.parameters.seed.value_or(1), 0);
+    for (const auto& [name, value] : result.exercise->given) result.values["given." + name] = value;
+    for (const auto& q : result.exercise->questions) result.values["answer." + q.id] = q.answer;
+    return result;
+  }
 
   try {
     result.scene = scene(step.scene);
@@ -120,6 +130,7 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
 
   switch (step.stage) {
     case Stage::Text:
+    case Stage::Exercise:
     case Stage::Scene:
       break;
     case Stage::FormFactors:

@@ -128,7 +128,9 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
       EXPECT_TRUE(navigation) << name << " has no chapter navigation";
     }
   }
-  EXPECT_EQ(pages, static_cast<int>(titles.size()) + 1) << "index.html and one page per lesson";
+  // The lessons' exercises are answered in an appendix page after the last lesson.
+  EXPECT_TRUE(fs::exists(out / "exercise-answers.html"));
+  EXPECT_EQ(pages, static_cast<int>(titles.size()) + 2) << "index.html, one page per lesson and the answers";
   EXPECT_TRUE(fs::exists(out / "katex" / "katex.min.css"));
   EXPECT_TRUE(fs::exists(out / "katex" / "fonts" / "KaTeX_Main-Regular.woff2"));
   const std::string rendering = readFile(out / "rendering-equation.html");

@@ -11,7 +11,7 @@ cd "$(dirname "$0")/../.."
 seconds=${1:?usage: tests/fuzz/run.sh SECONDS [TARGET...]}
 shift
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(fuzz_scene_obj fuzz_mtl fuzz_scene_json fuzz_lesson fuzz_npy fuzz_matrix_market)
+[ ${#targets[@]} -eq 0 ] && targets=(fuzz_scene_obj fuzz_mtl fuzz_scene_json fuzz_lesson fuzz_npy fuzz_matrix_market fuzz_homework)
 export CCACHE_BASEDIR="$PWD"
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz --target fuzzers -j "$(nproc)"

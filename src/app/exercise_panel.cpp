@@ -1,0 +1,157 @@
+#include "app/exercise_panel.h"
+
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+
+#include "homework/grader.h"
+
+namespace rt::app {
+namespace {
+
+// Labels are Markdown with $...$ maths: a plain label shows them without dollars, braces and backslashes
+// (F_{12} reads F_12).
+QString plain(const std::string& label) {
+  QString text = QString::fromStdString(label);
+  text.remove('$');
+  text.remove('{');
+  text.remove('}');
+  return text.replace("\\", "");
+}
+
+}  // namespace
+
+ExercisePanel::ExercisePanel(QWidget* parent) : QWidget(parent) {
+  setObjectName("exercisePanel");
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  auto* scroll = new QScrollArea(this);
+  scroll->setWidgetResizable(true);
+  fields_ = new QWidget(scroll);
+  form_ = new QFormLayout(fields_);
+  scroll->setWidget(fields_);
+  scroll->setMaximumHeight(260);
+  auto* buttons = new QHBoxLayout();
+  check_ = new QPushButton(tr("Check"), this);
+  check_->setObjectName("checkAnswers");
+  auto* hint = new QPushButton(tr("Hint"), this);
+  hint->setObjectName("showHint");
+  auto* solution = new QPushButton(tr("Show solution"), this);
+  solution->setObjectName("showSolution");
+  buttons->addWidget(check_);
+  buttons->addWidget(hint);
+  buttons->addWidget(solution);
+  summary_ = new QLabel(this);
+  summary_->setObjectName("exerciseSummary");
+  summary_->setWordWrap(true);
+  notes_ = new QTextBrowser(this);
+  notes_->setObjectName("exerciseNotes");
+  notes_->setMaximumHeight(200);
+  notes_->hide();
+  layout->addWidget(scroll);
+  layout->addLayout(buttons);
+  layout->addWidget(summary_);
+  layout->addWidget(notes_);
+  connect(check_, &QPushButton::clicked, this, &ExercisePanel::check);
+  connect(hint, &QPushButton::clicked, this, &ExercisePanel::showHint);
+  connect(solution, &QPushButton::clicked, this, &ExercisePanel::showSolution);
+  hide();
+}
+
+void ExercisePanel::setExercise(const std::optional<homework::Exercise>& exercise) {
+  const bool same =
+      exercise && exercise_ && exercise->topic == exercise_->topic && exercise->seed == exercise_->seed;
+  if (same) return;
+  exercise_ = exercise;
+  while (form_->rowCount() > 0) form_->removeRow(0);
+  edits_.clear();
+  verdicts_.clear();
+  summary_->clear();
+  notes_->clear();
+  notes_->hide();
+  setVisible(exercise_.has_value());
+  if (!exercise_) return;
+  for (const homework::Question& q : exercise_->questions) {
+    auto* row = new QWidget(fields_);
+    auto* rowLayout = new QHBoxLayout(row);
+    rowLayout->setContentsMargins(0, 0, 0, 0);
+    auto* edit = new QLineEdit(row);
+    edit->setObjectName(QString::fromStdString("answer-" + q.id));
+    edit->setPlaceholderText(q.integer ? tr("whole number") : tr("number"));
+    auto* verdict = new QLabel(row);
+    verdict->setWordWrap(true);
+    rowLayout->addWidget(edit);
+    rowLayout->addWidget(verdict, 1);
+    form_->addRow(plain(q.label), row);
+    edits_[q.id] = edit;
+    verdicts_[q.id] = verdict;
+    // Enter in a field checks, as the button does.
+    connect(edit, &QLineEdit::returnPressed, this, &ExercisePanel::check);
+  }
+}
+
+QLineEdit* ExercisePanel::field(const std::string& id) const {
+  const auto it = edits_.find(id);
+  return it == edits_.end() ? nullptr : it->second;
+}
+
+QString ExercisePanel::verdict(const std::string& id) const {
+  const auto it = verdicts_.find(id);
+  return it == verdicts_.end() ? QString() : it->second->text();
+}
+
+QString ExercisePanel::summary() const {
+  return summary_->text();
+}
+
+void ExercisePanel::check() {
+  if (!exercise_) return;
+  homework::Submission submission;
+  submission.files.push_back("app");
+  std::vector<std::string> unreadable;
+  for (const homework::Question& q : exercise_->questions) {
+    const QString text = edits_[q.id]->text().trimmed();
+    if (text.isEmpty()) continue;
+    bool ok = false;
+    const double value = text.toDouble(&ok);
+    if (ok)
+      submission.values[exercise_->topic + "." + q.id] = value;
+    else
+      unreadable.push_back(q.id);
+  }
+  const homework::StudentGrade grade =
+      homework::gradeStudent(homework::StudentExercises{"reader", {*exercise_}}, submission);
+  const auto& grades = grade.exercises.front();
+  for (std::size_t k = 0; k < grades.size(); ++k) {
+    const std::string& id = exercise_->questions[k].id;
+    QLabel* label = verdicts_[id];
+    if (std::find(unreadable.begin(), unreadable.end(), id) != unreadable.end())
+      label->setText(tr("not a number"));
+    else if (!grades[k].answered)
+      label->setText(QString());
+    else
+      label->setText(grades[k].right ? tr("right") : QString::fromStdString(grades[k].feedback));
+  }
+  summary_->setText(tr("%1 of %2 right").arg(grade.right).arg(grade.total));
+}
+
+void ExercisePanel::showHint() {
+  if (!exercise_) return;
+  notes_->setMarkdown(tr("**Hint.** ") + QString::fromStdString(exercise_->hint));
+  notes_->show();
+}
+
+void ExercisePanel::showSolution() {
+  if (!exercise_) return;
+  QString md = tr("**Worked solution.**\n\n");
+  for (const std::string& step : exercise_->solution) md += "- " + QString::fromStdString(step) + "\n";
+  notes_->setMarkdown(md);
+  notes_->show();
+}
+
+}  // namespace rt::app

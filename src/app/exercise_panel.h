@@ -1,0 +1,49 @@
+// The reader's side of an exercise step: one input field per question, Check (the grader of the homework
+// library, so the app names the same slips as `radiosity homework check`), a hint and the worked solution.
+// Hidden for every other step.
+#pragma once
+
+#include <QWidget>
+#include <map>
+#include <optional>
+
+#include "homework/exercise.h"
+
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QTextBrowser;
+class QFormLayout;
+
+namespace rt::app {
+
+class ExercisePanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit ExercisePanel(QWidget* parent = nullptr);
+  // Shows the fields of `exercise` (empty: hides the panel). The same exercise again keeps what was typed.
+  void setExercise(const std::optional<homework::Exercise>& exercise);
+  const std::optional<homework::Exercise>& exercise() const { return exercise_; }
+
+  QLineEdit* field(const std::string& questionId) const;
+  // What Check said about a question ("right", or the feedback naming the slip); empty before Check.
+  QString verdict(const std::string& questionId) const;
+  QString summary() const;
+
+ public slots:
+  void check();
+  void showHint();
+  void showSolution();
+
+ private:
+  std::optional<homework::Exercise> exercise_;
+  QFormLayout* form_ = nullptr;
+  QWidget* fields_ = nullptr;
+  std::map<std::string, QLineEdit*> edits_;
+  std::map<std::string, QLabel*> verdicts_;
+  QLabel* summary_ = nullptr;
+  QTextBrowser* notes_ = nullptr;  // hint and solution
+  QPushButton* check_ = nullptr;
+};
+
+}  // namespace rt::app

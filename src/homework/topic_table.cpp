@@ -1,0 +1,117 @@
+#include "homework/topic_table.h"
+
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+#include "homework/topics.h"
+
+namespace rt::homework {
+
+double Draw::value(double lo, double hi, double step) {
+  const double x = lo + (hi - lo) * random_.uniform();
+  return std::clamp(std::round(x / step) * step, lo, hi);
+}
+
+int Draw::integer(int lo, int hi) {
+  return lo + static_cast<int>(random_.uniform() * (hi - lo + 1));
+}
+
+const std::vector<Topic>& topicTable() {
+  static const std::vector<Topic> table{
+      {"rectangles", "Form factor between two rectangles",
+       "F_ij and F_ji of two rectangles: parallel, perpendicular or at an angle",
+       "form-factor,exact-reference,hierarchical", generateRectangles},
+      {"nusselt", "The Nusselt analog", "point-to-rectangle F by projecting onto the hemisphere and the disk",
+       "nusselt-analog,hemicube,ray-casting", generateNusselt},
+      {"closure", "Reciprocity and closure", "missing F_ij of a closed box from given ones",
+       "form-factor,radiosity-matrix", generateClosure},
+      {"hemicube", "Hemicube delta form factors",
+       "delta form factors of given pixels and the F of a footprint", "hemicube,nusselt-analog",
+       generateHemicube},
+      {"raycast", "A ray-cast or local-line estimate and its standard error",
+       "F_ij from a given table of random numbers (point pairs or local lines), with the standard error",
+       "exact-reference,ray-casting,runtime-error-lab,stochastic", generateRaycast},
+      {"assemble-k", "Assembling K", "K = I - diag(rho) F for an enclosure of 3 to 5 patches",
+       "meshing,numerical-stability,radiosity-matrix,rendering-equation", generateAssembleK},
+      {"jacobi-gauss-seidel", "Jacobi and Gauss-Seidel by hand",
+       "two Jacobi and two Gauss-Seidel sweeps, and the exact solution", "gathering,local-vs-global",
+       generateJacobiGaussSeidel},
+      {"southwell", "Southwell shooting", "three shots, the shooter and the unshot power after each",
+       "cornell-box,shooting,stochastic", generateSouthwell},
+      {"bounces", "The k-th bounce", "the power carried by bounce k and its share of the total",
+       "local-vs-global,rendering-equation,shooting", generateBounces},
+      {"spectral-radius", "Spectral radius and iteration count",
+       "the spectral radius of rho F and the sweeps needed for a tolerance",
+       "gathering,numerical-stability,runtime-error-lab", generateSpectralRadius},
+      {"tone-mapping", "Tone mapping to 8-bit",
+       "exposure, linear or Reinhard tone map and sRGB gamma to 0..255", "cornell-box,patches-to-pixels",
+       generateToneMapping},
+      {"subdivision", "The adaptive subdivision criterion",
+       "whether the gradient criterion splits an element", "hierarchical,meshing,patches-to-pixels",
+       generateSubdivision},
+  };
+  return table;
+}
+
+const Topic* findTopic(const std::string& id) {
+  for (const Topic& t : topicTable())
+    if (id == t.id) return &t;
+  return nullptr;
+}
+
+std::vector<std::string> topicIds() {
+  std::vector<std::string> ids;
+  for (const Topic& t : topicTable()) ids.emplace_back(t.id);
+  return ids;
+}
+
+Exercise generateExercise(const Topic& topic, std::uint64_t seed, int student) {
+  // The topic's id, not its row, picks the stream: adding a topic does not change anyone's numbers.
+  std::uint64_t hash = 1469598103934665603ull;
+  for (const char* c = topic.id; *c; ++c) hash = (hash ^ static_cast<unsigned char>(*c)) * 1099511628211ull;
+  Draw draw(seed, static_cast<std::uint64_t>(student), hash);
+  for (int attempt = 0; attempt < 1000; ++attempt)
+    if (std::optional<Exercise> e = topic.generate(draw)) {
+      e->topic = topic.id;
+      e->student = student;
+      e->seed = seed;
+      for (Question& q : e->questions) {
+        if (q.integer) q.tolerance = 0.5;
+        pruneMistakes(q);
+      }
+      return *e;
+    }
+  throw std::runtime_error(std::string("topic ") + topic.id + ": no well-posed variant in 1000 draws");
+}
+
+std::vector<std::string> exerciseProblems(const Exercise& e) {
+  std::vector<std::string> problems;
+  if (e.questions.empty()) problems.push_back("no questions");
+  std::set<std::string> ids;
+  for (const Question& q : e.questions) {
+    if (!ids.insert(q.id).second) problems.push_back("duplicate question id " + q.id);
+    if (!std::isfinite(q.answer)) problems.push_back(q.id + ": answer is not finite");
+    if (!(q.tolerance > 0) || !std::isfinite(q.tolerance)) problems.push_back(q.id + ": tolerance <= 0");
+    if (q.integer && std::abs(q.answer - std::round(q.answer)) > 1e-9)
+      problems.push_back(q.id + ": integer answer is not whole");
+  }
+  for (const RowCheck& r : e.rowChecks)
+    for (const auto& [id, count] : r.terms)
+      if (!ids.count(id)) problems.push_back(r.row + " names unknown question " + id);
+  if (e.solution.empty()) problems.push_back("no worked solution");
+  return problems;
+}
+
+std::string topicTableMarkdown() {
+  std::string out = "| topic | title | practises | lessons |\n|---|---|---|---|\n";
+  for (const Topic& t : topicTable()) {
+    std::string lessons = t.lessons;
+    for (std::size_t k = lessons.find(','); k != std::string::npos; k = lessons.find(',', k + 2))
+      lessons.replace(k, 1, ", ");
+    out += std::string("| `") + t.id + "` | " + t.title + " | " + t.practises + " | " + lessons + " |\n";
+  }
+  return out;
+}
+
+}  // namespace rt::homework

@@ -1,0 +1,311 @@
+// Each topic's key against an independent computation in the program, for 200 seeds: the core's contour
+// integral and Nusselt projection for form factors, its hemicube for delta form factors, its kernel for
+// ray-cast samples, its assembly, gathering, shooting, Neumann-series and direct solvers, its spectral
+// radius, its luminance, and the viewer's display pipeline. The tests read only what a student gets: the
+// scene file, the data files and the numbers the statement was written from.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "core/assembly.h"
+#include "core/formfactor/analytic.h"
+#include "core/formfactor/hemicube.h"
+#include "core/formfactor/nusselt.h"
+#include "core/formfactor/sampling.h"
+#include "core/io/scene_loader.h"
+#include "core/refine/refine.h"
+#include "core/solvers/bounces_solver.h"
+#include "core/solvers/direct_solver.h"
+#include "core/solvers/gathering_solvers.h"
+#include "core/solvers/shooting_solvers.h"
+#include "homework/topic_table.h"
+#ifdef RT_HAVE_VIZ
+#include "viz/display_pipeline.h"
+#endif
+
+namespace rt::homework {
+namespace {
+
+constexpr int kSeeds = 200;
+
+double answer(const Exercise& e, const std::string& id) {
+  const Question* q = e.find(id);
+  EXPECT_NE(q, nullptr) << e.topic << " has no question " << id;
+  return q ? q->answer : 0.0;
+}
+
+const Eigen::MatrixXd& data(const Exercise& e, const std::string& name) {
+  for (const DataFile& d : e.data)
+    if (d.name == name) return d.matrix;
+  ADD_FAILURE() << e.topic << " has no data file " << name;
+  static const Eigen::MatrixXd empty;
+  return empty;
+}
+
+template <typename F>
+void forEachVariant(const char* topic, F&& check) {
+  const Topic* t = findTopic(topic);
+  ASSERT_NE(t, nullptr);
+  for (int seed = 1; seed <= kSeeds; ++seed) check(generateExercise(*t, static_cast<std::uint64_t>(seed), 2));
+}
+
+// The key's answer is within a small part of its own tolerance of the program's value.
+#define EXPECT_AGREES(e, id, program, share)                             \
+  EXPECT_NEAR(answer(e, id), program, (share) * (e).find(id)->tolerance) \
+      << (e).topic << " seed " << (e).seed << " " << id
+
+TEST(HomeworkIndependent, RectanglesAgreeWithTheContourIntegral) {
+  forEachVariant("rectangles", [](const Exercise& e) {
+    const Scene s = parseSceneJson(e.sceneJson);
+    ASSERT_EQ(s.patches.size(), 2u);
+    const double F12 = polygonToPolygonFormFactor(s.patches[0].vertices, s.patches[1].vertices);
+    const double F21 = polygonToPolygonFormFactor(s.patches[1].vertices, s.patches[0].vertices);
+    EXPECT_AGREES(e, "F12", F12, 0.1);
+    EXPECT_AGREES(e, "F21", F21, 0.1);
+  });
+}
+
+TEST(HomeworkIndependent, NusseltAgreesWithTheProjectionAndLambert) {
+  forEachVariant("nusselt", [](const Exercise& e) {
+    const Scene s = parseSceneJson(e.sceneJson);
+    const Polygon& rect = s.patches[1].vertices;
+    const Vec3 o = Vec3::Zero(), n(0, 0, 1);
+    const double projected = nusseltFormFactor(o, n, rect.data(), static_cast<int>(rect.size()), 512);
+    EXPECT_AGREES(e, "F", pointToPolygonFormFactor(o, n, rect), 0.01);
+    EXPECT_AGREES(e, "F", projected, 0.2);
+    EXPECT_AGREES(e, "disk", std::numbers::pi * projected, 0.2);
+  });
+}
+
+TEST(HomeworkIndependent, ClosureAgreesWithTheContourIntegral) {
+  forEachVariant("closure", [](const Exercise& e) {
+    const Scene s = parseSceneJson(e.sceneJson);
+    ASSERT_EQ(s.patches.size(), 6u);
+    auto F = [&](int i, int j) {
+      return polygonToPolygonFormFactor(s.patches[i - 1].vertices, s.patches[j - 1].vertices);
+    };
+    // The given values are rounded to 4 decimals; the derived ones inherit a few 1e-4.
+    EXPECT_NEAR(answer(e, "F15"), F(1, 5), 3e-4);
+    EXPECT_NEAR(answer(e, "F51"), F(5, 1), 1e-3);
+    EXPECT_NEAR(answer(e, "F31"), F(3, 1), 1e-3);
+    EXPECT_NEAR(answer(e, "F35"), F(3, 5), 1e-3);
+  });
+}
+
+TEST(HomeworkIndependent, HemicubeAgreesWithTheProgramsHemicube) {
+  forEachVariant("hemicube", [](const Exercise& e) {
+    const int res = static_cast<int>(e.given.at("resolution"));
+    const double p = 2.0 / res;
+    const auto& top = deltaFormFactors(res, HemicubeFace::Top);
+    const int col = static_cast<int>(std::floor((e.given.at("x") + 1) / p));
+    const int row = static_cast<int>(std::floor((e.given.at("y") + 1) / p));
+    EXPECT_AGREES(e, "dTop", top[static_cast<std::size_t>(row * res + col)], 1.0);
+    // Face +u: across = y, up = z from the horizon, rows of height 1 / ceil(res / 2) = p.
+    const auto& side = deltaFormFactors(res, HemicubeFace::PlusU);
+    const int sc = static_cast<int>(std::floor((e.given.at("side_y") + 1) / p));
+    const int sr = static_cast<int>(std::floor(e.given.at("side_z") / p));
+    EXPECT_AGREES(e, "dSide", side[static_cast<std::size_t>(sr * res + sc)], 1.0);
+    // The footprint: the program's hemicube, rendered from the element's centre.
+    const Scene scene = parseSceneJson(e.sceneJson);
+    const Mesh mesh = buildMesh(scene);
+    const HemicubeFaces faces = renderHemicube(mesh, 0, res);
+    std::vector<double> rowF(mesh.size(), 0.0);
+    accumulateHemicubeRow(faces, rowF.data());
+    EXPECT_AGREES(e, "F", rowF[1], 1.0);
+    int pixels = 0;
+    for (int v : faces.faces[0].element) pixels += v == 1;
+    EXPECT_EQ(answer(e, "pixels"), pixels) << "seed " << e.seed;
+  });
+}
+
+TEST(HomeworkIndependent, RaycastAgreesWithTheProgramsKernelAndSampling) {
+  int outside = 0, lineVariants = 0;
+  forEachVariant("raycast", [&](const Exercise& e) {
+    const Scene s = parseSceneJson(e.sceneJson);
+    const Eigen::MatrixXd& table = data(e, "samples");
+    const auto& g = e.given;
+    const double exact = polygonToPolygonFormFactor(s.patches[0].vertices, s.patches[1].vertices);
+    if (g.count("lines")) {
+      // Local lines: the core's cosine-distributed direction, followed to j's plane.
+      ++lineVariants;
+      int hits = 0;
+      for (Eigen::Index k = 0; k < table.rows(); ++k) {
+        const Vec3 x(g.at("a") * table(k, 0), g.at("b") * table(k, 1), 0);
+        const Vec3 d = cosineDirection(s.patches[0].normal, table(k, 2), table(k, 3));
+        const Vec3 p = x + (g.at("h") / d.z()) * d;
+        const bool hit =
+            p.x() > g.at("shift") && p.x() < g.at("shift") + g.at("w") && p.y() > 0 && p.y() < g.at("c");
+        hits += hit;
+        if (k == 0) {
+          EXPECT_EQ(answer(e, "hit1"), hit ? 1.0 : 0.0) << "seed " << e.seed;
+        }
+      }
+      EXPECT_EQ(answer(e, "hits"), hits) << "seed " << e.seed;
+      EXPECT_AGREES(e, "F", hits / static_cast<double>(table.rows()), 0.01);
+      outside += std::abs(answer(e, "F") - exact) > 3 * answer(e, "SE");
+      return;
+    }
+    const double Aj = s.patches[1].area;
+    double sum = 0;
+    for (Eigen::Index k = 0; k < table.rows(); ++k) {
+      const Vec3 x(g.at("a") * table(k, 0), g.at("b") * table(k, 1), 0);
+      const Vec3 y(g.at("shift") + g.at("w") * table(k, 2), g.at("c") * table(k, 3), g.at("h"));
+      const double f = Aj * pointToPointKernel(x, s.patches[0].normal, y, s.patches[1].normal);
+      if (k == 0) {
+        EXPECT_AGREES(e, "f1", f, 0.01);
+      }
+      sum += f;
+    }
+    EXPECT_AGREES(e, "F", sum / static_cast<double>(table.rows()), 0.01);
+    // The estimate scatters about the exact F by about its standard error.
+    outside += std::abs(answer(e, "F") - exact) > 3 * answer(e, "SE");
+  });
+  EXPECT_GT(lineVariants, kSeeds / 4);
+  EXPECT_LE(outside, kSeeds / 10);
+}
+
+RadiositySystem systemOf(const Exercise& e, FormFactorMatrix& F) {
+  F = data(e, "F");
+  RadiositySystem system;
+  system.F = &F;
+  const Eigen::VectorXd rho = data(e, "rho"), E = data(e, "E");
+  system.reflectance = rho.replicate(1, 3);
+  system.emission = E.replicate(1, 3);
+  system.areas = data(e, "L");
+  return system;
+}
+
+TEST(HomeworkIndependent, AssembledKAgreesWithTheCoresAssembly) {
+  forEachVariant("assemble-k", [](const Exercise& e) {
+    const Eigen::MatrixXd K = assembleDense(data(e, "F"), data(e, "rho"));
+    for (Eigen::Index i = 0; i < K.rows(); ++i)
+      for (Eigen::Index j = 0; j < K.cols(); ++j)
+        EXPECT_AGREES(e, "K" + std::to_string(i + 1) + std::to_string(j + 1), K(i, j), 1e-6);
+  });
+}
+
+TEST(HomeworkIndependent, SweepsAgreeWithTheCoresSolvers) {
+  forEachVariant("jacobi-gauss-seidel", [](const Exercise& e) {
+    FormFactorMatrix F;
+    const RadiositySystem system = systemOf(e, F);
+    SolverOptions options;
+    options.tolerance = 0;
+    options.maxIterations = 2;
+    for (const char* which : {"J", "G"}) {
+      std::vector<IterationRecord> history;
+      RgbField B;
+      const IterationSink sink = [&](IterationRecord r) { history.push_back(std::move(r)); };
+      which[0] == 'J' ? jacobi(system, B, options, sink) : gaussSeidel(system, B, options, sink);
+      ASSERT_EQ(history.size(), 2u);
+      for (int k = 0; k < 2; ++k)
+        for (Eigen::Index i = 0; i < B.rows(); ++i)
+          EXPECT_AGREES(e, which + std::to_string(k + 1) + "[" + std::to_string(i + 1) + "]",
+                        history[k].B(i, 0), 1e-6);
+    }
+    RgbField exact;
+    ASSERT_EQ(directSolve(system, exact, {}), SolverStatus::Success);
+    for (Eigen::Index i = 0; i < exact.rows(); ++i)
+      EXPECT_AGREES(e, "B[" + std::to_string(i + 1) + "]", exact(i, 0), 1e-6);
+  });
+}
+
+TEST(HomeworkIndependent, ShotsAgreeWithTheCoresSouthwell) {
+  forEachVariant("southwell", [](const Exercise& e) {
+    FormFactorMatrix F;
+    const RadiositySystem system = systemOf(e, F);
+    SolverOptions options;
+    options.tolerance = 0;
+    options.maxIterations = 3;
+    options.residualEvery = 1;
+    std::vector<IterationRecord> history;
+    RgbField B;
+    southwell(system, B, options, [&](IterationRecord r) { history.push_back(std::move(r)); });
+    ASSERT_GE(history.size(), 3u);
+    const std::size_t first = history.size() - 3;  // a record of the start may come first
+    for (int k = 0; k < 3; ++k) {
+      const IterationRecord& r = history[first + k];
+      const std::string shot = std::to_string(k + 1);
+      EXPECT_EQ(answer(e, "shooter" + shot), r.shooter + 1) << "seed " << e.seed;
+      for (Eigen::Index i = 0; i < r.B.rows(); ++i)
+        EXPECT_AGREES(e, "B" + shot + "[" + std::to_string(i + 1) + "]", r.B(i, 0), 1e-6);
+      EXPECT_AGREES(e, "unshot" + shot, r.unshotPower / 3, 1e-6);  // the core sums three equal channels
+    }
+  });
+}
+
+TEST(HomeworkIndependent, BouncesAgreeWithTheNeumannSeriesAndTheDirectSolver) {
+  forEachVariant("bounces", [](const Exercise& e) {
+    FormFactorMatrix F;
+    const RadiositySystem system = systemOf(e, F);
+    SolverOptions options;
+    options.tolerance = 0;
+    options.maxIterations = 5;
+    std::vector<RgbField> terms;
+    RgbField B;
+    neumannSeries(system, B, options, {}, &terms);
+    ASSERT_GE(terms.size(), 5u);
+    for (Eigen::Index i = 0; i < B.rows(); ++i)
+      EXPECT_AGREES(e, "T1[" + std::to_string(i + 1) + "]", terms[1](i, 0), 1e-6);
+    RgbField exact;
+    directSolve(system, exact, {});
+    const Eigen::VectorXd L = data(e, "L");
+    const double total = exact.col(0).dot(L);
+    // Which bounce: the one whose power the key gives.
+    int k = 1;
+    for (int m = 1; m <= 3; ++m)
+      if (std::abs(terms[m].col(0).dot(L) - answer(e, "P")) <
+          std::abs(terms[k].col(0).dot(L) - answer(e, "P")))
+        k = m;
+    EXPECT_AGREES(e, "P", terms[k].col(0).dot(L), 1e-6);
+    EXPECT_AGREES(e, "share", terms[k].col(0).dot(L) / total, 1e-6);
+  });
+}
+
+TEST(HomeworkIndependent, SpectralRadiusAgreesWithTheCoresPowerIteration) {
+  forEachVariant("spectral-radius", [](const Exercise& e) {
+    const SpectralRadiusEstimate r = spectralRadius(data(e, "F"), data(e, "rho"));
+    ASSERT_TRUE(r.converged);
+    EXPECT_AGREES(e, "r", r.value, 0.01);
+    const double tau = std::pow(10.0, -e.given.at("exponent"));
+    EXPECT_EQ(answer(e, "m"), std::ceil(std::log(tau) / std::log(r.value))) << "seed " << e.seed;
+  });
+}
+
+TEST(HomeworkIndependent, SubdivisionAgreesWithTheCoresLuminance) {
+  forEachVariant("subdivision", [](const Exercise& e) {
+    const Eigen::MatrixXd& el = data(e, "elements");
+    double w = 0, a = 0, jump = 0;
+    std::vector<double> Y;
+    for (Eigen::Index i = 0; i < el.rows(); ++i) Y.push_back(luminance(el.row(i).tail<3>()));
+    for (Eigen::Index i = 0; i < el.rows(); ++i)
+      if (i != 4) w += el(i, 0) * Y[i], a += el(i, 0);
+    for (int j = 1; j <= 3; ++j) jump = std::max(jump, std::abs(Y[0] - Y[j]));
+    const double threshold = e.given.at("tolerance") * w / a;
+    EXPECT_AGREES(e, "Y1", Y[0], 0.01);
+    EXPECT_AGREES(e, "mean", w / a, 0.01);
+    EXPECT_AGREES(e, "threshold", threshold, 0.01);
+    EXPECT_AGREES(e, "jump", jump, 0.01);
+    const bool split = jump > threshold && e.given.at("edge") >= 2 * e.given.at("min_edge");
+    EXPECT_EQ(answer(e, "split"), split ? 1.0 : 0.0);
+  });
+}
+
+#ifdef RT_HAVE_VIZ
+TEST(HomeworkIndependent, ToneMappingAgreesWithTheDisplayPipeline) {
+  forEachVariant("tone-mapping", [](const Exercise& e) {
+    viz::DisplaySettings settings;
+    settings.exposure = e.given.at("exposure");
+    settings.toneMap = e.given.at("reinhard") > 0 ? viz::ToneMap::Reinhard : viz::ToneMap::LinearClamp;
+    settings.srgbGamma = true;
+    const Eigen::MatrixXd& B = data(e, "B");
+    for (Eigen::Index i = 0; i < B.rows(); ++i) {
+      const viz::Rgb8 c = viz::displayColour(Rgb::Constant(B(i, 0)), settings);
+      EXPECT_EQ(answer(e, "v" + std::to_string(i + 1)), c[0]) << "seed " << e.seed;
+    }
+  });
+}
+#endif
+
+}  // namespace
+}  // namespace rt::homework
