@@ -1,6 +1,6 @@
 #include "app/exercise_panel.h"
 
-#include <QFormLayout>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -33,7 +33,10 @@ ExercisePanel::ExercisePanel(QWidget* parent) : QWidget(parent) {
   auto* scroll = new QScrollArea(this);
   scroll->setWidgetResizable(true);
   fields_ = new QWidget(scroll);
-  form_ = new QFormLayout(fields_);
+  // A grid, not a QFormLayout: Qt 6.4's form layout writes past a buffer when it lays out hidden rows (this
+  // panel is hidden on every step that is not an exercise), which corrupted the heap.
+  form_ = new QGridLayout(fields_);
+  form_->setColumnStretch(1, 1);
   scroll->setWidget(fields_);
   scroll->setMaximumHeight(260);
   auto* buttons = new QHBoxLayout();
@@ -68,7 +71,10 @@ void ExercisePanel::setExercise(const std::optional<homework::Exercise>& exercis
       exercise && exercise_ && exercise->topic == exercise_->topic && exercise->seed == exercise_->seed;
   if (same) return;
   exercise_ = exercise;
-  while (form_->rowCount() > 0) form_->removeRow(0);
+  while (QLayoutItem* item = form_->takeAt(0)) {
+    delete item->widget();
+    delete item;
+  }
   edits_.clear();
   verdicts_.clear();
   summary_->clear();
@@ -76,6 +82,7 @@ void ExercisePanel::setExercise(const std::optional<homework::Exercise>& exercis
   notes_->hide();
   setVisible(exercise_.has_value());
   if (!exercise_) return;
+  int line = 0;
   for (const homework::Question& q : exercise_->questions) {
     auto* row = new QWidget(fields_);
     auto* rowLayout = new QHBoxLayout(row);
@@ -87,7 +94,10 @@ void ExercisePanel::setExercise(const std::optional<homework::Exercise>& exercis
     verdict->setWordWrap(true);
     rowLayout->addWidget(edit);
     rowLayout->addWidget(verdict, 1);
-    form_->addRow(plain(q.label), row);
+    auto* label = new QLabel(plain(q.label), fields_);
+    label->setWordWrap(true);
+    form_->addWidget(label, line, 0);
+    form_->addWidget(row, line++, 1);
     edits_[q.id] = edit;
     verdicts_[q.id] = verdict;
     // Enter in a field checks, as the button does.

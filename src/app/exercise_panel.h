@@ -13,7 +13,7 @@ class QLabel;
 class QLineEdit;
 class QPushButton;
 class QTextBrowser;
-class QFormLayout;
+class QGridLayout;
 
 namespace rt::app {
 
@@ -37,7 +37,7 @@ class ExercisePanel : public QWidget {
 
  private:
   std::optional<homework::Exercise> exercise_;
-  QFormLayout* form_ = nullptr;
+  QGridLayout* form_ = nullptr;
   QWidget* fields_ = nullptr;
   std::map<std::string, QLineEdit*> edits_;
   std::map<std::string, QLabel*> verdicts_;
