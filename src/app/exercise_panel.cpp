@@ -38,7 +38,7 @@ ExercisePanel::ExercisePanel(QWidget* parent) : QWidget(parent) {
   form_ = new QGridLayout(fields_);
   form_->setColumnStretch(1, 1);
   scroll->setWidget(fields_);
-  scroll->setMaximumHeight(260);
+
   auto* buttons = new QHBoxLayout();
   check_ = new QPushButton(tr("Check"), this);
   check_->setObjectName("checkAnswers");
@@ -103,6 +103,9 @@ void ExercisePanel::setExercise(const std::optional<homework::Exercise>& exercis
     // Enter in a field checks, as the button does.
     connect(edit, &QLineEdit::returnPressed, this, &ExercisePanel::check);
   }
+  // The fields at the top, the free space below them (the grid remembers stretches of earlier rows).
+  for (int r = 0; r < form_->rowCount(); ++r) form_->setRowStretch(r, r == line ? 1 : 0);
+  if (line >= form_->rowCount()) form_->setRowStretch(line, 1);
 }
 
 QLineEdit* ExercisePanel::field(const std::string& id) const {

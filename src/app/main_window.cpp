@@ -138,8 +138,6 @@ void MainWindow::buildUi() {
   computeButton_->hide();
   connect(computeButton_, &QPushButton::clicked, this, &MainWindow::computeNow);
   textLayout->addWidget(text_, 1);
-  exercise_ = new ExercisePanel(textPane);
-  textLayout->addWidget(exercise_);
   textLayout->addWidget(computeButton_);
   textLayout->addWidget(stepLabel_);
   textLayout->addLayout(navigation);
@@ -174,9 +172,16 @@ void MainWindow::buildUi() {
   right->setSizes({620, 380});  // proportions: the 3D view gets most of the height
   centre->addWidget(textPane);
   centre->addWidget(right);
+  // An exercise's answer fields stand where the views are on other steps (an exercise has no scene), not
+  // under the text: growing and shrinking the typeset text's web view at every step made Qt WebEngine
+  // corrupt the heap.
+  exercise_ = new ExercisePanel(centre);
+  centre->addWidget(exercise_);
   centre->setStretchFactor(0, 2);
   centre->setStretchFactor(1, 5);
-  centre->setSizes({380, 900});
+  centre->setStretchFactor(2, 5);
+  centre->setCollapsible(2, false);
+  centre->setSizes({380, 900, 900});  // the views or the answer fields: one of the two is shown
   setCentralWidget(centre);
 
   // The shared camera of compare mode: whichever view the reader moves, the other follows.
