@@ -1,5 +1,6 @@
 #include "viz/vtk_render.h"
 
+#include "lesson/markdown_html.h"
 #include "viz/display_check.h"
 
 #include <vtkContextView.h>
@@ -134,29 +135,6 @@ void writeRenderWindow(vtkRenderWindow* window, const std::string& path, double 
 
 namespace {
 
-std::string xmlEscaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 // vtkSVGExporter clips a chart's plotted lines with a <g> that has both a transform (data to page) and a
 // clip-path whose rectangle is in page units. SVG applies the clip in the group's own, transformed, units,
 // so browsers (and the book's PDF) clip every line away. Splitting the group in two, the clip outside and the
@@ -213,8 +191,8 @@ void tidySvg(const std::string& path, const std::string& title, const std::strin
     svg.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   }
   const std::string placeholder = "VTK Exported Scene";
-  const std::string replacements[2] = {xmlEscaped(title.empty() ? description : title),
-                                       xmlEscaped(description.empty() ? title : description)};
+  const std::string replacements[2] = {lesson::escapeHtml(title.empty() ? description : title),
+                                       lesson::escapeHtml(description.empty() ? title : description)};
   std::size_t at = 0;
   for (const std::string& replacement : replacements) {
     if (title.empty() && description.empty()) break;
