@@ -10,27 +10,17 @@ Default output: scenes/grid-room-N.json. The ceiling quads whose centres lie ins
 Only the Python standard library is used.
 """
 import json
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_cornell_box import facing  # noqa: E402  (the same orientation rule as the Cornell box files)
 
 SIZE = (556.0, 548.8, 559.2)  # x (width), y (height), z (depth), mm
 LIGHT = (213.0, 343.0, 227.0, 332.0)  # x0, x1, z0, z1 on the ceiling
 # The published block vertices (tests/data/refdata/cornell_box.json): top, then the four sides.
 SHORT_TOP = [[130.0, 165.0, 65.0], [82.0, 165.0, 225.0], [240.0, 165.0, 272.0], [290.0, 165.0, 114.0]]
 TALL_TOP = [[423.0, 330.0, 247.0], [265.0, 330.0, 296.0], [314.0, 330.0, 456.0], [472.0, 330.0, 406.0]]
-
-
-def newell(polygon):
-    n = [0.0, 0.0, 0.0]
-    for a, b in zip(polygon, polygon[1:] + polygon[:1]):
-        n[0] += (a[1] - b[1]) * (a[2] + b[2])
-        n[1] += (a[2] - b[2]) * (a[0] + b[0])
-        n[2] += (a[0] - b[0]) * (a[1] + b[1])
-    return n
-
-
-def facing(polygon, direction):
-    n = newell(polygon)
-    return polygon if sum(a * b for a, b in zip(n, direction)) > 0 else list(reversed(polygon))
 
 
 def wall_quads(axis, at, inward, n):
