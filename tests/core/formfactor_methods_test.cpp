@@ -126,6 +126,21 @@ TEST(FormFactorMethods, IgnoringOccludersOnAnOccludedSceneWarns) {
   EXPECT_TRUE(closed.warnings.empty()) << closed.warnings.front();
 }
 
+TEST(FormFactorMethods, ElementsThatSeeNothingAreNamedAndLeftOutOfTheRowSums) {
+  // A closed room with a solid block, bottom included: the bottom lies on the floor facing it and sees
+  // nothing, and so does the floor element entirely under the block. Both are right; the summary names them
+  // instead of reporting a row sum of 0 and a closure error of 1.
+  Scene s = test::closedBox(1, 1, 1);
+  test::addBox(s, Vec3(0.3, 0.3, 0), Vec3(0.7, 0.7, 0.4), true);
+  const Mesh mesh = test::meshOf(s, 5);
+  const FormFactorDiagnostics d = diagnose(runMethod("analytic-visibility", mesh), mesh.areas());
+  EXPECT_EQ(d.blindRows, 25 + 1);  // the bottom's 5 x 5 elements and the floor's element [0.4, 0.6]^2
+  EXPECT_EQ(d.blindExamples.size(), 5u);
+  EXPECT_GT(d.minRowSum, 0.1);
+  EXPECT_NE(d.summary().find("26 elements see nothing (hidden or enclosed, e.g. "), std::string::npos)
+      << d.summary();
+}
+
 // raycast: without occluders the estimator is a stratified quadrature of Lambert's point formula, which is
 // bounded but has a logarithmic derivative at edges shared with j: jittered sampling then converges like N^-1
 // (not N^-3/2). With N = 64 the measured worst entry error is ~1e-2 for adjacent elements, so entries are

@@ -37,7 +37,14 @@ std::string FormFactorDiagnostics::summary() const {
       line, sizeof line,
       "row sums [%.6g, %.6g], max |1 - row sum| %.3g, reciprocity error %.3g, %ld negative, %ld > 1",
       minRowSum, maxRowSum, maxClosureError, maxReciprocityError, negativeEntries, entriesAboveOne);
-  return line;
+  std::string out = line;
+  if (blindRows == 0) return out;
+  out += "; " + std::to_string(blindRows) + (blindRows == 1 ? " element sees" : " elements see") +
+         " nothing (hidden or enclosed, e.g. ";
+  for (std::size_t k = 0; k < blindExamples.size(); ++k)
+    out += (k ? ", " : "") + std::to_string(blindExamples[k]);
+  return out + (static_cast<long>(blindExamples.size()) < blindRows ? ", ...)" : ")") +
+         ": the row sums above are over the others";
 }
 
 FormFactorDiagnostics diagnose(const FormFactorMatrix& F, const Eigen::VectorXd& areas) {
@@ -45,9 +52,21 @@ FormFactorDiagnostics diagnose(const FormFactorMatrix& F, const Eigen::VectorXd&
   const Eigen::Index n = F.rows();
   if (n == 0) return d;
   const Eigen::VectorXd sums = F.rowwise().sum();
-  d.minRowSum = sums.minCoeff();
-  d.maxRowSum = sums.maxCoeff();
-  d.maxClosureError = (1.0 - sums.array()).abs().maxCoeff();
+  constexpr double kBlind = 1e-9;  // far below any row of an element that sees a surface at all
+  constexpr std::size_t kExamples = 5;
+  d.minRowSum = d.maxRowSum = 0;
+  bool first = true;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if (std::abs(sums[i]) < kBlind) {
+      if (d.blindExamples.size() < kExamples) d.blindExamples.push_back(static_cast<long>(i));
+      ++d.blindRows;
+      continue;
+    }
+    d.minRowSum = first ? sums[i] : std::min(d.minRowSum, sums[i]);
+    d.maxRowSum = first ? sums[i] : std::max(d.maxRowSum, sums[i]);
+    d.maxClosureError = std::max(d.maxClosureError, std::abs(1.0 - sums[i]));
+    first = false;
+  }
   d.negativeEntries = (F.array() < 0.0).count();
   d.entriesAboveOne = (F.array() > 1.0).count();
   for (Eigen::Index i = 0; i < n; ++i)

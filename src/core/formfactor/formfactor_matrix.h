@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <vector>
 
 namespace rt {
 
@@ -22,9 +23,14 @@ FormFactorMatrix zeroFormFactorMatrix(Eigen::Index n);
 void checkRowSumsAtMost(const FormFactorMatrix& F, double bound, const std::string& method);
 
 struct FormFactorDiagnostics {
+  // Over the rows of elements that see something. An element that sees nothing (a block's bottom on the
+  // floor, a floor element under a block that sees only the block's back faces) has a row of zeros, which is
+  // right and says nothing about closure: those are counted and listed apart.
   double minRowSum = 0, maxRowSum = 0;
-  double maxClosureError = 0;      // max |1 - sum_j F_ij| (meaningful in a closed scene)
-  double maxReciprocityError = 0;  // max |A_i F_ij - A_j F_ji| / max(A_i F_ij, A_j F_ji) over non-zero pairs
+  double maxClosureError = 0;       // max |1 - sum_j F_ij| (meaningful in a closed scene)
+  long blindRows = 0;               // rows that sum to (almost) 0: the element sees nothing
+  std::vector<long> blindExamples;  // the first few of them
+  double maxReciprocityError = 0;   // max |A_i F_ij - A_j F_ji| / max(A_i F_ij, A_j F_ji) over non-zero pairs
   long negativeEntries = 0;
   long entriesAboveOne = 0;
   std::string summary() const;  // one line
