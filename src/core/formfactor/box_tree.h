@@ -20,6 +20,12 @@ class BoxTree {
 
   std::size_t size() const { return boxes_.size(); }
 
+  // Strict overlap by more than eps on every axis: boxes that merely touch (a wall and the floor) do not
+  // count.
+  static bool overlaps(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, double eps) {
+    return (a.min().array() < b.max().array() - eps).all() && (b.min().array() < a.max().array() - eps).all();
+  }
+
  private:
   struct Node {
     Eigen::AlignedBox3d box;
@@ -27,9 +33,6 @@ class BoxTree {
     int left = -1, right = -1;  // an inner node: its children
   };
   int build(int first, int count);
-  static bool overlaps(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, double eps) {
-    return (a.min().array() < b.max().array() - eps).all() && (b.min().array() < a.max().array() - eps).all();
-  }
 
   std::vector<Eigen::AlignedBox3d> boxes_;
   std::vector<int> order_;

@@ -44,11 +44,6 @@ std::vector<Vec3> convexOutline(std::vector<Vec3> points, const Vec3& normal) {
   return out.size() >= 3 ? out : points;
 }
 
-bool boxesOverlap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b, double eps) {
-  // Strict overlap: boxes that merely touch (a wall and the floor) do not count.
-  return (a.min().array() < b.max().array() - eps).all() && (b.min().array() < a.max().array() - eps).all();
-}
-
 }  // namespace
 
 ShaftCulling::ShaftCulling(const Mesh& mesh) : mesh_(mesh) {
@@ -161,7 +156,7 @@ bool ShaftCulling::mayBeOccluded(int i, int j) const {
   shaft.extend(elementBoxes_[static_cast<std::size_t>(j)]);
   // The element-level form of (1) and (3) for a patch that passed the patch-level test.
   auto blocks = [&](int k) {
-    if (!boxesOverlap(shaft, patches_[static_cast<std::size_t>(k)].box, eps_)) return false;
+    if (!BoxTree::overlaps(shaft, patches_[static_cast<std::size_t>(k)].box, eps_)) return false;
     return ((sideOfElement(i, k) | sideOfElement(j, k)) & kBoth) == kBoth;
   };
   if (!pairCandidates_.empty()) {
