@@ -1,40 +1,64 @@
 // radiosity homework new: a variant of each chosen topic per student, with handouts, data files and the
-// instructor's key (src/homework). The topics are the rows of the homework table; --pdf runs pdflatex on the
-// LaTeX sources when it is installed.
+// instructor's key (src/homework). The topics are the rows of the homework table. The PDFs are typeset from
+// the Markdown by the book's typesetter; the LaTeX sources are there for instructors who edit them.
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include "cli/commands.h"
+#include "core/input_error.h"
 #include "homework/handout.h"
 #include "homework/topic_table.h"
+#ifdef RT_HAVE_TYPESET
+#include <QString>
+#include <QUrl>
+
+#include "lesson/book_html.h"
+#include "typeset/book_printer.h"
+#include "typeset/web_engine.h"
+#endif
 
 namespace rt::cli {
 namespace {
+
+namespace fs = std::filesystem;
 
 struct HomeworkNewArguments {
   std::vector<std::string> topics{"all"};
   std::uint64_t seed = 1;
   int count = 1;
   std::string output;
-  bool pdf = false;
+  bool pdf = true;
 };
 
-bool havePdflatex() {
-  return std::system("command -v pdflatex > /dev/null 2>&1") == 0;
+#ifdef RT_HAVE_TYPESET
+// Each handout.md and the key.md typeset as the book is (maths by KaTeX, A4 pages) into a PDF beside it. The
+// print document is written beside the Markdown so that its figure paths resolve, and removed afterwards.
+void printPdfs(const std::vector<std::string>& markdownFiles) {
+  const typeset::WebSession session;
+  const std::string katexStyle =
+      QUrl::fromLocalFile(typeset::katexDirectory() + "/katex.min.css").toString().toStdString();
+  std::vector<std::string> problems;
+  for (const std::string& file : markdownFiles) {
+    const fs::path md(file);
+    std::ifstream in(md, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const fs::path print = md.parent_path() / (md.stem().string() + "-print.html");
+    const fs::path pdf = fs::path(md).replace_extension(".pdf");
+    std::ofstream(print, std::ios::binary) << lesson::printDocumentHtml(md.stem().string(), text, katexStyle);
+    const auto printed =
+        typeset::printBook(QString::fromStdString(print.string()), QString::fromStdString(pdf.string()));
+    fs::remove(print);
+    fs::permissions(pdf, fs::perms::group_read | fs::perms::others_read, fs::perm_options::add);
+    for (const std::string& e : printed.maths.errors) problems.push_back(md.string() + ": error: " + e);
+  }
+  if (!problems.empty()) {
+    for (const std::string& p : problems) std::cerr << p << "\n";
+    throw InputError({}, std::to_string(problems.size()) + " formula(s) did not typeset (listed above)");
+  }
 }
-
-// pdflatex writes beside the source; a failure is reported and the LaTeX source stays usable.
-void makePdf(const std::string& tex) {
-  const std::filesystem::path path(tex);
-  const std::string command = "cd '" + path.parent_path().string() +
-                              "' && pdflatex -interaction=nonstopmode -halt-on-error '" +
-                              path.filename().string() + "' > /dev/null 2>&1";
-  if (std::system(command.c_str()) != 0)
-    std::cerr << "radiosity: pdflatex failed on " << tex
-              << " (see the .log beside it); the .tex is complete\n";
-}
+#endif
 
 void run(const HomeworkNewArguments& a) {
   const auto start = std::chrono::steady_clock::now();
@@ -48,14 +72,13 @@ void run(const HomeworkNewArguments& a) {
     }
   }
   const homework::Assignment assignment = homework::makeAssignment(topics, a.seed, a.count);
-  const std::vector<std::string> latex = homework::writeAssignment(assignment, a.output);
-  if (a.pdf) {
-    if (havePdflatex()) {
-      for (const std::string& tex : latex) makePdf(tex);
-    } else {
-      std::cerr << "radiosity: pdflatex is not installed: wrote the LaTeX sources (.tex) only\n";
-    }
-  }
+  const std::vector<std::string> markdown = homework::writeAssignment(assignment, a.output);
+#ifdef RT_HAVE_TYPESET
+  if (a.pdf) printPdfs(markdown);
+#else
+  if (a.pdf)
+    std::cerr << "radiosity: built without the typesetter: wrote the Markdown and LaTeX sources only\n";
+#endif
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << a.count << " students x " << topics.size() << " topics written to " << a.output << " in "
             << seconds << " s (key: " << (std::filesystem::path(a.output) / "key.json").string() << ")\n";
@@ -66,7 +89,9 @@ void run(const HomeworkNewArguments& a) {
 void addHomeworkNewCommand(CLI::App& homework) {
   auto a = std::make_shared<HomeworkNewArguments>();
   auto* command = homework.add_subcommand(
-      "new", "Write a variant of each topic per student: handouts (Markdown, LaTeX), data files and the key");
+      "new",
+      "Write a variant of each topic per student: handouts (PDF, Markdown, LaTeX), data files and the key "
+      "(run it under xvfb-run without a display: the PDFs are typeset by a web engine)");
   std::vector<std::string> choices = homework::topicIds();
   choices.push_back("all");
   command->add_option("--topics", a->topics, "Comma-separated topics, or all")
@@ -79,7 +104,9 @@ void addHomeworkNewCommand(CLI::App& homework) {
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
   command->add_option("--output", a->output, "Folder to write (created)")->required();
-  command->add_flag("--pdf", a->pdf, "Also typeset handout.pdf and key.pdf with pdflatex, when installed");
+  command->add_flag(
+      "!--no-pdf", a->pdf,
+      "Write the sources (Markdown, LaTeX) only, not handout.pdf and key.pdf (typeset as the book is)");
   command->callback([a] { run(*a); });
 }
 

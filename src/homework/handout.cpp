@@ -70,7 +70,7 @@ std::string answersAppendix(const std::vector<AppendixEntry>& entries) {
 }
 
 std::vector<std::string> writeAssignment(const Assignment& a, const std::string& directory) {
-  std::vector<std::string> latex;
+  std::vector<std::string> markdown;
   const fs::path root(directory);
   std::error_code ec;
   fs::create_directories(root, ec);
@@ -102,14 +102,14 @@ std::vector<std::string> writeAssignment(const Assignment& a, const std::string&
     writeText(dir / "handout.md", handoutMarkdown(s, a.seed));
     writeText(dir / "handout.tex", latexDocument("Radiosity homework, student " + s.id, tex));
     writeText(dir / "answers.txt", answersText(s, false));
-    latex.push_back((dir / "handout.tex").string());
+    markdown.push_back((dir / "handout.md").string());
   }
   writeText(root / "key.json", keyJson(a));
   const std::string key = keyMarkdown(a);
   writeText(root / "key.md", key);
   writeText(root / "key.tex", latexDocument("Radiosity homework: answer key", markdownToLatex(key)));
-  latex.push_back((root / "key.tex").string());
-  return latex;
+  markdown.push_back((root / "key.md").string());
+  return markdown;
 }
 
 }  // namespace rt::homework

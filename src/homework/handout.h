@@ -25,8 +25,8 @@ inline constexpr const char* kAnswersAppendixId = "exercise-answers";
 std::string answersAppendix(const std::vector<AppendixEntry>& entries);
 
 // Writes DIR/<student>/{handout.md, handout.tex, answers.txt, figures/, data/} for every student and
-// DIR/key.{json,md,tex}. Returns the LaTeX files written (for an optional PDF step). Throws InputError naming
-// a path that cannot be written.
+// DIR/key.{json,md,tex}. Returns the Markdown files written (handouts, then the key), which the programs
+// typeset to PDF. Throws InputError naming a path that cannot be written.
 std::vector<std::string> writeAssignment(const Assignment& assignment, const std::string& directory);
 
 }  // namespace rt::homework

@@ -144,6 +144,17 @@ std::string printBookHtml(const std::vector<RenderedLesson>& lessons) {
   return html;
 }
 
+std::string printDocumentHtml(const std::string& title, const std::string& markdown,
+                              const std::string& katexStyleUrl) {
+  std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" +
+                     escapeHtml(title) + "</title>\n<link rel=\"stylesheet\" href=\"" +
+                     escapeHtml(katexStyleUrl) + "\">\n<style>\n" + bookStyleSheet() +
+                     "@page { size: A4; margin: 0; }\n</style>\n</head>\n";
+  // The page layout moves the children of #flow into pages, so the document's blocks must be its children.
+  return html + "<body class=\"print document\">\n<div id=\"flow\">\n" + markdownToHtml(markdown) +
+         "</div>\n</body>\n</html>\n";
+}
+
 std::string bookStyleSheet() {
   return R"(/* The book's pages and its printed form. */
 body { font-family: "DejaVu Serif", Georgia, serif; font-size: 17px; line-height: 1.5; color: #111;
@@ -172,10 +183,11 @@ a { color: #0645ad; }
 .toc-section { margin-left: 2.5em; display: flex; }
 .toc-chapter a, .toc-section a { flex: 1; text-decoration: none; color: inherit; }
 .toc-page { min-width: 2.5em; text-align: right; }
-/* The printed book: pages laid out by the typesetter, A4 with a page number at the foot. */
+/* The printed book: pages laid out by the typesetter, A4 with a page number at the foot. Each page is its own
+   layout (contain): the layout carries blocks between pages and measures one page at a time. */
 body.print { font-size: 11pt; }
 .print .page { width: 210mm; height: 296.8mm; position: relative; overflow: hidden; box-sizing: border-box;
-               padding: 20mm 22mm 24mm; break-after: page; }
+               padding: 20mm 22mm 24mm; break-after: page; contain: strict; }
 .print .page-body { height: 100%; overflow: hidden; }
 .print .page-number { position: absolute; bottom: 12mm; left: 0; right: 0; text-align: center;
                       font-family: "DejaVu Sans", sans-serif; font-size: 9pt; color: #333; }

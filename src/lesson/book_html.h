@@ -28,6 +28,12 @@ std::string indexPageHtml(const std::vector<RenderedLesson>& lessons, bool withP
 // The whole book in one document: a title page, the contents (page numbers filled in when it is laid out
 // into pages) and every chapter. Its blocks are the children of <div id="flow">, for the page layout.
 std::string printBookHtml(const std::vector<RenderedLesson>& lessons);
+// Any Markdown document (a homework handout, an answer key) in the printed book's form, for the same
+// typesetter: A4 pages, the book's style inline, KaTeX's style sheet from `katexStyleUrl` (a file URL, so
+// that nothing has to be copied beside the document). Relative paths in the Markdown (figures) are relative
+// to where the HTML is written.
+std::string printDocumentHtml(const std::string& title, const std::string& markdown,
+                              const std::string& katexStyleUrl);
 // The style sheet shared by the pages and the printed book.
 std::string bookStyleSheet();
 

@@ -13,13 +13,17 @@ namespace {
 
 // Moves the blocks of #flow into pages of fixed height: a block that does not fit starts the next page, a
 // chapter or the contents always starts one, and a heading left last on a page goes over with its block.
-// Then numbers the pages (not the title page) and writes each contents line's page. Returns the page count.
+// The blocks are measured in one layout (the flow set at the page's width) and grouped by their heights;
+// laying out after every block instead costs a layout of the whole document per block, minutes for a
+// document of 250 pages. A list or table taller than a page is split between its items or rows (a page clips
+// what overflows it). A check per page then moves what still overflows (margins count differently at a page
+// top) to a new page after it, so that no later page changes. Then numbers the pages (not a book's title
+// page; a document's first page is numbered) and writes each contents line's page. Returns the page count.
 const char* kPaginate = R"JS((function () {
   var flow = document.getElementById('flow');
   var blocks = Array.prototype.slice.call(flow.children);
-  flow.parentNode.removeChild(flow);
   var pages = [];
-  function newPage() {
+  function newPage(before) {
     var page = document.createElement('div');
     page.className = 'page';
     var body = document.createElement('div');
@@ -28,24 +32,95 @@ const char* kPaginate = R"JS((function () {
     number.className = 'page-number';
     page.appendChild(body);
     page.appendChild(number);
-    document.body.appendChild(page);
-    pages.push(page);
-    return body;
+    document.body.insertBefore(page, before || null);
+    return page;
   }
-  var body = newPage();
-  blocks.forEach(function (block) {
-    var starts = block.classList.contains('chapter') || block.classList.contains('toc-title');
-    if (starts && body.children.length > 0) body = newPage();
-    body.appendChild(block);
-    if (body.scrollHeight <= body.clientHeight + 1 || body.children.length === 1) return;
-    var carried = [block];
-    var previous = block.previousElementSibling;
-    if (previous && /^H[1-4]$/.test(previous.tagName) && body.children.length > 2) carried.unshift(previous);
-    body = newPage();
-    carried.forEach(function (b) { body.appendChild(b); });
+  function isHeading(b) { return /^H[1-4]$/.test(b.tagName); }
+  function startsPage(b) { return b.classList.contains('chapter') || b.classList.contains('toc-title'); }
+  function parts(b) {  // the items of a list, the body rows of a table
+    if (b.tagName === 'UL' || b.tagName === 'OL') return Array.prototype.slice.call(b.children);
+    if (b.tagName === 'TABLE' && b.tBodies.length === 1) return Array.prototype.slice.call(b.tBodies[0].rows);
+    return [];
+  }
+
+  // Measuring: reads only, in one layout.
+  var probe = newPage();
+  var limit = probe.firstChild.clientHeight;
+  probe.style.height = 'auto';
+  probe.style.contain = 'none';
+  probe.firstChild.style.height = 'auto';
+  probe.firstChild.appendChild(flow);
+  var tops = blocks.map(function (b) { return b.getBoundingClientRect().top; });
+  tops.push(blocks.length ? blocks[blocks.length - 1].getBoundingClientRect().bottom : 0);
+  var splits = {};
+  blocks.forEach(function (b, i) {
+    var p = parts(b);
+    if (tops[i + 1] - tops[i] <= limit || p.length < 2) return;
+    splits[i] = p.map(function (part) { var r = part.getBoundingClientRect(); return [r.top, r.bottom]; });
   });
+  document.body.removeChild(probe);
+  flow.parentNode && flow.parentNode.removeChild(flow);
+
+  // The blocks with their heights; a tall list or table becomes pieces that each fit a page.
+  var items = [];
+  blocks.forEach(function (b, i) {
+    var height = tops[i + 1] - tops[i];
+    var spans = splits[i];
+    if (!spans) { items.push({ el: b, height: height }); return; }
+    var elements = parts(b);
+    var overhead = height - (spans[spans.length - 1][1] - spans[0][0]);  // margins, a table's header
+    var first = 0;
+    while (first < elements.length) {
+      var last = first;
+      while (last + 1 < elements.length && spans[last + 1][1] - spans[first][0] + overhead <= limit) ++last;
+      var piece = b.cloneNode(false);
+      var holder = piece;
+      if (b.tagName === 'TABLE') {
+        if (b.tHead) piece.appendChild(b.tHead.cloneNode(true));
+        holder = piece.appendChild(document.createElement('tbody'));
+      } else if (b.tagName === 'OL') {
+        piece.start = (b.start || 1) + first;
+      }
+      for (var k = first; k <= last; ++k) holder.appendChild(elements[k]);
+      items.push({ el: piece, height: spans[last][1] - spans[first][0] + overhead });
+      first = last + 1;
+    }
+  });
+
+  var groups = [[]], used = 0;
+  items.forEach(function (item) {
+    var group = groups[groups.length - 1];
+    if (group.length > 0 && (startsPage(item.el) || used + item.height > limit)) {
+      var carried = [];
+      if (!startsPage(item.el) && isHeading(group[group.length - 1].el) && group.length > 1)
+        carried.push(group.pop());
+      groups.push(carried);
+      used = carried.reduce(function (sum, c) { return sum + c.height; }, 0);
+      group = carried;
+    }
+    group.push(item);
+    used += item.height;
+  });
+  groups.forEach(function (group) {
+    var body = newPage().firstChild;
+    group.forEach(function (item) { body.appendChild(item.el); });
+    pages.push(body.parentNode);
+  });
+  for (var p = 0; p < pages.length; ++p) {
+    var body = pages[p].firstChild;
+    if (body.scrollHeight <= body.clientHeight + 1 || body.children.length < 2) continue;
+    var fresh = newPage(pages[p].nextSibling);
+    pages.splice(p + 1, 0, fresh);
+    var into = fresh.firstChild;
+    while (body.scrollHeight > body.clientHeight + 1 && body.children.length > 1) {
+      into.insertBefore(body.lastElementChild, into.firstChild);
+      if (body.children.length > 1 && isHeading(body.lastElementChild))
+        into.insertBefore(body.lastElementChild, into.firstChild);
+    }
+  }
   pages.forEach(function (page, i) {
-    page.querySelector('.page-number').textContent = i === 0 ? '' : String(i + 1);
+    page.querySelector('.page-number').textContent =
+        i === 0 && !document.body.classList.contains('document') ? '' : String(i + 1);
   });
   document.querySelectorAll('.toc-page').forEach(function (slot) {
     var link = slot.parentNode.querySelector('a');

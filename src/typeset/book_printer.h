@@ -14,6 +14,7 @@ struct PrintedBook {
   MathsReport maths;
 };
 
+// Also prints any document written by lesson::printDocumentHtml (handouts, answer keys).
 // Throws std::runtime_error when the document cannot be loaded or the PDF cannot be written.
 PrintedBook printBook(const QString& htmlFile, const QString& pdfFile);
 
