@@ -6,7 +6,6 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QScrollArea>
-#include <QTextBrowser>
 #include <QVBoxLayout>
 
 #include "homework/grader.h"
@@ -52,14 +51,9 @@ ExercisePanel::ExercisePanel(QWidget* parent) : QWidget(parent) {
   summary_ = new QLabel(this);
   summary_->setObjectName("exerciseSummary");
   summary_->setWordWrap(true);
-  notes_ = new QTextBrowser(this);
-  notes_->setObjectName("exerciseNotes");
-  notes_->setMaximumHeight(200);
-  notes_->hide();
   layout->addWidget(scroll);
   layout->addLayout(buttons);
   layout->addWidget(summary_);
-  layout->addWidget(notes_);
   connect(check_, &QPushButton::clicked, this, &ExercisePanel::check);
   connect(hint, &QPushButton::clicked, this, &ExercisePanel::showHint);
   connect(solution, &QPushButton::clicked, this, &ExercisePanel::showSolution);
@@ -78,8 +72,7 @@ void ExercisePanel::setExercise(const std::optional<homework::Exercise>& exercis
   edits_.clear();
   verdicts_.clear();
   summary_->clear();
-  notes_->clear();
-  notes_->hide();
+  notes_.clear();
   setVisible(exercise_.has_value());
   if (!exercise_) return;
   int line = 0;
@@ -155,16 +148,15 @@ void ExercisePanel::check() {
 
 void ExercisePanel::showHint() {
   if (!exercise_) return;
-  notes_->setMarkdown(tr("**Hint.** ") + QString::fromStdString(exercise_->hint));
-  notes_->show();
+  notes_ = tr("### Hint\n\n") + QString::fromStdString(exercise_->hint) + "\n";
+  emit notesRequested(notes_);
 }
 
 void ExercisePanel::showSolution() {
   if (!exercise_) return;
-  QString md = tr("**Worked solution.**\n\n");
-  for (const std::string& step : exercise_->solution) md += "- " + QString::fromStdString(step) + "\n";
-  notes_->setMarkdown(md);
-  notes_->show();
+  notes_ = tr("### Worked solution\n\n");
+  for (const std::string& step : exercise_->solution) notes_ += "- " + QString::fromStdString(step) + "\n";
+  emit notesRequested(notes_);
 }
 
 }  // namespace rt::app

@@ -1,6 +1,7 @@
 // The reader's side of an exercise step: one input field per question, Check (the grader of the homework
 // library, so the app names the same slips as `radiosity homework check`), a hint and the worked solution.
-// Hidden for every other step.
+// The hint and the solution are Markdown with maths: the window shows them under the step's text, where
+// KaTeX sets them as it sets the lesson. Hidden for every other step.
 #pragma once
 
 #include <QWidget>
@@ -12,7 +13,6 @@
 class QLabel;
 class QLineEdit;
 class QPushButton;
-class QTextBrowser;
 class QGridLayout;
 
 namespace rt::app {
@@ -29,6 +29,12 @@ class ExercisePanel : public QWidget {
   // What Check said about a question ("right", or the feedback naming the slip); empty before Check.
   QString verdict(const std::string& questionId) const;
   QString summary() const;
+  // The hint or solution last asked for (Markdown with $...$ maths); empty for a new exercise.
+  const QString& notes() const { return notes_; }
+
+ signals:
+  // Hint or Show solution was pressed: `markdown` goes under the step's text.
+  void notesRequested(const QString& markdown);
 
  public slots:
   void check();
@@ -42,7 +48,7 @@ class ExercisePanel : public QWidget {
   std::map<std::string, QLineEdit*> edits_;
   std::map<std::string, QLabel*> verdicts_;
   QLabel* summary_ = nullptr;
-  QTextBrowser* notes_ = nullptr;  // hint and solution
+  QString notes_;
   QPushButton* check_ = nullptr;
 };
 

@@ -61,13 +61,15 @@ LessonTextView::LessonTextView(QWidget* parent) : QWidget(parent) {
       errors_.clear();
       for (const auto& e : o.value("errors").toArray()) errors_ << e.toString();
       typesetGeneration_ = generation;
+      if (scrollToEnd_) view_->page()->runJavaScript("window.scrollTo(0, document.body.scrollHeight);");
       emit typeset(formulas_, errors_);
     });
   });
 }
 
-void LessonTextView::setMarkdown(const QString& markdown) {
+void LessonTextView::setMarkdown(const QString& markdown, bool scrollToEnd) {
   markdown_ = markdown;
+  scrollToEnd_ = scrollToEnd;
   loaded_ = false;
   ++generation_;
   const QString body = QString::fromStdString(lesson::markdownToHtml(markdown.toStdString()));

@@ -19,7 +19,8 @@ class LessonTextView : public QWidget {
   explicit LessonTextView(QWidget* parent = nullptr);
 
   // Shows Markdown whose maths is ready (lesson::prepareMaths: numbered equations, linked references).
-  void setMarkdown(const QString& markdown);
+  // `scrollToEnd`: once typeset, the page shows its end (what was just added under the text).
+  void setMarkdown(const QString& markdown, bool scrollToEnd = false);
   // The text shown, as Markdown (the words a reader sees, for tests and for copying).
   QString toPlainText() const { return markdown_; }
   // The size of the body text on the page, in CSS pixels (from the widget's font).
@@ -57,6 +58,7 @@ class LessonTextView : public QWidget {
   QWebEngineView* view_ = nullptr;
   QString markdown_;
   bool loaded_ = false;
+  bool scrollToEnd_ = false;
   int generation_ = 0;  // of the page shown, so that a late answer for an older page is ignored
   int typesetGeneration_ = -1;
   int formulas_ = 0;

@@ -177,6 +177,9 @@ void MainWindow::buildUi() {
   // corrupt the heap.
   exercise_ = new ExercisePanel(centre);
   centre->addWidget(exercise_);
+  // The hint and the solution go under the step's text, typeset with it, and the page scrolls to them.
+  connect(exercise_, &ExercisePanel::notesRequested, this,
+          [this](const QString& notes) { text_->setMarkdown(stepMarkdown_ + "\n\n---\n\n" + notes, true); });
   centre->setStretchFactor(0, 2);
   centre->setStretchFactor(1, 5);
   centre->setStretchFactor(2, 5);

@@ -216,6 +216,7 @@ class MainWindow : public QMainWindow {
   ContentsTree* contents_ = nullptr;
   LessonTextView* text_ = nullptr;
   ExercisePanel* exercise_ = nullptr;  // the answer fields of an exercise step
+  QString stepMarkdown_;               // the step's text, without an exercise's hint or solution under it
   QLabel* stepLabel_ = nullptr;
   QPushButton* backButton_ = nullptr;
   QPushButton* nextButton_ = nullptr;

@@ -208,6 +208,7 @@ void MainWindow::zoomText(int steps) {
 }
 
 void MainWindow::setStepMarkdown(const QString& markdown) {
+  stepMarkdown_ = markdown;
   text_->setMarkdown(markdown);
 }
 

@@ -6,12 +6,12 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QTest>
-#include <QTextBrowser>
 #include <cstdio>
 #include <cstdlib>
 
 #include "app/exercise_panel.h"
 #include "app/lesson_session.h"
+#include "app/lesson_text_view.h"
 #include "app_test_support.h"
 
 using namespace rt::app;
@@ -68,9 +68,19 @@ TEST(AppExercise, AnAnswerTypedIntoTheFieldIsChecked) {
   if (const char* shot = std::getenv("RT_EXERCISE_SCREENSHOT")) window->grab().save(shot);
   // Hint and solution.
   QTest::mouseClick(panel->findChild<QPushButton*>("showSolution"), Qt::LeftButton);
-  auto* notes = panel->findChild<QTextBrowser*>("exerciseNotes");
-  EXPECT_TRUE(notes->isVisible());
-  EXPECT_TRUE(notes->toPlainText().contains("Worked solution"));
+  // It goes under the step's text, and its maths is typeset there with the lesson's.
+  auto* text = window->findChild<rt::app::LessonTextView*>();
+  ASSERT_NE(text, nullptr);
+  EXPECT_TRUE(text->toPlainText().contains("Worked solution"));
+  EXPECT_TRUE(text->toPlainText().contains(QString::fromStdString(e.solution.front())));
+  const auto maths = text->mathsState();
+  EXPECT_TRUE(maths.ready);
+  EXPECT_TRUE(maths.errors.isEmpty()) << maths.errors.join("\n").toStdString();
+  EXPECT_GT(maths.katexNodes, 0);
+  if (const char* shot = std::getenv("RT_SOLUTION_SCREENSHOT")) {
+    text->waitUntilShown();
+    window->grab().save(shot);
+  }
   // A step that is not an exercise hides the panel.
   ASSERT_TRUE(window->openLesson("form-factor", 0));
   ASSERT_TRUE(window->waitUntilIdle(20000));
