@@ -39,10 +39,12 @@ MeshOptions MeshArguments::optionsFor(const Scene& scene) const {
   const MeshOptions chosen = defaultMeshOptions(scene);
   if (chosen.mode != MeshOptions::Mode::MaxEdge) return chosen;
   char line[256];
-  std::snprintf(line, sizeof line,
-                "mesh: no mesh option given: --max-edge %g (%s) for about %.0f elements "
-                "(--no-subdivide: one element per polygon; --max-edge or --subdivide: your own)",
-                chosen.maxEdge, scene.unit.c_str(), estimatedElementCount(scene, chosen));
+  std::snprintf(
+      line, sizeof line,
+      "mesh: no mesh option given: --max-edge %g (%s) for about %.0f elements, cut where surfaces stand "
+      "on others "
+      "(--no-subdivide: one element per polygon; --max-edge or --subdivide: your own)",
+      chosen.maxEdge, scene.unit.c_str(), estimatedElementCount(scene, chosen));
   std::cerr << line << "\n";
   return chosen;
 }

@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "core/check.h"
+#include "core/contact_lines.h"
 #include "core/io/scene_assembly.h"
 #include "core/memory_budget.h"
 #include "core/polygon.h"
@@ -240,19 +241,24 @@ Mesh buildMesh(const Scene& scene, const MeshOptions& options) {
   VertexWelder welder(mesh.vertices, weldTolerance(scene, options, size));
 
   std::vector<Polygon> pieces;
+  const bool cut = options.splitAtContacts && options.mode != MeshOptions::Mode::None;
   for (std::size_t p = 0; p < scene.patches.size(); ++p) {
     const Patch& patch = scene.patches[p];
     pieces.clear();
-    const int n = static_cast<int>(divisionsFor(patch.vertices, options));
-    if (patch.vertices.size() == 4) {
-      splitQuad(patch.vertices, n, pieces);
-    } else if (patch.vertices.size() == 3) {
-      splitTriangle(patch.vertices, n, pieces);
-    } else if (keptWhole(patch.vertices, options)) {
-      pieces.push_back(patch.vertices);  // a convex n-gon, one element as asked
-    } else {
-      for (const Polygon& t : fanTriangulate(patch.vertices))
-        splitTriangle(t, static_cast<int>(divisionsFor(t, options)), pieces);
+    const std::vector<Polygon> parts =
+        cut ? cutAtContacts(scene, static_cast<int>(p), 1e-7 * size) : std::vector<Polygon>{patch.vertices};
+    for (const Polygon& part : parts) {
+      const int n = static_cast<int>(divisionsFor(part, options));
+      if (part.size() == 4) {
+        splitQuad(part, n, pieces);
+      } else if (part.size() == 3) {
+        splitTriangle(part, n, pieces);
+      } else if (keptWhole(part, options)) {
+        pieces.push_back(part);  // a convex n-gon, one element as asked
+      } else {
+        for (const Polygon& t : fanTriangulate(part))
+          splitTriangle(t, static_cast<int>(divisionsFor(t, options)), pieces);
+      }
     }
     for (const Polygon& piece : pieces) {
       Element e;
@@ -283,10 +289,31 @@ void refreshMaterials(Mesh& mesh, const Scene& scene) {
   }
 }
 
-double estimatedElementCount(const Scene& scene, const MeshOptions& options) {
+namespace {
+
+// Each patch as the parts the mesh splits: the patch, or its pieces cut at contact lines.
+std::vector<std::vector<Polygon>> meshedParts(const Scene& scene, bool cut) {
+  const double size = scene.bounds().isEmpty() ? 1.0 : scene.bounds().diagonal().norm();
+  std::vector<std::vector<Polygon>> parts;
+  parts.reserve(scene.patches.size());
+  for (std::size_t p = 0; p < scene.patches.size(); ++p)
+    parts.push_back(cut ? cutAtContacts(scene, static_cast<int>(p), 1e-7 * size)
+                        : std::vector<Polygon>{scene.patches[p].vertices});
+  return parts;
+}
+
+double countElements(const std::vector<std::vector<Polygon>>& parts, const MeshOptions& options) {
   double elements = 0;
-  for (const Patch& patch : scene.patches) elements += elementCount(patch.vertices, options);
+  for (const auto& patch : parts)
+    for (const Polygon& part : patch) elements += elementCount(part, options);
   return elements;
+}
+
+}  // namespace
+
+double estimatedElementCount(const Scene& scene, const MeshOptions& options) {
+  return countElements(meshedParts(scene, options.splitAtContacts && options.mode != MeshOptions::Mode::None),
+                       options);
 }
 
 MeshOptions defaultMeshOptions(const Scene& scene, double elements) {
@@ -295,12 +322,14 @@ MeshOptions defaultMeshOptions(const Scene& scene, double elements) {
   for (const Patch& patch : scene.patches) longest = std::max(longest, maxEdgeLength(patch.vertices));
   MeshOptions options;
   options.mode = MeshOptions::Mode::MaxEdge;
+  options.splitAtContacts = true;
+  const auto parts = meshedParts(scene, true);
   // The count only grows as the edge shrinks: bisect on the edge (in log scale) for the largest edge that
   // still gives `elements`, then round it down to two significant digits, which a reader can retype.
   double coarse = longest, fine = longest / std::sqrt(elements) / 4;
   for (int k = 0; k < 60; ++k) {
     options.maxEdge = std::sqrt(coarse * fine);
-    (estimatedElementCount(scene, options) >= elements ? fine : coarse) = options.maxEdge;
+    (countElements(parts, options) >= elements ? fine : coarse) = options.maxEdge;
   }
   const double scale = std::pow(10.0, std::floor(std::log10(fine)) - 1);
   options.maxEdge = std::floor(fine / scale) * scale;

@@ -27,6 +27,10 @@ struct MeshOptions {
   Mode mode = Mode::None;  // None: one element per patch, in file order (convex n-gons kept whole up to 8)
   int count = 1;           // Count: each patch is split N x N (quads) or into N^2 triangles (triangles)
   double maxEdge = 0.0;    // MaxEdge: split until no element edge is longer than this
+  // Count and MaxEdge: first cut each patch along the lines where other surfaces stand on it
+  // (contact_lines.h), so that no element straddles a block's footprint. The mesh chosen for a scene given
+  // without mesh options does; explicit options keep the plain grid unless asked.
+  bool splitAtContacts = false;
 };
 
 struct Mesh {
@@ -57,7 +61,8 @@ Mesh buildMesh(const Scene& scene, const MeshOptions& options = {});
 double estimatedElementCount(const Scene& scene, const MeshOptions& options);
 // A mesh for a scene given without mesh options: the largest --max-edge (to 2 significant digits) that gives
 // at least `elements` elements, or one element per patch when the scene has that many patches already. One
-// element per polygon is rarely right (the JSON Cornell box: 20 elements, 55 % error on the floor).
+// element per polygon is rarely right (the JSON Cornell box: 20 elements, 55 % error on the floor). The mesh
+// is cut along contact lines.
 MeshOptions defaultMeshOptions(const Scene& scene, double elements = 800);
 // Copies reflectance/emission from the scene into an existing mesh (after a material-only change).
 void refreshMaterials(Mesh& mesh, const Scene& scene);

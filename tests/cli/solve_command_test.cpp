@@ -55,7 +55,11 @@ TEST(SolveCommand, ASceneWithoutMeshOptionsGetsAMeshAndSaysWhich) {
   ASSERT_EQ(
       runCommand(cliPath() + " solve " + sourcePath("scenes/cornell-box.json") + " --output " + out, &log), 0)
       << log;
-  EXPECT_NE(log.find("mesh: no mesh option given: --max-edge 69 (mm) for about"), std::string::npos) << log;
+  EXPECT_NE(
+      log.find("mesh: no mesh option given: --max-edge 82 (mm) for about 849 elements, cut where surfaces "
+               "stand on others"),
+      std::string::npos)
+      << log;
   const auto rows = readCsv(out);
   EXPECT_GE(rows.size(), 1u + 800u);
   // --no-subdivide still means one element per polygon, and says nothing.

@@ -1,0 +1,119 @@
+#include "core/contact_lines.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rt {
+namespace {
+
+// The part of the convex polygon where (x - origin) . side >= 0.
+Polygon keepSide(const Polygon& polygon, const Vec3& origin, const Vec3& side) {
+  Polygon out;
+  for (std::size_t k = 0; k < polygon.size(); ++k) {
+    const Vec3& a = polygon[k];
+    const Vec3& b = polygon[(k + 1) % polygon.size()];
+    const double fa = (a - origin).dot(side), fb = (b - origin).dot(side);
+    if (fa >= 0) out.push_back(a);
+    if ((fa < 0) != (fb < 0)) out.push_back(a + (fa / (fa - fb)) * (b - a));
+  }
+  return out;
+}
+
+// The segment a-b clipped to the convex polygon (CCW about normal); false when nothing is left or only a
+// part within `tolerance` of the boundary.
+bool clipToInterior(Vec3& a, Vec3& b, const Polygon& polygon, const Vec3& normal, double tolerance) {
+  double t0 = 0, t1 = 1;
+  const Vec3 d = b - a;
+  for (std::size_t k = 0; k < polygon.size(); ++k) {
+    const Vec3& e0 = polygon[k];
+    const Vec3 inward = normal.cross(polygon[(k + 1) % polygon.size()] - e0).normalized();
+    // Strictly inside, by more than the tolerance: a segment along an edge is no cut.
+    const double fa = (a - e0).dot(inward) - tolerance, df = d.dot(inward);
+    if (std::abs(df) < 1e-300) {
+      if (fa <= 0) return false;
+      continue;
+    }
+    const double t = -fa / df;
+    if (df > 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+    if (t1 - t0 <= 0) return false;
+  }
+  const Vec3 start = a + t0 * d, end = a + t1 * d;
+  a = start;
+  b = end;
+  return (b - a).norm() > tolerance;
+}
+
+// Does the line through a-b pass through the piece's interior (vertices on both sides by more than
+// tolerance), within the segment's extent?
+bool crosses(const Polygon& piece, const Vec3& a, const Vec3& b, const Vec3& side, const Vec3& normal,
+             double tolerance) {
+  bool plus = false, minus = false;
+  for (const Vec3& v : piece) {
+    const double f = (v - a).dot(side);
+    plus = plus || f > tolerance;
+    minus = minus || f < -tolerance;
+  }
+  if (!plus || !minus) return false;
+  Vec3 s = a, e = b;
+  return clipToInterior(s, e, piece, normal, tolerance);
+}
+
+}  // namespace
+
+std::vector<std::pair<Vec3, Vec3>> contactSegments(const Scene& scene, int index, double tolerance) {
+  const Patch& patch = scene.patches[static_cast<std::size_t>(index)];
+  const Vec3& n = patch.normal;
+  const Vec3& o = patch.vertices.front();
+  Eigen::AlignedBox3d box;
+  for (const Vec3& v : patch.vertices) box.extend(v);
+  box.min().array() -= tolerance;
+  box.max().array() += tolerance;
+  std::vector<std::pair<Vec3, Vec3>> segments;
+  for (std::size_t q = 0; q < scene.patches.size(); ++q) {
+    const Patch& other = scene.patches[q];
+    if (static_cast<int>(q) == index || std::abs(other.normal.dot(n)) > 0.999) continue;
+    for (std::size_t k = 0; k < other.vertices.size(); ++k) {
+      Vec3 a = other.vertices[k], b = other.vertices[(k + 1) % other.vertices.size()];
+      if (std::abs((a - o).dot(n)) > tolerance || std::abs((b - o).dot(n)) > tolerance) continue;
+      Eigen::AlignedBox3d edge(a.cwiseMin(b), a.cwiseMax(b));
+      if (!box.intersects(edge)) continue;
+      // Onto the plane exactly, then to the part strictly inside the patch.
+      a -= (a - o).dot(n) * n;
+      b -= (b - o).dot(n) * n;
+      if (!clipToInterior(a, b, patch.vertices, n, tolerance)) continue;
+      const bool known = std::any_of(segments.begin(), segments.end(), [&](const auto& s) {
+        return ((s.first - a).norm() < tolerance && (s.second - b).norm() < tolerance) ||
+               ((s.first - b).norm() < tolerance && (s.second - a).norm() < tolerance);
+      });
+      if (!known) segments.emplace_back(a, b);
+    }
+  }
+  return segments;
+}
+
+std::vector<Polygon> cutAtContacts(const Scene& scene, int index, double tolerance) {
+  const Patch& patch = scene.patches[static_cast<std::size_t>(index)];
+  std::vector<Polygon> pieces{patch.vertices};
+  for (const auto& [a, b] : contactSegments(scene, index, tolerance)) {
+    const Vec3 side = patch.normal.cross(b - a).normalized();
+    std::vector<Polygon> next;
+    for (Polygon& piece : pieces) {
+      if (!crosses(piece, a, b, side, patch.normal, tolerance)) {
+        next.push_back(std::move(piece));
+        continue;
+      }
+      for (const Vec3& s : {side, Vec3(-side)}) {
+        Polygon part = keepSide(piece, a, s);
+        if (part.size() >= 3) next.push_back(std::move(part));
+      }
+    }
+    pieces = std::move(next);
+  }
+  return pieces;
+}
+
+}  // namespace rt
