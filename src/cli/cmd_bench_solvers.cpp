@@ -52,7 +52,7 @@ SolverOptions optionsFor(const std::string& name, std::size_t n, const BenchArgu
     o.residualEvery = static_cast<int>(n);  // an O(n^2) residual per O(n) shot would dominate the timing
   }
   if (name == "progressive") o.ambient = true;
-  if (name == "stochastic-jacobi") o.tolerance = 1e-8;
+  if (name == "stochastic-jacobi" || name == "local-lines") o.tolerance = 1e-8;
   if (name == "random-walk") {
     o.tolerance = 1e-4;  // relative standard error
     o.maxIterations = 60;

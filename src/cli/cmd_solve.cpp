@@ -33,6 +33,7 @@ struct SolveArguments {
   double tolerance = 1e-6;
   int maxIterations = 0;  // automatic
   std::uint64_t seed = 1;
+  int raysPerIteration = 0;  // stochastic solvers; 0 = automatic
   int resolution = 128;
   int samples = 16;
   std::string output;
@@ -124,6 +125,7 @@ SolverOptions solverOptions(const SolveArguments& a) {
   options.tolerance = a.tolerance;
   options.maxIterations = a.maxIterations;
   options.seed = a.seed;
+  options.raysPerIteration = a.raysPerIteration;
   options.ambient = a.ambient;
   options.recordHistory = false;
   return options;
@@ -137,12 +139,30 @@ void printIteration(const IterationRecord& r) {
 
 // --no-matrix: the shooting solvers ask for the shooter's row of F when it shoots; nothing n x n is stored.
 const char* noMatrixProblem(const std::string& solverName, const std::string& formFactors) {
+  if (!solverNeedsMatrix(solverName)) return nullptr;  // it traces rays: there is no matrix anyway
   if (solverName != "southwell" && solverName != "progressive")
     return "--no-matrix needs a shooting solver: --solver southwell or --solver progressive";
   const auto methods = rowProviderMethods();
   if (std::find(methods.begin(), methods.end(), formFactors) == methods.end())
     return "--no-matrix computes rows at the shooter: --method hemicube or --method raycast";
   return nullptr;
+}
+
+// A solver that traces its own rays (local-lines): no form factor is computed or stored.
+void runWithoutFormFactors(const SolveArguments& a, const Scene& scene, const Mesh& mesh,
+                           const std::string& name, ProgressLine& progress) {
+  std::cerr << "form factors: none (" << name << " traces rays through the " << mesh.size()
+            << " elements; no matrix stored)\n";
+  const SolveOutcome outcome =
+      solveRadiosity(RadiositySystem::fromGeometry(mesh), name, solverOptions(a), false, progress,
+                     a.verbose ? std::function<void(const IterationRecord&)>(printIteration)
+                               : std::function<void(const IterationRecord&)>());
+  progress.finish();
+  std::cerr << "solve (" << name << "): " << toString(outcome.status) << " after " << outcome.iterations
+            << " " << (outcome.iterations == 1 ? "iteration" : "iterations") << ", " << outcome.rays
+            << " rays, unshot residual " << outcome.error << ", relative standard error "
+            << outcome.standardError << "\n";
+  finish(a, scene, mesh, outcome.status, outcome.error, outcome.iterations, outcome.B);
 }
 
 void run(const SolveArguments& a) {
@@ -165,6 +185,7 @@ void run(const SolveArguments& a) {
   ffOptions.samples = a.samples;
   ffOptions.seed = a.seed;
   const std::string name = solverName.empty() ? chooseSolver(mesh.size()) : solverName;
+  if (!solverNeedsMatrix(name)) return runWithoutFormFactors(a, scene, mesh, name, progress);
   if (a.noMatrix) {
     RadiositySystem system;
     system.reflectance = mesh.reflectance;
@@ -232,6 +253,7 @@ void addSolveCommand(CLI::App& app) {
   addDeprecatedAlias(*command, "--max-iterations",
                      addSettingOption(*command, "iterations", a->maxIterations));
   addSettingOption(*command, "seed", a->seed);
+  addSettingOption(*command, "rays-per-iteration", a->raysPerIteration);
   addSettingOption(*command, "resolution", a->resolution);
   addSettingOption(*command, "samples", a->samples);
   command->add_flag("--ambient", a->ambient, "progressive: show B plus the ambient term");

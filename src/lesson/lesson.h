@@ -97,8 +97,9 @@ struct StepParameters {
   std::optional<int> iterations;     // maximum iterations
   std::optional<double> tolerance;
   std::optional<double> relaxation;
-  bool ambient = false;       // progressive refinement with the ambient term
-  int bounces = 6;            // bounces stage
+  std::optional<int> raysPerIteration;  // stochastic solvers: rays of the first iteration
+  bool ambient = false;                 // progressive refinement with the ambient term
+  int bounces = 6;                      // bounces stage
   double ambientLight = 0.0;  // local stage: the constant ambient radiosity (0 = the classic estimate)
   std::map<std::string, Rgb> reflectance;  // surface name -> reflectance override
   double lightScale = 1.0;                 // multiplies every emission

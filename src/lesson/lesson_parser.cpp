@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "core/solvers/solver.h"
 #include "lesson/placeholders.h"
 #include "lesson/step_keys.h"
 #include "lesson/value_parsing.h"
@@ -337,8 +338,7 @@ const std::vector<std::string>& knownMethods() {
 }
 
 const std::vector<std::string>& knownSolvers() {
-  static const std::vector<std::string> solvers{"direct",      "jacobi",  "gauss-seidel",      "southwell",
-                                                "progressive", "bounces", "stochastic-jacobi", "random-walk"};
+  static const std::vector<std::string> solvers = solverNames();  // the registry's table
   return solvers;
 }
 

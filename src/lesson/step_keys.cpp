@@ -198,6 +198,20 @@ std::vector<StepKey> makeTable() {
        .step = 0.05,
        .stages = solving,
        .slot = &P::relaxation});
+  add({.name = "rays-per-iteration",
+       .type = KeyType::Int,
+       .min = 0,
+       .max = 2000000000,
+       .defaultText = "0",
+       .label = "Rays per iteration",
+       .tooltip = "Stochastic solvers: the rays (or walks) of the first iteration; later ones get fewer, in "
+                  "proportion to the power left to shoot. Noise falls like 1/sqrt(rays). 0 is automatic: 100 "
+                  "per element (stochastic-jacobi, random-walk) or 1000 (local-lines).",
+       .control = true,
+       .step = 100000,
+       .zeroText = "automatic",
+       .stages = solving,
+       .slot = &P::raysPerIteration});
   add({.name = "ambient",
        .type = KeyType::Bool,
        .defaultText = "false",

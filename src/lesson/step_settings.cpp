@@ -46,6 +46,7 @@ SolverOptions solverOptionsFor(const StepParameters& p) {
   if (p.tolerance) o.tolerance = *p.tolerance;
   if (p.iterations) o.maxIterations = *p.iterations;
   if (p.relaxation) o.relaxation = *p.relaxation;
+  if (p.raysPerIteration) o.raysPerIteration = *p.raysPerIteration;
   if (p.seed) o.seed = *p.seed;
   o.ambient = p.ambient;
   return o;

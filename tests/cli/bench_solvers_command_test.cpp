@@ -65,7 +65,7 @@ TEST(BenchSolversCommand, TableHasEverySolverAndTheDeterministicOnesReachTheDire
     bySolver[rows[r][0]].push_back(rows[r]);
   }
   for (const std::string name : {"direct", "jacobi", "gauss-seidel", "southwell", "progressive", "bounces",
-                                 "stochastic-jacobi", "random-walk"}) {
+                                 "stochastic-jacobi", "random-walk", "local-lines"}) {
     ASSERT_TRUE(bySolver.count(name)) << name;
     const auto& samples = bySolver[name];
     for (std::size_t k = 0; k < samples.size(); ++k) {
@@ -73,7 +73,8 @@ TEST(BenchSolversCommand, TableHasEverySolverAndTheDeterministicOnesReachTheDire
       EXPECT_TRUE(std::isfinite(std::stod(samples[k][4]))) << name;
     }
     const double finalError = std::stod(samples.back()[4]);
-    const bool stochastic = name == std::string("stochastic-jacobi") || name == std::string("random-walk");
+    const bool stochastic = name == std::string("stochastic-jacobi") || name == std::string("random-walk") ||
+                            name == std::string("local-lines");
     EXPECT_LT(finalError, stochastic ? 0.05 : 1e-8) << name;
     if (stochastic) {
       EXPECT_GT(std::stol(samples.back()[3]), 0) << name << ": rays are counted";

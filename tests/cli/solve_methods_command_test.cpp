@@ -37,7 +37,7 @@ class SolveMethod : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SolveMethod, FurnaceCubeByName) {
   const std::string name = GetParam();
-  const bool stochastic = name == "stochastic-jacobi" || name == "random-walk";
+  const bool stochastic = name == "stochastic-jacobi" || name == "random-walk" || name == "local-lines";
   const std::string out = scratchDir("solve-method-" + name) + "/B.csv";
   std::string log;
   ASSERT_EQ(runCommand(furnace("--no-subdivide --method " + name + " --seed 7 --tolerance " +
@@ -72,7 +72,7 @@ TEST_P(SolveMethod, FurnaceCubeByName) {
 
 INSTANTIATE_TEST_SUITE_P(AllSolvers, SolveMethod,
                          ::testing::Values("direct", "jacobi", "gauss-seidel", "southwell", "progressive",
-                                           "bounces", "stochastic-jacobi", "random-walk"),
+                                           "bounces", "stochastic-jacobi", "random-walk", "local-lines"),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            std::string name = info.param;
                            for (char& c : name)

@@ -16,7 +16,7 @@ namespace rt {
 namespace {
 
 bool isStochastic(const std::string& name) {
-  return name == "stochastic-jacobi" || name == "random-walk";
+  return name == "stochastic-jacobi" || name == "random-walk" || name == "local-lines";
 }
 
 // Options under which each solver should reach the direct solution on a small system.
@@ -24,7 +24,7 @@ SolverOptions convergingOptions(const std::string& name) {
   SolverOptions o;
   o.tolerance = 1e-12;
   o.maxIterations = 100000;
-  if (name == "stochastic-jacobi") {
+  if (name == "stochastic-jacobi" || name == "local-lines") {
     o.tolerance = 1e-9;
     o.raysPerIteration = 200000;
   }
@@ -51,6 +51,12 @@ TEST_P(SolverContract, ConvergesToDirectSolution) {
     const test::OwnedSystem s = make();
     const RgbField reference = directSolution(s.system);
     auto solver = makeSolver(GetParam());
+    if (!test::canSolve(GetParam(), s.system)) {
+      // A solver that traces rays cannot run on a matrix alone, and says so.
+      solver->compute(s.system).solve();
+      EXPECT_EQ(solver->info(), SolverStatus::InvalidInput);
+      continue;
+    }
     EXPECT_EQ(solver->name(), GetParam());
     solver->setOptions(convergingOptions(GetParam()));
     const RgbField B = solver->compute(s.system).solve();
@@ -175,7 +181,10 @@ INSTANTIATE_TEST_SUITE_P(AllSolvers, SolverContract, ::testing::ValuesIn(solverN
                          });
 
 TEST(SolverRegistry, KnowsEveryMethodAndRejectsOthers) {
-  EXPECT_EQ(solverNames().size(), 8u);
+  EXPECT_EQ(solverNames().size(), 9u);
+  EXPECT_FALSE(solverNeedsMatrix("local-lines"));
+  EXPECT_TRUE(solverNeedsMatrix("stochastic-jacobi"));
+  EXPECT_TRUE(solverNeedsMatrix("southwell"));
   for (const std::string& name : solverNames()) EXPECT_EQ(makeSolver(name)->name(), name);
   try {
     makeSolver("conjugate-gradient");

@@ -15,7 +15,7 @@ namespace rt {
 namespace {
 
 bool isStochastic(const std::string& name) {
-  return name == "stochastic-jacobi" || name == "random-walk";
+  return name == "stochastic-jacobi" || name == "random-walk" || name == "local-lines";
 }
 
 class Furnace : public ::testing::TestWithParam<std::tuple<std::string, double>> {};
@@ -30,7 +30,7 @@ TEST_P(Furnace, ReachesEOverOneMinusRho) {
   o.recordHistory = false;
   o.tolerance = 1e-12;
   o.maxIterations = 200000;
-  if (name == "stochastic-jacobi") {
+  if (name == "stochastic-jacobi" || name == "local-lines") {
     o.tolerance = 1e-6;
     // Rays per iteration scale with the unshot power, so the total is about budget / (1 - rho).
     o.raysPerIteration = rho >= 0.99 ? 2000 : 20000;

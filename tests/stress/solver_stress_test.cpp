@@ -38,6 +38,7 @@ TEST(SolverStress, ScalesOfEmissionAndLengthGiveTheSameAnswerUpToScale) {
   RgbField reference;
   ASSERT_EQ(directSolve(base.system, reference, {}), SolverStatus::Success);
   for (const std::string& name : solverNames()) {
+    if (!test::canSolve(name, base.system)) continue;  // a random enclosure has no geometry to trace
     SolverOptions o;
     o.tolerance = name == "random-walk" ? 1e-2 : 1e-11;
     o.maxIterations = name == "random-walk" ? 3 : 100000;

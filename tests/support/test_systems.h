@@ -1,13 +1,19 @@
-// Small radiosity systems with known form factors, built without geometry: the closed unit cube (exact F),
-// the same cube with its top removed (an open box), two facing plates that see only each other, and random
-// reciprocal enclosures of any size. Header-only so that core and stress tests share it.
+// Small radiosity systems with known form factors: the closed unit cube (exact F), the same cube with its top
+// removed (an open box), two facing plates that see only each other, and random reciprocal enclosures of any
+// size. The cubes carry their geometry too (solvers that trace rays need it); the plates and the random
+// enclosures have none. Header-only so that core and stress tests share it.
 #pragma once
 
 #include <Eigen/Core>
 #include <memory>
 #include <random>
 
+#include <string>
+#include <vector>
+
+#include "core/mesh.h"
 #include "core/solvers/radiosity_system.h"
+#include "core/solvers/solver.h"
 
 namespace rt::test {
 
@@ -24,9 +30,43 @@ inline FormFactorMatrix cubeFormFactors() {
   return F;
 }
 
-// A system that owns its F (RadiositySystem only points to one).
+// The faces of the unit cube as one element each, in the order of cubeFormFactors, facing inward
+// (counter-clockwise seen from inside).
+inline std::unique_ptr<Mesh> cubeMesh(const std::vector<int>& faces = {0, 1, 2, 3, 4, 5}) {
+  auto mesh = std::make_unique<Mesh>();
+  for (const int face : faces) {
+    const int axis = face / 2, u = (axis + 1) % 3, v = (axis + 2) % 3;
+    Vec3 inward = Vec3::Zero();
+    inward(axis) = face % 2 == 0 ? 1.0 : -1.0;
+    Element e;
+    e.patch = face;
+    const int corners[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (const auto& corner : corners) {
+      Vec3 p = Vec3::Zero();
+      p(axis) = face % 2;
+      p(u) = corner[0];
+      p(v) = corner[1];
+      e.vertices.push_back(static_cast<int>(mesh->vertices.size()));
+      mesh->vertices.push_back(p);
+    }
+    const Vec3 a = mesh->vertices[e.vertices[0]], b = mesh->vertices[e.vertices[1]],
+               c = mesh->vertices[e.vertices[2]];
+    if ((b - a).cross(c - a).dot(inward) < 0) std::swap(e.vertices[1], e.vertices[3]);
+    e.normal = inward;
+    e.centroid = Vec3::Constant(0.5) - 0.5 * inward;
+    e.area = 1.0;
+    mesh->elements.push_back(e);
+  }
+  mesh->vertexElements.resize(mesh->vertices.size());
+  for (std::size_t i = 0; i < mesh->elements.size(); ++i)
+    for (const int v : mesh->elements[i].vertices) mesh->vertexElements[v].push_back(static_cast<int>(i));
+  return mesh;
+}
+
+// A system that owns its F and, when it has one, its geometry (RadiositySystem only points to them).
 struct OwnedSystem {
   std::unique_ptr<FormFactorMatrix> F;
+  std::unique_ptr<Mesh> mesh;
   RadiositySystem system;
   OwnedSystem() = default;
   OwnedSystem(OwnedSystem&&) = default;
@@ -35,12 +75,22 @@ struct OwnedSystem {
     F = std::make_unique<FormFactorMatrix>(std::move(matrix));
     system.F = F.get();
   }
+  void setMesh(std::unique_ptr<Mesh> geometry) {
+    mesh = std::move(geometry);
+    system.mesh = mesh.get();
+  }
 };
+
+// Whether solver `name` can run on `system`: a solver that traces rays needs its geometry.
+inline bool canSolve(const std::string& name, const RadiositySystem& system) {
+  return solverInfo(name).input != SolverInput::Geometry || system.mesh != nullptr;
+}
 
 // Closed unit cube, uniform reflectance and emission on every face: B = E / (1 - rho) exactly (the furnace).
 inline OwnedSystem furnaceCube(double rho, double emission = 1.0) {
   OwnedSystem s;
   s.set(cubeFormFactors());
+  s.setMesh(cubeMesh());
   s.system.areas = Eigen::VectorXd::Ones(6);
   s.system.reflectance = RgbField::Constant(6, 3, rho);
   s.system.emission = RgbField::Constant(6, 3, emission);
@@ -51,6 +101,7 @@ inline OwnedSystem furnaceCube(double rho, double emission = 1.0) {
 inline OwnedSystem colouredCube() {
   OwnedSystem s;
   s.set(cubeFormFactors());
+  s.setMesh(cubeMesh());
   s.system.areas = Eigen::VectorXd::Ones(6);
   s.system.reflectance.resize(6, 3);
   s.system.reflectance << 0.63, 0.06, 0.04,  // -x red
@@ -80,6 +131,7 @@ inline OwnedSystem openBox() {
   }
   s.system.reflectance.row(2) << 0.3, 0.3, 0.3;  // the +y face is no longer black here
   s.set(F);
+  s.setMesh(cubeMesh({0, 1, 3, 4, 5}));
   return s;
 }
 

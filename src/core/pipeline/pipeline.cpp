@@ -30,6 +30,8 @@ SolveOutcome solveRadiosity(const RadiositySystem& system, const std::string& re
   solver->setProgress(&progress);
   solver->setObserver([&out, &observer](const IterationRecord& r) {
     out.trace.push_back({r.iteration, r.residual, r.seconds});
+    out.standardError = r.standardError;
+    out.rays = r.rays;
     if (observer) observer(r);
   });
   progress.report(0.0, "solve (" + out.solverName + ")");
@@ -41,7 +43,9 @@ SolveOutcome solveRadiosity(const RadiositySystem& system, const std::string& re
   out.status = solver->info();
   out.iterations = solver->iterations();
   out.error = solver->error();
-  out.residual = system.relativeResidual(out.B);
+  out.standardErrors = solver->standardError();
+  // Without F the exact residual cannot be computed; the solver's own measure stands in.
+  out.residual = system.F ? system.relativeResidual(out.B) : out.error;
   return out;
 }
 
@@ -68,6 +72,21 @@ PipelineOutput Pipeline::run(const Scene& input, const PipelineSettings& setting
   auto mesh = std::make_shared<Mesh>(buildMesh(*scene, settings.mesh));
   out.mesh = mesh;
   if (progress.cancelled()) throw Cancelled();
+  const std::string solverName = settings.solver.empty() ? chooseSolver(mesh->size()) : settings.solver;
+  bool needsMatrix = true;
+  try {
+    needsMatrix = solverNeedsMatrix(solverName);
+  } catch (const std::invalid_argument& e) {
+    out.note = std::string(e.what()) + ": showing direct light plus an ambient estimate";
+    out.solve.B = ambientEstimate(*mesh);
+    return out;
+  }
+  if (!needsMatrix) {
+    // The solver traces its own rays through the mesh: no form factor is computed, nothing n x n is stored.
+    out.solve = solveRadiosity(RadiositySystem::fromGeometry(*mesh), solverName, settings.solverOptions,
+                               settings.recordHistory, progress);
+    return out;
+  }
   try {
     auto cached = formFactors(*mesh, settings.method, settings.formFactors, progress, &out.formFactorsReused);
     out.F = std::shared_ptr<const FormFactorMatrix>(cached, &cached->F);

@@ -32,15 +32,21 @@ struct SolveOutcome {
   SolverStatus status = SolverStatus::InvalidInput;
   int iterations = 0;
   double error = 0;     // the solver's own final error (its stopping measure)
-  double residual = 0;  // relative residual ||K B - E|| / ||E|| of the returned B
+  double residual = 0;  // relative residual ||K B - E|| / ||E|| of the returned B (without F: error)
   double seconds = 0;
+  // Stochastic solvers: the per-element standard error of B (n x 3; empty otherwise), its norm relative to
+  // ||B||, and the rays used.
+  RgbField standardErrors;
+  double standardError = 0;
+  long rays = 0;
 };
 
 struct PipelineOutput {
   std::shared_ptr<const Scene> scene;  // with the overrides applied
   std::shared_ptr<const Mesh> mesh;
-  std::shared_ptr<const FormFactorMatrix> F;  // null when the method is not in this build
-  std::string formFactorMethod;               // the method that computed F (empty without F)
+  // null when the method is not in this build, or when the solver reads no F (solverNeedsMatrix)
+  std::shared_ptr<const FormFactorMatrix> F;
+  std::string formFactorMethod;  // the method that computed F (empty without F)
   FormFactorStats formFactorStats;
   bool formFactorsReused = false;
   SolveOutcome solve;
@@ -52,7 +58,7 @@ class Pipeline {
   explicit Pipeline(std::size_t cachedMatrices = 4);
 
   // May throw Cancelled and InputError. A form-factor method missing from this build leaves F null, and B
-  // the ambient estimate, with a note.
+  // the ambient estimate, with a note. A solver that traces rays itself (local-lines) gets no F at all.
   PipelineOutput run(const Scene& scene, const PipelineSettings& settings, Progress& progress = noProgress());
 
   // F of `method` for this mesh, from the cache when the same geometry, method and options were computed

@@ -1,10 +1,18 @@
 #include "core/solvers/radiosity_system.h"
 
+#include <limits>
+
 namespace rt {
 
 RadiositySystem RadiositySystem::fromMesh(const Mesh& mesh, const FormFactorMatrix& F) {
-  RadiositySystem s;
+  RadiositySystem s = fromGeometry(mesh);
   s.F = &F;
+  return s;
+}
+
+RadiositySystem RadiositySystem::fromGeometry(const Mesh& mesh) {
+  RadiositySystem s;
+  s.mesh = &mesh;
   s.reflectance = mesh.reflectance;
   s.emission = mesh.emission;
   s.areas = mesh.areas();
@@ -12,6 +20,7 @@ RadiositySystem RadiositySystem::fromMesh(const Mesh& mesh, const FormFactorMatr
 }
 
 double RadiositySystem::relativeResidual(const RgbField& B) const {
+  if (!F) return std::numeric_limits<double>::quiet_NaN();
   const RgbField KB = B - (reflectance.array() * ((*F) * B).array()).matrix();
   const double e = emission.norm();
   const double r = (KB - emission).norm();

@@ -103,8 +103,27 @@ class Solver {
   RgbField standardError_;
 };
 
-// Registry by name: direct, jacobi, gauss-seidel, southwell, progressive, bounces, stochastic-jacobi,
-// random-walk.
+// What a solver needs besides rho, E and the areas: the stored matrix F, F or its rows on demand (the
+// shooting solvers with a row provider), or the mesh itself to trace rays through (system.mesh; no form
+// factor at all). The pipeline computes F only for the solvers that read it.
+enum class SolverInput { Matrix, MatrixOrRows, Geometry };
+
+// One row per solver: the registry's table. solverNames(), the lessons' choices, the CLI's --solver and the
+// app's panel come from it; `settings` are the step keys (lesson/step_keys.h) the solver reads.
+struct SolverInfo {
+  std::string name;
+  SolverInput input = SolverInput::Matrix;
+  std::string summary;
+  std::vector<std::string> settings;
+};
+const std::vector<SolverInfo>& solverTable();
+// The row of `name`; throws std::invalid_argument naming the known solvers.
+const SolverInfo& solverInfo(const std::string& name);
+// False for a solver that never reads F, so that nothing n x n is computed for it.
+bool solverNeedsMatrix(const std::string& name);
+
+// Registry by name (solverTable()): direct, jacobi, gauss-seidel, southwell, progressive, bounces,
+// stochastic-jacobi, random-walk, local-lines.
 std::unique_ptr<Solver> makeSolver(const std::string& name);  // throws std::invalid_argument
 std::vector<std::string> solverNames();
 // The solver used when none is named: a direct solve for small n, an iterative one otherwise.

@@ -3,14 +3,62 @@
 #include "core/solvers/bounces_solver.h"
 #include "core/solvers/direct_solver.h"
 #include "core/solvers/gathering_solvers.h"
+#include "core/solvers/local_lines_solver.h"
 #include "core/solvers/shooting_solvers.h"
 #include "core/solvers/solver.h"
 #include "core/solvers/stochastic_solvers.h"
 
 namespace rt {
 
+const std::vector<SolverInfo>& solverTable() {
+  using enum SolverInput;
+  static const std::vector<SolverInfo> table{
+      {"direct", Matrix, "LU of K = I - rho F, exact to rounding; O(n^3)", {}},
+      {"jacobi", Matrix, "every element gathers from the previous sweep", {"tolerance", "iterations"}},
+      {"gauss-seidel",
+       Matrix,
+       "every element gathers, using this sweep's values at once (SOR with relaxation)",
+       {"tolerance", "iterations", "relaxation"}},
+      {"southwell",
+       MatrixOrRows,
+       "the element with most unshot power shoots it",
+       {"tolerance", "iterations"}},
+      {"progressive",
+       MatrixOrRows,
+       "Southwell shooting, optionally showing the unshot light as an ambient term",
+       {"tolerance", "iterations", "ambient"}},
+      {"bounces", Matrix, "one more bounce of the Neumann series per iteration", {"tolerance", "iterations"}},
+      {"stochastic-jacobi",
+       Matrix,
+       "shoots the unshot power with random lines drawn from the rows of F",
+       {"tolerance", "iterations", "seed", "rays-per-iteration"}},
+      {"random-walk",
+       Matrix,
+       "random walks from the emitters, jumping by the rows of F",
+       {"tolerance", "iterations", "seed", "rays-per-iteration"}},
+      {"local-lines",
+       Geometry,
+       "shoots the unshot power with rays traced through the scene; stores no form factor, memory O(n)",
+       {"tolerance", "iterations", "seed", "rays-per-iteration"}},
+  };
+  return table;
+}
+
+const SolverInfo& solverInfo(const std::string& name) {
+  for (const SolverInfo& info : solverTable())
+    if (info.name == name) return info;
+  std::string known;
+  for (const std::string& n : solverNames()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown solver '" + name + "' (known: " + known + ")");
+}
+
+bool solverNeedsMatrix(const std::string& name) {
+  return solverInfo(name).input != SolverInput::Geometry;
+}
+
 std::unique_ptr<Solver> makeSolver(const std::string& name) {
   using solver_detail::AlgorithmSolver;
+  solverInfo(name);  // an unknown name throws, naming the known ones
   if (name == "direct") return std::make_unique<AlgorithmSolver>(name, &directSolve);
   if (name == "jacobi") return std::make_unique<AlgorithmSolver>(name, &jacobi);
   if (name == "gauss-seidel") return std::make_unique<AlgorithmSolver>(name, &gaussSeidel);
@@ -19,14 +67,14 @@ std::unique_ptr<Solver> makeSolver(const std::string& name) {
   if (name == "bounces") return std::make_unique<BouncesSolver>();
   if (name == "stochastic-jacobi") return std::make_unique<StochasticSolver>(name, &stochasticJacobi);
   if (name == "random-walk") return std::make_unique<StochasticSolver>(name, &randomWalk);
-  std::string known;
-  for (const std::string& n : solverNames()) known += (known.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("unknown solver '" + name + "' (known: " + known + ")");
+  if (name == "local-lines") return std::make_unique<StochasticSolver>(name, &localLines);
+  throw std::logic_error("solver '" + name + "' is in the table but has no implementation");
 }
 
 std::vector<std::string> solverNames() {
-  return {"direct",      "jacobi",  "gauss-seidel",      "southwell",
-          "progressive", "bounces", "stochastic-jacobi", "random-walk"};
+  std::vector<std::string> names;
+  for (const SolverInfo& info : solverTable()) names.push_back(info.name);
+  return names;
 }
 
 // LU costs O(n^3) but is exact and, up to a few thousand elements, faster than waiting for an iteration to
