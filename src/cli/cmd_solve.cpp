@@ -184,7 +184,15 @@ void run(const SolveArguments& a) {
   ffOptions.hemicubeResolution = a.resolution;
   ffOptions.samples = a.samples;
   ffOptions.seed = a.seed;
-  const std::string name = solverName.empty() ? chooseSolver(mesh.size()) : solverName;
+  std::string name = solverName;
+  if (name.empty() && !a.formFactorsGiven) {
+    const AutomaticSolve chosen = chooseAutomaticSolve(mesh.size());
+    std::cerr << "solver: none named: " << chosen.solver << " for " << chosen.why
+              << " (--solver and --method: your own)\n";
+    name = chosen.solver;
+  } else if (name.empty()) {
+    name = chooseSolver(mesh.size());
+  }
   if (!solverNeedsMatrix(name)) return runWithoutFormFactors(a, scene, mesh, name, progress);
   if (a.noMatrix) {
     RadiositySystem system;
@@ -234,7 +242,8 @@ void addSolveCommand(CLI::App& app) {
       app.add_subcommand("solve", "Solve the radiosity system of a scene; write B.csv and/or an image");
   command->add_option("scene", a->scene, "Scene file (.json or .obj)")->required()->check(CLI::ExistingFile);
   addSettingOption(*command, "solver", a->solver)
-      ->default_str("direct for small scenes, gauss-seidel otherwise");
+      ->default_str(
+          "by size: direct below 3,000 elements, local-lines above (gauss-seidel when --method is given)");
   auto* formFactors =
       addSettingOption(*command, "method", a->formFactors)->default_str(defaultFormFactorMethod());
   // It used to name the solver: a solver's name is still taken (with a note), anything else is checked below.

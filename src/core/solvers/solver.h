@@ -129,4 +129,13 @@ std::vector<std::string> solverNames();
 // The solver used when none is named: a direct solve for small n, an iterative one otherwise.
 std::string chooseSolver(std::size_t n);
 
+// What `radiosity solve` runs when neither a solver nor a form-factor method is named: the way to about 1 %
+// error that is soonest at this size, with the reason and the accuracy to expect, for the reader to see.
+struct AutomaticSolve {
+  std::string solver;
+  bool formFactors = true;  // false: the solver traces its own rays, no F is computed
+  std::string why;
+};
+AutomaticSolve chooseAutomaticSolve(std::size_t n);
+
 }  // namespace rt
