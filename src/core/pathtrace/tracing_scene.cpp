@@ -6,6 +6,9 @@ namespace rt {
 
 TracingScene::TracingScene(const Scene& scene) : scene_(scene), mesh_(buildMesh(scene, MeshOptions{})) {
   rays_ = std::make_unique<RayScene>(mesh_);
+  patchElement_.assign(scene.patches.size(), -1);
+  for (std::size_t e = mesh_.size(); e-- > 0;)
+    patchElement_[static_cast<std::size_t>(mesh_.elements[e].patch)] = static_cast<int>(e);
   tolerance_ = 1e-6 * rays_->sceneSize();
   double total = 0;
   for (std::size_t e = 0; e < mesh_.size(); ++e) {

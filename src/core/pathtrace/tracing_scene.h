@@ -62,6 +62,8 @@ class TracingScene {
 
   // The patch of the scene behind element `element` of the tracing mesh.
   int patchOf(int element) const { return mesh_.elements[static_cast<std::size_t>(element)].patch; }
+  // An element of the tracing mesh on patch `patch` (its plane is what rays leaving the patch ignore).
+  int elementOf(int patch) const { return patchElement_[static_cast<std::size_t>(patch)]; }
 
  private:
   const Scene& scene_;
@@ -71,6 +73,7 @@ class TracingScene {
   std::vector<PolygonSampler> samplers_;
   std::vector<double> cumulative_;  // picking probabilities, cumulative
   std::vector<double> density_;     // per element
+  std::vector<int> patchElement_;   // per patch
   double tolerance_ = 0;
 };
 
