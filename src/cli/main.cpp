@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   rt::cli::addFormFactorsCommand(app);
   rt::cli::addSolveCommand(app);
   rt::cli::addIrradianceCommand(app);
+  rt::cli::addComparePtCommand(app);
   rt::cli::addMatrixCommand(app);
   rt::cli::addFigureCommand(app);
   rt::cli::addLessonCommand(app);

@@ -7,6 +7,7 @@
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/sampling.h"
+#include "core/pathtrace/path_tracer.h"
 
 namespace rt {
 namespace {
@@ -162,11 +163,21 @@ Rgb TwoPass::gather(const SurfacePoint& point, int element, const TwoPassOptions
 
 std::vector<PointEstimate> TwoPass::estimate(const std::vector<SurfacePoint>& points,
                                              const TwoPassOptions& options) const {
+  std::vector<int> elements(points.size());
+  tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t p) {
+    elements[p] = tracing_.locate({points[p].position, points[p].normal.normalized()});
+  });
+  return estimate(points, elements, options);
+}
+
+std::vector<PointEstimate> TwoPass::estimate(const std::vector<SurfacePoint>& points,
+                                             const std::vector<int>& elements,
+                                             const TwoPassOptions& options) const {
   std::vector<PointEstimate> out(points.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size()), [&](const auto& range) {
     for (std::size_t p = range.begin(); p != range.end(); ++p) {
       const SurfacePoint point{points[p].position, points[p].normal.normalized()};
-      const int element = tracing_.locate(point);
+      const int element = elements[p];
       Rgb directError, gatherError;
       const Rgb H =
           direct(point, element, options, p, directError) + gather(point, element, options, p, gatherError);
@@ -182,6 +193,26 @@ std::vector<PointEstimate> TwoPass::estimate(const std::vector<SurfacePoint>& po
     }
   });
   return out;
+}
+
+RgbImage TwoPass::render(const Camera& camera, int width, int height, const TwoPassOptions& options) const {
+  std::vector<SurfacePoint> points;
+  std::vector<int> elements;
+  std::vector<std::size_t> pixels;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const Vec3 direction = cameraRay(camera, width, height, x + 0.5, y + 0.5);
+      const RayHit hit = tracing_.rays().firstHit(camera.position, direction, -1);
+      if (hit.element < 0 || !hit.frontSide) continue;
+      points.push_back({camera.position + hit.distance * direction,
+                        tracing_.mesh().elements[static_cast<std::size_t>(hit.element)].normal});
+      elements.push_back(hit.element);
+      pixels.push_back(static_cast<std::size_t>(y) * width + x);
+    }
+  const std::vector<PointEstimate> estimates = estimate(points, elements, options);
+  RgbImage image(width, height);
+  for (std::size_t k = 0; k < points.size(); ++k) image.pixels[pixels[k]] = estimates[k].B;
+  return image;
 }
 
 }  // namespace rt

@@ -19,6 +19,7 @@
 #include "core/formfactor/formfactor_matrix.h"
 #include "core/formfactor/ray_scene.h"
 #include "core/formfactor/shaft_culling.h"
+#include "core/io/rgb_image.h"
 #include "core/pathtrace/estimate.h"
 #include "core/pathtrace/tracing_scene.h"
 
@@ -44,6 +45,13 @@ class TwoPass {
   // discretisation error is not in them). TBB parallel, deterministic for a seed.
   std::vector<PointEstimate> estimate(const std::vector<SurfacePoint>& points,
                                       const TwoPassOptions& options) const;
+  // The same for points whose elements of the tracing scene are known (-1: none).
+  std::vector<PointEstimate> estimate(const std::vector<SurfacePoint>& points,
+                                      const std::vector<int>& elements, const TwoPassOptions& options) const;
+
+  // The two-pass picture: per pixel, the point the pixel's centre ray reaches first, and B there (E + rho H,
+  // H by estimate() with `options`). Back sides and nothing are black.
+  RgbImage render(const Camera& camera, int width, int height, const TwoPassOptions& options) const;
 
   // The emitters' direct irradiance alone, with its standard error (zero where no ray was needed).
   Rgb direct(const SurfacePoint& point, int element, const TwoPassOptions& options, std::uint64_t index,
