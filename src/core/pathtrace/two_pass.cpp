@@ -10,32 +10,6 @@
 #include "core/pathtrace/path_tracer.h"
 
 namespace rt {
-namespace {
-
-// The fraction of each element that receives light at all: of 16 stratified points, those from which a ray
-// along the normal does not meet the back of a polygon (the inside of a block standing on the element). At
-// least 1/32, so that an element entirely under something keeps a finite value that no gather ray reaches.
-std::vector<double> liveFractions(const Mesh& mesh, const RayScene& rays) {
-  std::vector<double> live(mesh.size(), 1.0);
-  constexpr int kPoints = 16;
-  const StrataGrid grid(kPoints);
-  tbb::parallel_for(std::size_t(0), mesh.size(), [&](std::size_t e) {
-    const Polygon polygon = mesh.polygon(static_cast<int>(e));
-    const PolygonSampler sampler(polygon.data(), static_cast<int>(polygon.size()));
-    const Vec3& normal = mesh.elements[e].normal;
-    PairRandom random(0x5eed, e, 0);
-    int alive = 0;
-    for (int k = 0; k < kPoints; ++k) {
-      const Vec2 uv = grid.sample(k, random);
-      const RayHit hit = rays.firstHit(sampler.point(uv.x(), uv.y()), normal, static_cast<int>(e));
-      alive += hit.element < 0 || hit.frontSide;
-    }
-    live[e] = std::max(alive, 1) / static_cast<double>(kPoints);
-  });
-  return live;
-}
-
-}  // namespace
 
 TwoPass::TwoPass(const TracingScene& tracing, const Mesh& solution, const RgbField& B,
                  const FormFactorMatrix* F)
@@ -52,15 +26,12 @@ TwoPass::TwoPass(const TracingScene& tracing, const Mesh& solution, const RgbFie
   for (Eigen::Index l = 0; l < F->rows(); ++l)
     if ((solution.emission.row(l).array() > 0).any()) emitters.push_back(l);
   indirect_ = RgbField::Zero(F->rows(), 3);
-  const std::vector<double> live = liveFractions(solution, *solutionRays_);
   for (Eigen::Index i = 0; i < F->rows(); ++i) {
     Rgb direct = Rgb::Zero();
     for (Eigen::Index l : emitters) direct += (*F)(i, l) * solution.emission.row(l).transpose().array();
     for (int c = 0; c < 3; ++c) {
       const double rho = solution.reflectance(i, c);
-      if (rho > 0)
-        indirect_(i, c) =
-            ((B(i, c) - solution.emission(i, c)) / rho - direct(c)) / live[static_cast<std::size_t>(i)];
+      if (rho > 0) indirect_(i, c) = (B(i, c) - solution.emission(i, c)) / rho - direct(c);
     }
   }
 }
