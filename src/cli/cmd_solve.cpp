@@ -12,6 +12,7 @@
 #include "cli/setting_options.h"
 #include "cli/solution.h"
 #include "core/formfactor/formfactor_method.h"
+#include "core/io/ply_export.h"
 #include "core/io/scene_loader.h"
 #include "core/pipeline/pipeline.h"
 #include "core/refine/refine.h"
@@ -22,6 +23,7 @@
 #ifdef RT_HAVE_VIZ
 #include "viz/display_pipeline.h"
 #include "viz/scene_image.h"
+#include "viz/vertex_interpolation.h"
 #endif
 
 namespace rt::cli {
@@ -31,6 +33,7 @@ struct SolveArguments {
   std::string scene;
   SolutionArguments s;  // mesh, form factors, solver: shared with the commands built on a solution
   std::string output;
+  std::string ply;
   std::string image;
   int width = 1024, height = 1024;
   double exposure = 0.0;
@@ -81,6 +84,17 @@ void writeImage(const SolveArguments& a, const Scene& scene, const Mesh& mesh, c
 #endif
 }
 
+// The solved mesh for ParaView and Blender: per-vertex values as the viewer's smooth display computes them
+// when the visualisation library is built, each element's own value at its corners otherwise.
+void writePly(const Mesh& mesh, const RgbField& B, const std::string& path) {
+#ifdef RT_HAVE_VIZ
+  writeRadiosityPly(mesh, B, viz::smoothCornerValues(mesh, B).values, path);
+#else
+  writeRadiosityPly(mesh, B, flatCorners(mesh, B), path);
+#endif
+  std::cerr << "mesh with radiosity written to " << path << "\n";
+}
+
 // --mesh adaptive|discontinuity|hierarchical: the refining solvers build their own mesh and form factors.
 void runRefined(const SolveArguments& a, const Scene& scene) {
   RefineOptions options = a.refine;
@@ -94,11 +108,13 @@ void runRefined(const SolveArguments& a, const Scene& scene) {
     writeRadiosityCsv(scene, solution.mesh, solution.B, a.output);
     std::cerr << "radiosity written to " << a.output << "\n";
   }
+  if (!a.ply.empty()) writePly(solution.mesh, solution.B, a.ply);
   if (!a.image.empty()) writeImage(a, scene, solution.mesh, solution.B);
 }
 
 // The outputs of both ways of solving.
 void writeOutputs(const SolveArguments& a, const Scene& scene, const Mesh& mesh, const RgbField& B) {
+  if (!a.ply.empty()) writePly(mesh, B, a.ply);
   if (!a.output.empty()) {
     writeRadiosityCsv(scene, mesh, B, a.output);
     std::cerr << "radiosity written to " << a.output << "\n";
@@ -128,7 +144,7 @@ void checkStatus(const SolveArguments& a, SolverStatus status, double error, int
 }
 
 void run(const SolveArguments& a) {
-  checkOutputPaths({a.output, a.image});  // before the expensive part, not after it
+  checkOutputPaths({a.output, a.image, a.ply});  // before the expensive part, not after it
   const Scene scene = loadSceneReportingWarnings(a.scene);
   requireLight(scene);
   if (!a.refineMode.empty()) return runRefined(a, scene);
@@ -215,6 +231,10 @@ void addSolveCommand(CLI::App& app) {
   command->add_option("--output", a->output,
                       "Write B per element as CSV (element,patch,surface,area,B_r,B_g,B_b,x,y,z,nx,ny,nz: "
                       "the centroid and the unit normal)");
+  command->add_option(
+      "--ply", a->ply,
+      "Write the solved mesh as PLY (ParaView, Blender): B per face and per vertex (smooth), with "
+      "display colours");
   command->add_option("--image", a->image,
                       "Render the solved scene from its camera to a PNG (needs an X server)");
   command->add_option("--width", a->width, "Image width")->capture_default_str();

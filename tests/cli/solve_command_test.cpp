@@ -98,6 +98,48 @@ TEST(SolveCommand, ASceneWithoutMeshOptionsGetsAMeshAndSaysWhich) {
   EXPECT_EQ(readCsv(out).size(), 1u + 20u);
 }
 
+// The PLY export: a face per element with its B, a vertex per element corner; in the furnace every value
+// is 2.
+TEST(SolveCommand, PlyCarriesRadiosityPerFaceAndVertex) {
+  const std::string out = scratchDir("solve-ply") + "/mesh.ply";
+  std::string log;
+  ASSERT_EQ(runCommand(cliPath() + " solve " + sourcePath("scenes/furnace-cube.json") +
+                           " --subdivide 2 --ply " + out,
+                       &log),
+            0)
+      << log;
+  std::ifstream in(out);
+  std::string line;
+  std::vector<std::string> header;
+  while (std::getline(in, line) && line != "end_header") header.push_back(line);
+  EXPECT_EQ(header[0], "ply");
+  EXPECT_NE(std::find(header.begin(), header.end(), "element vertex 96"), header.end());
+  EXPECT_NE(std::find(header.begin(), header.end(), "element face 24"), header.end());
+  for (int v = 0; v < 96; ++v) {
+    double x, y, z, r, g, b;
+    int R, G, B;
+    in >> x >> y >> z >> r >> g >> b >> R >> G >> B;
+    ASSERT_TRUE(in) << "vertex " << v;
+    EXPECT_NEAR(r, 2.0, 1e-5);  // smooth or flat, a uniform field stays 2
+    EXPECT_EQ(R, 255);          // the brightest reflecting element is white
+  }
+  for (int f = 0; f < 24; ++f) {
+    int count;
+    in >> count;
+    ASSERT_EQ(count, 4) << "face " << f;
+    int index;
+    for (int k = 0; k < count; ++k) {
+      in >> index;
+      EXPECT_EQ(index, 4 * f + k);
+    }
+    double r, g, b;
+    int R, G, B;
+    in >> r >> g >> b >> R >> G >> B;
+    EXPECT_NEAR(r, 2.0, 1e-6);
+  }
+  EXPECT_TRUE(in);
+}
+
 TEST(SolveCommand, MissingSceneIsAClearError) {
   std::string log;
   EXPECT_NE(runCommand(cliPath() + " solve /nonexistent/scene.json", &log), 0);
