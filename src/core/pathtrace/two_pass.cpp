@@ -4,12 +4,40 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/sampling.h"
 #include "core/pathtrace/path_tracer.h"
 
 namespace rt {
+namespace {
+
+// The fraction of each element that receives light at all: of 16 stratified points, those from which a ray
+// along the normal does not meet the back of a polygon (the inside of a block standing on the element). The
+// element's B is an average that counts the rest as dark, and a gather ray can only reach the part that is
+// not: there the radiosity is B / fraction. At least 1/16.
+std::vector<double> receivingFractions(const Mesh& mesh, const RayScene& rays) {
+  std::vector<double> fractions(mesh.size(), 1.0);
+  constexpr int kPoints = 16;
+  const StrataGrid grid(kPoints);
+  tbb::parallel_for(std::size_t(0), mesh.size(), [&](std::size_t e) {
+    const Polygon polygon = mesh.polygon(static_cast<int>(e));
+    const PolygonSampler sampler(polygon.data(), static_cast<int>(polygon.size()));
+    const Vec3& normal = mesh.elements[e].normal;
+    PairRandom random(0x5eed, e, 0);
+    int receiving = 0;
+    for (int k = 0; k < kPoints; ++k) {
+      const Vec2 uv = grid.sample(k, random);
+      const RayHit hit = rays.firstHit(sampler.point(uv.x(), uv.y()), normal, static_cast<int>(e));
+      receiving += hit.element < 0 || hit.frontSide;
+    }
+    fractions[e] = std::max(receiving, 1) / static_cast<double>(kPoints);
+  });
+  return fractions;
+}
+
+}  // namespace
 
 TwoPass::TwoPass(const TracingScene& tracing, const Mesh& solution, const RgbField& B,
                  const FormFactorMatrix* F)
@@ -21,6 +49,7 @@ TwoPass::TwoPass(const TracingScene& tracing, const Mesh& solution, const RgbFie
       patchElement_(tracing.scene().patches.size(), -1) {
   for (std::size_t e = solution.size(); e-- > 0;)
     patchElement_[static_cast<std::size_t>(solution.elements[e].patch)] = static_cast<int>(e);
+  receiving_ = receivingFractions(solution, *solutionRays_);
   if (!F || F->rows() != static_cast<Eigen::Index>(solution.size())) return;
   std::vector<Eigen::Index> emitters;
   for (Eigen::Index l = 0; l < F->rows(); ++l)
@@ -123,13 +152,32 @@ Rgb TwoPass::gather(const SurfacePoint& point, int element, const TwoPassOptions
       const Element& hitElement = solution_.elements[static_cast<std::size_t>(hit.element)];
       const Vec3 y = origin + hit.distance * direction;
       const Rgb direct = directSample(y, hitElement.normal, tracing_.elementOf(hitElement.patch), random);
-      sum += solution_.reflectance.row(row).transpose().array() *
-             (direct + indirect_.row(row).transpose().array());
+      // A hit closer than a few element sizes sees the element's flat indirect light at a large solid angle,
+      // where it is worst (a block's lowest elements seen from the floor beside it): gather that part anew at
+      // the hit point, from the solution one bounce further on.
+      const bool near = hit.distance < options.nearFactor * std::sqrt(hitElement.area);
+      const Rgb indirect = near ? secondaryGather(y, hitElement.normal, hit.element, options.nearRays, random)
+                                : Rgb(indirect_.row(row).transpose().array());
+      sum += solution_.reflectance.row(row).transpose().array() * (direct + indirect);
     }
     mean.add(sum / perBatch);
   }
   error = mean.standardError();
   return mean.mean();
+}
+
+Rgb TwoPass::secondaryGather(const Vec3& point, const Vec3& normal, int element, int rays,
+                             PairRandom& random) const {
+  Rgb sum = Rgb::Zero();
+  for (int k = 0; k < rays; ++k) {
+    const Vec3 direction = cosineDirection(normal, random.uniform(), random.uniform());
+    const RayHit hit = solutionRays_->firstHit(point, direction, element);
+    if (hit.element < 0 || !hit.frontSide) continue;
+    const auto row = static_cast<Eigen::Index>(hit.element);
+    sum += (B_.row(row) - solution_.emission.row(row)).transpose().array() /
+           receiving_[static_cast<std::size_t>(hit.element)];
+  }
+  return sum / std::max(1, rays);
 }
 
 std::vector<PointEstimate> TwoPass::estimate(const std::vector<SurfacePoint>& points,

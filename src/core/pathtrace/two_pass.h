@@ -9,7 +9,9 @@
 // into the direct light it receives, which the solution only knows as an average over the element, and the
 // rest. The direct part is then taken at the hit point itself (Lambert's formula, less a shadow ray's
 // estimate of the hidden part where something may block), so that a shadow or the light's falloff across a
-// coarse element does not smear into the gathered light.
+// coarse element does not smear into the gathered light. A gather hit close to the point (within a few
+// element sizes) sees its element's flat indirect light at a large solid angle, so it gathers that part anew
+// from the solution, one bounce further on (docs/pathtrace.md).
 #pragma once
 
 #include <cstdint>
@@ -29,6 +31,8 @@ struct TwoPassOptions {
   int gatherRays = 4096;  // final-gather rays per point
   int shadowRays = 256;   // per point and emitter, only where something may block
   int batches = 16;       // independent batches (standard errors from their spread)
+  double nearFactor = 2;  // gather hits closer than this many element sizes gather their indirect light anew
+  int nearRays = 16;      // with this many rays
   std::uint64_t seed = 1;
 };
 
@@ -60,6 +64,9 @@ class TwoPass {
  private:
   Rgb gather(const SurfacePoint& point, int element, const TwoPassOptions& options, std::uint64_t index,
              Rgb& error) const;
+  // The indirect irradiance at a point of solution element `element`: cosine rays taking B - E where they
+  // hit.
+  Rgb secondaryGather(const Vec3& point, const Vec3& normal, int element, int rays, PairRandom& random) const;
   // One-sample unbiased estimate of the emitters' direct irradiance at a point of tracing element `element`.
   Rgb directSample(const Vec3& point, const Vec3& normal, int element, PairRandom& random) const;
 
@@ -72,6 +79,7 @@ class TwoPass {
   // With form factors: per solution element, the irradiance that is not the emitters' direct light,
   // (B - E) / rho - sum_l F_il E_l, per channel (0 where rho is 0).
   RgbField indirect_;
+  std::vector<double> receiving_;  // per solution element: the part that receives light at all
 };
 
 }  // namespace rt
