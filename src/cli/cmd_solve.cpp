@@ -10,7 +10,9 @@
 #include "cli/commands.h"
 #include "cli/output_paths.h"
 #include "cli/setting_options.h"
+#include "cli/solution.h"
 #include "core/formfactor/formfactor_method.h"
+#include "core/io/ply_export.h"
 #include "core/io/scene_loader.h"
 #include "core/pipeline/pipeline.h"
 #include "core/refine/refine.h"
@@ -21,6 +23,7 @@
 #ifdef RT_HAVE_VIZ
 #include "viz/display_pipeline.h"
 #include "viz/scene_image.h"
+#include "viz/vertex_interpolation.h"
 #endif
 
 namespace rt::cli {
@@ -28,44 +31,38 @@ namespace {
 
 struct SolveArguments {
   std::string scene;
-  std::string solver;                                   // empty: chosen by size
-  std::string formFactors = defaultFormFactorMethod();  // handles occluders
-  double tolerance = 1e-6;
-  int maxIterations = 0;  // automatic
-  std::uint64_t seed = 1;
-  int raysPerIteration = 0;  // stochastic solvers; 0 = automatic
-  int resolution = 128;
-  int samples = 16;
+  SolutionArguments s;  // mesh, form factors, solver: shared with the commands built on a solution
   std::string output;
+  std::string ply;
   std::string image;
   int width = 1024, height = 1024;
   double exposure = 0.0;
   std::string toneMap = "linear";
   bool smooth = false;
   bool edges = false;
-  bool verbose = false;
-  bool ambient = false;
   // Shooting without the n x n matrix: each shooter's row of F is computed when it shoots.
   bool noMatrix = false;
   bool formFactorsGiven = false;
   std::string legacyFormFactors;  // --formfactors, the old spelling of --method
-  MeshArguments mesh;
   // Refining meshers (docs/meshing.md): empty = the uniform mesh of MeshArguments.
   std::string refineMode;
   RefineOptions refine;
 };
 
+// B per element, then where the element is: its centroid and unit normal, so that a value can be found by
+// position without rebuilding the mesh (B stays in columns 4-6 for the readers written before).
 void writeRadiosityCsv(const Scene& scene, const Mesh& mesh, const RgbField& B, const std::string& path) {
   std::ofstream out(path);
   if (!out) throw InputError({path}, "cannot write the radiosity file");
-  out << "element,patch,surface,area,B_r,B_g,B_b\n";
-  char line[512];
+  out << "element,patch,surface,area,B_r,B_g,B_b,x,y,z,nx,ny,nz\n";
+  char line[768];
   for (std::size_t i = 0; i < mesh.size(); ++i) {
     const Element& e = mesh.elements[i];
     const auto r = static_cast<Eigen::Index>(i);
-    std::snprintf(line, sizeof line, "%zu,%d,%s,%.17g,%.17g,%.17g,%.17g\n", i, e.patch,
-                  scene.surfaces[scene.patches[e.patch].surface].name.c_str(), e.area, B(r, 0), B(r, 1),
-                  B(r, 2));
+    std::snprintf(
+        line, sizeof line, "%zu,%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", i,
+        e.patch, scene.surfaces[scene.patches[e.patch].surface].name.c_str(), e.area, B(r, 0), B(r, 1),
+        B(r, 2), e.centroid.x(), e.centroid.y(), e.centroid.z(), e.normal.x(), e.normal.y(), e.normal.z());
     out << line;
   }
   if (!out) throw InputError({path}, "error while writing the radiosity file");
@@ -87,11 +84,22 @@ void writeImage(const SolveArguments& a, const Scene& scene, const Mesh& mesh, c
 #endif
 }
 
+// The solved mesh for ParaView and Blender: per-vertex values as the viewer's smooth display computes them
+// when the visualisation library is built, each element's own value at its corners otherwise.
+void writePly(const Mesh& mesh, const RgbField& B, const std::string& path) {
+#ifdef RT_HAVE_VIZ
+  writeRadiosityPly(mesh, B, viz::smoothCornerValues(mesh, B).values, path);
+#else
+  writeRadiosityPly(mesh, B, flatCorners(mesh, B), path);
+#endif
+  std::cerr << "mesh with radiosity written to " << path << "\n";
+}
+
 // --mesh adaptive|discontinuity|hierarchical: the refining solvers build their own mesh and form factors.
 void runRefined(const SolveArguments& a, const Scene& scene) {
   RefineOptions options = a.refine;
   options.mode = refineModeFromString(a.refineMode);
-  options.solverTolerance = a.tolerance;
+  options.solverTolerance = a.s.tolerance;
   ProgressLine progress(true);
   const RefinedSolution solution = solveRefined(scene, options, progress);
   progress.finish();
@@ -100,19 +108,13 @@ void runRefined(const SolveArguments& a, const Scene& scene) {
     writeRadiosityCsv(scene, solution.mesh, solution.B, a.output);
     std::cerr << "radiosity written to " << a.output << "\n";
   }
+  if (!a.ply.empty()) writePly(solution.mesh, solution.B, a.ply);
   if (!a.image.empty()) writeImage(a, scene, solution.mesh, solution.B);
 }
 
-// Status check and outputs shared by both ways of solving.
-void finish(const SolveArguments& a, const Scene& scene, const Mesh& mesh, SolverStatus status, double error,
-            int iterations, const RgbField& B) {
-  if (status == SolverStatus::NoConvergence)
-    std::cerr << "warning: not converged: the iteration cap ("
-              << (a.maxIterations > 0 ? "--iterations " + std::to_string(a.maxIterations)
-                                      : std::to_string(iterations) + ", automatic; --iterations raises it")
-              << ") was reached with relative residual " << error << "\n";
-  if (status != SolverStatus::Success && status != SolverStatus::NoConvergence)
-    throw std::runtime_error("the solver failed: " + toString(status));
+// The outputs of both ways of solving.
+void writeOutputs(const SolveArguments& a, const Scene& scene, const Mesh& mesh, const RgbField& B) {
+  if (!a.ply.empty()) writePly(mesh, B, a.ply);
   if (!a.output.empty()) {
     writeRadiosityCsv(scene, mesh, B, a.output);
     std::cerr << "radiosity written to " << a.output << "\n";
@@ -120,26 +122,8 @@ void finish(const SolveArguments& a, const Scene& scene, const Mesh& mesh, Solve
   if (!a.image.empty()) writeImage(a, scene, mesh, B);
 }
 
-SolverOptions solverOptions(const SolveArguments& a) {
-  SolverOptions options;
-  options.tolerance = a.tolerance;
-  options.maxIterations = a.maxIterations;
-  options.seed = a.seed;
-  options.raysPerIteration = a.raysPerIteration;
-  options.ambient = a.ambient;
-  options.recordHistory = false;
-  return options;
-}
-
-// --verbose: one line per iteration.
-void printIteration(const IterationRecord& r) {
-  std::fprintf(stderr, "iteration %d: residual %.6e, unshot power %.6e%s\n", r.iteration, r.residual,
-               r.unshotPower, r.shooter >= 0 ? (", shooter " + std::to_string(r.shooter)).c_str() : "");
-}
-
 // --no-matrix: the shooting solvers ask for the shooter's row of F when it shoots; nothing n x n is stored.
 const char* noMatrixProblem(const std::string& solverName, const std::string& formFactors) {
-  if (!solverNeedsMatrix(solverName)) return nullptr;  // it traces rays: there is no matrix anyway
   if (solverName != "southwell" && solverName != "progressive")
     return "--no-matrix needs a shooting solver: --solver southwell or --solver progressive";
   const auto methods = rowProviderMethods();
@@ -148,64 +132,44 @@ const char* noMatrixProblem(const std::string& solverName, const std::string& fo
   return nullptr;
 }
 
-// A solver that traces its own rays (local-lines): no form factor is computed or stored.
-void runWithoutFormFactors(const SolveArguments& a, const Scene& scene, const Mesh& mesh,
-                           const std::string& name, ProgressLine& progress) {
-  std::cerr << "form factors: none (" << name << " traces rays through the " << mesh.size()
-            << " elements; no matrix stored)\n";
-  const SolveOutcome outcome =
-      solveRadiosity(RadiositySystem::fromGeometry(mesh), name, solverOptions(a), false, progress,
-                     a.verbose ? std::function<void(const IterationRecord&)>(printIteration)
-                               : std::function<void(const IterationRecord&)>());
-  progress.finish();
-  std::cerr << "solve (" << name << "): " << toString(outcome.status) << " after " << outcome.iterations
-            << " " << (outcome.iterations == 1 ? "iteration" : "iterations") << ", " << outcome.rays
-            << " rays, unshot residual " << outcome.error << ", relative standard error "
-            << outcome.standardError << "\n";
-  finish(a, scene, mesh, outcome.status, outcome.error, outcome.iterations, outcome.B);
+// Status check of the rows-on-demand solve (the pipeline's solve checks its own).
+void checkStatus(const SolveArguments& a, SolverStatus status, double error, int iterations) {
+  if (status == SolverStatus::NoConvergence)
+    std::cerr << "warning: not converged: the iteration cap ("
+              << (a.s.maxIterations > 0 ? "--iterations " + std::to_string(a.s.maxIterations)
+                                        : std::to_string(iterations) + ", automatic; --iterations raises it")
+              << ") was reached with relative residual " << error << "\n";
+  if (status != SolverStatus::Success && status != SolverStatus::NoConvergence)
+    throw std::runtime_error("the solver failed: " + toString(status));
 }
 
 void run(const SolveArguments& a) {
-  checkOutputPaths({a.output, a.image});  // before the expensive part, not after it
+  checkOutputPaths({a.output, a.image, a.ply});  // before the expensive part, not after it
   const Scene scene = loadSceneReportingWarnings(a.scene);
   requireLight(scene);
   if (!a.refineMode.empty()) return runRefined(a, scene);
-  const std::string solverName = !a.solver.empty() ? a.solver
-                                 : a.noMatrix      ? std::string("southwell")
-                                                   : std::string();
-  const std::string formFactors = a.noMatrix && !a.formFactorsGiven ? std::string("hemicube") : a.formFactors;
+  const std::string solverName = !a.s.solver.empty() ? a.s.solver
+                                 : a.noMatrix        ? std::string("southwell")
+                                                     : std::string();
+  const std::string formFactors = a.noMatrix && !a.formFactorsGiven ? std::string("hemicube") : a.s.method;
   if (!solverName.empty()) makeSolver(solverName);  // an unknown name fails before the expensive part
   if (a.noMatrix)
     if (const char* problem = noMatrixProblem(solverName, formFactors)) throw CLI::ValidationError(problem);
-  const Mesh mesh = buildMesh(scene, a.mesh.optionsFor(scene));
-  ProgressLine progress(!a.verbose);
-
-  FormFactorOptions ffOptions;
-  ffOptions.hemicubeResolution = a.resolution;
-  ffOptions.samples = a.samples;
-  ffOptions.seed = a.seed;
-  std::string name = solverName;
-  if (name.empty() && !a.formFactorsGiven) {
-    const AutomaticSolve chosen = chooseAutomaticSolve(mesh.size());
-    std::cerr << "solver: none named: " << chosen.solver << " for " << chosen.why
-              << " (--solver and --method: your own)\n";
-    name = chosen.solver;
-  } else if (name.empty()) {
-    name = chooseSolver(mesh.size());
-  }
-  if (!solverNeedsMatrix(name)) return runWithoutFormFactors(a, scene, mesh, name, progress);
+  const Mesh mesh = buildMesh(scene, a.s.mesh.optionsFor(scene));
   if (a.noMatrix) {
+    ProgressLine progress(!a.s.verbose);
+    const std::string name = solverName.empty() ? chooseSolver(mesh.size()) : solverName;
     RadiositySystem system;
     system.reflectance = mesh.reflectance;
     system.emission = mesh.emission;
     system.areas = mesh.areas();
     std::cerr << "form factors (" << formFactors << "): one row per shot, no matrix stored\n";
     auto solver = makeSolver(name);
-    solver->setOptions(solverOptions(a));
+    solver->setOptions(a.s.solverOptions());
     solver->setProgress(&progress);
-    if (a.verbose) solver->setObserver(printIteration);
+    if (a.s.verbose) solver->setObserver(printIteration);
     std::size_t rows = 0;
-    const FormFactorRowProvider provider = makeRowProvider(formFactors, mesh, ffOptions);
+    const FormFactorRowProvider provider = makeRowProvider(formFactors, mesh, a.s.formFactorOptions());
     dynamic_cast<ShootingSolver&>(*solver).setRowProvider([&rows, provider](int i, Eigen::VectorXd& row) {
       ++rows;
       provider(i, row);
@@ -215,37 +179,34 @@ void run(const SolveArguments& a) {
     std::cerr << "solve (" << name << ", rows on demand): " << toString(solver->info()) << " after "
               << solver->iterations() << " shots, " << rows << " rows computed, unshot residual "
               << solver->error() << "\n";
-    finish(a, scene, mesh, solver->info(), solver->error(), solver->iterations(), B);
+    checkStatus(a, solver->info(), solver->error(), solver->iterations());
+    writeOutputs(a, scene, mesh, B);
     return;
   }
-  // The pipeline's form factors and solve, as the lessons and the app compute them.
+  // The pipeline's form factors and solve, as the lessons, the app and the commands built on a solution
+  // compute them.
   Pipeline pipeline;
-  const auto cached = pipeline.formFactors(mesh, formFactors, ffOptions, progress);
-  progress.finish();
-  reportFormFactorStats(std::cerr, formFactors, cached->stats);
-  const SolveOutcome outcome =
-      solveRadiosity(RadiositySystem::fromMesh(mesh, cached->F), name, solverOptions(a), false, progress,
-                     a.verbose ? std::function<void(const IterationRecord&)>(printIteration)
-                               : std::function<void(const IterationRecord&)>());
-  progress.finish();
-  std::cerr << "solve (" << name << "): " << toString(outcome.status) << " after " << outcome.iterations
-            << " " << (outcome.iterations == 1 ? "iteration" : "iterations") << ", relative residual "
-            << outcome.residual << "\n";
-  finish(a, scene, mesh, outcome.status, outcome.error, outcome.iterations, outcome.B);
+  SolutionArguments settings = a.s;
+  settings.method = formFactors;
+  settings.solver = solverName;
+  settings.automatic = solverName.empty() && !a.formFactorsGiven;
+  const SolveOutcome outcome = solveMesh(mesh, settings, pipeline);
+  writeOutputs(a, scene, mesh, outcome.B);
 }
 
 }  // namespace
 
 void addSolveCommand(CLI::App& app) {
   auto a = std::make_shared<SolveArguments>();
+  a->s.method = defaultFormFactorMethod();
   auto* command =
       app.add_subcommand("solve", "Solve the radiosity system of a scene; write B.csv and/or an image");
   command->add_option("scene", a->scene, "Scene file (.json or .obj)")->required()->check(CLI::ExistingFile);
-  addSettingOption(*command, "solver", a->solver)
+  addSettingOption(*command, "solver", a->s.solver)
       ->default_str(
           "by size: direct below 3,000 elements, local-lines above (gauss-seidel when --method is given)");
   auto* formFactors =
-      addSettingOption(*command, "method", a->formFactors)->default_str(defaultFormFactorMethod());
+      addSettingOption(*command, "method", a->s.method)->default_str(defaultFormFactorMethod());
   // It used to name the solver: a solver's name is still taken (with a note), anything else is checked below.
   formFactors->get_validator(kTableCheck)->active(false);
   // The old spelling of the form-factor method, kept apart: old command lines put the solver in --method.
@@ -258,20 +219,25 @@ void addSolveCommand(CLI::App& app) {
           },
           "Deprecated spelling of --method")
       ->group("");
-  addSettingOption(*command, "tolerance", a->tolerance);
+  addSettingOption(*command, "tolerance", a->s.tolerance);
   addDeprecatedAlias(*command, "--max-iterations",
-                     addSettingOption(*command, "iterations", a->maxIterations));
-  addSettingOption(*command, "seed", a->seed);
-  addSettingOption(*command, "rays-per-iteration", a->raysPerIteration);
-  addSettingOption(*command, "resolution", a->resolution);
-  addSettingOption(*command, "samples", a->samples);
-  command->add_flag("--ambient", a->ambient, "progressive: show B plus the ambient term");
+                     addSettingOption(*command, "iterations", a->s.maxIterations));
+  addSettingOption(*command, "seed", a->s.seed);
+  addSettingOption(*command, "rays-per-iteration", a->s.raysPerIteration);
+  addSettingOption(*command, "resolution", a->s.resolution);
+  addSettingOption(*command, "samples", a->s.samples);
+  command->add_flag("--ambient", a->s.ambient, "progressive: show B plus the ambient term");
   command->add_flag("--no-matrix", a->noMatrix,
                     "southwell/progressive: compute each shooter's row of F when it shoots (--formfactors "
                     "hemicube, the default here, or raycast) instead of storing the n x n matrix");
-  a->mesh.add(*command);
+  a->s.mesh.add(*command);
   command->add_option("--output", a->output,
-                      "Write B per element as CSV (element,patch,surface,area,B_r,B_g,B_b)");
+                      "Write B per element as CSV (element,patch,surface,area,B_r,B_g,B_b,x,y,z,nx,ny,nz: "
+                      "the centroid and the unit normal)");
+  command->add_option(
+      "--ply", a->ply,
+      "Write the solved mesh as PLY (ParaView, Blender): B per face and per vertex (smooth), with "
+      "display colours");
   command->add_option("--image", a->image,
                       "Render the solved scene from its camera to a PNG (needs an X server)");
   command->add_option("--width", a->width, "Image width")->capture_default_str();
@@ -294,23 +260,22 @@ void addSolveCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--rays", a->refine.visibilitySamples, "--mesh: visibility rays per pair or link")
       ->capture_default_str();
-  command->add_flag("--verbose", a->verbose, "One line per iteration instead of a progress line");
+  command->add_flag("--verbose", a->s.verbose, "One line per iteration instead of a progress line");
   command->callback([a, formFactors] {
     a->formFactorsGiven = formFactors->count() > 0;
     // `solve --method` used to name the solver: a solver's name there still works, with a note.
     const auto& methods = lesson::knownMethods();
-    if (!isSolverName(a->formFactors) &&
-        std::find(methods.begin(), methods.end(), a->formFactors) == methods.end())
-      throw CLI::ValidationError("--method", "unknown form-factor method '" + a->formFactors + "'");
-    if (isSolverName(a->formFactors)) {
-      std::cerr << "radiosity: --method names the form-factor method now; use --solver " << a->formFactors
+    if (!isSolverName(a->s.method) && std::find(methods.begin(), methods.end(), a->s.method) == methods.end())
+      throw CLI::ValidationError("--method", "unknown form-factor method '" + a->s.method + "'");
+    if (isSolverName(a->s.method)) {
+      std::cerr << "radiosity: --method names the form-factor method now; use --solver " << a->s.method
                 << "\n";
-      a->solver = a->formFactors;
-      a->formFactors = defaultFormFactorMethod();
+      a->s.solver = a->s.method;
+      a->s.method = defaultFormFactorMethod();
       a->formFactorsGiven = false;
     }
     if (!a->legacyFormFactors.empty()) {
-      a->formFactors = a->legacyFormFactors;
+      a->s.method = a->legacyFormFactors;
       a->formFactorsGiven = true;
     }
     run(*a);

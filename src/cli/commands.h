@@ -8,6 +8,8 @@ namespace rt::cli {
 
 void addFormFactorsCommand(CLI::App& app);
 void addSolveCommand(CLI::App& app);
+void addIrradianceCommand(CLI::App& app);
+void addComparePtCommand(CLI::App& app);
 void addMatrixCommand(CLI::App& app);
 void addFigureCommand(CLI::App& app);
 void addLessonCommand(CLI::App& app);

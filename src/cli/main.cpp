@@ -47,6 +47,8 @@ int main(int argc, char** argv) {
   rt::registerOptionalMethods();
   rt::cli::addFormFactorsCommand(app);
   rt::cli::addSolveCommand(app);
+  rt::cli::addIrradianceCommand(app);
+  rt::cli::addComparePtCommand(app);
   rt::cli::addMatrixCommand(app);
   rt::cli::addFigureCommand(app);
   rt::cli::addLessonCommand(app);

@@ -48,6 +48,36 @@ TEST(SolveCommand, FurnaceCubeGivesEOverOneMinusRho) {
     for (int c = 4; c < 7; ++c) EXPECT_NEAR(std::stod(rows[r][c]), 2.0, 1e-6) << "row " << r;
 }
 
+// Each element's centroid and normal follow B: the floor of the unit cube in 2 x 2 has its centroids at
+// 0.25 and 0.75 and faces up.
+TEST(SolveCommand, RadiosityCsvLocatesEachElement) {
+  const std::string out = scratchDir("solve-geometry") + "/B.csv";
+  std::string log;
+  ASSERT_EQ(runCommand(cliPath() + " solve " + sourcePath("scenes/furnace-cube.json") +
+                           " --subdivide 2 --output " + out,
+                       &log),
+            0)
+      << log;
+  const auto rows = readCsv(out);
+  ASSERT_EQ(rows[0].size(), 13u);
+  EXPECT_EQ(rows[0][7], "x");
+  EXPECT_EQ(rows[0][12], "nz");
+  int floorElements = 0;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    if (rows[r][2] != "floor") continue;
+    ++floorElements;
+    EXPECT_EQ(std::stod(rows[r][8]), 0.0);   // y
+    EXPECT_EQ(std::stod(rows[r][11]), 1.0);  // ny
+    for (int c : {7, 9}) {
+      const double v = std::stod(rows[r][c]);
+      EXPECT_TRUE(std::abs(v - 0.25) < 1e-12 || std::abs(v - 0.75) < 1e-12) << v;
+    }
+    // Area times 4 is the floor's.
+    EXPECT_NEAR(std::stod(rows[r][3]), 0.25, 1e-12);
+  }
+  EXPECT_EQ(floorElements, 4);
+}
+
 TEST(SolveCommand, ASceneWithoutMeshOptionsGetsAMeshAndSaysWhich) {
   // One element per polygon gave the JSON Cornell box 20 elements and 55 % error on the floor.
   const std::string out = scratchDir("solve-default-mesh") + "/B.csv";
@@ -70,6 +100,48 @@ TEST(SolveCommand, ASceneWithoutMeshOptionsGetsAMeshAndSaysWhich) {
       << log;
   EXPECT_EQ(log.find("no mesh option given"), std::string::npos) << log;
   EXPECT_EQ(readCsv(out).size(), 1u + 20u);
+}
+
+// The PLY export: a face per element with its B, a vertex per element corner; in the furnace every value
+// is 2.
+TEST(SolveCommand, PlyCarriesRadiosityPerFaceAndVertex) {
+  const std::string out = scratchDir("solve-ply") + "/mesh.ply";
+  std::string log;
+  ASSERT_EQ(runCommand(cliPath() + " solve " + sourcePath("scenes/furnace-cube.json") +
+                           " --subdivide 2 --ply " + out,
+                       &log),
+            0)
+      << log;
+  std::ifstream in(out);
+  std::string line;
+  std::vector<std::string> header;
+  while (std::getline(in, line) && line != "end_header") header.push_back(line);
+  EXPECT_EQ(header[0], "ply");
+  EXPECT_NE(std::find(header.begin(), header.end(), "element vertex 96"), header.end());
+  EXPECT_NE(std::find(header.begin(), header.end(), "element face 24"), header.end());
+  for (int v = 0; v < 96; ++v) {
+    double x, y, z, r, g, b;
+    int R, G, B;
+    in >> x >> y >> z >> r >> g >> b >> R >> G >> B;
+    ASSERT_TRUE(in) << "vertex " << v;
+    EXPECT_NEAR(r, 2.0, 1e-5);  // smooth or flat, a uniform field stays 2
+    EXPECT_EQ(R, 255);          // the brightest reflecting element is white
+  }
+  for (int f = 0; f < 24; ++f) {
+    int count;
+    in >> count;
+    ASSERT_EQ(count, 4) << "face " << f;
+    int index;
+    for (int k = 0; k < count; ++k) {
+      in >> index;
+      EXPECT_EQ(index, 4 * f + k);
+    }
+    double r, g, b;
+    int R, G, B;
+    in >> r >> g >> b >> R >> G >> B;
+    EXPECT_NEAR(r, 2.0, 1e-6);
+  }
+  EXPECT_TRUE(in);
 }
 
 TEST(SolveCommand, MissingSceneIsAClearError) {

@@ -24,7 +24,7 @@ std::vector<double> readRadiosities(const std::string& path) {
     std::stringstream ss(line);
     std::string cell;
     for (int column = 0; std::getline(ss, cell, ','); ++column)
-      if (column >= 4) values.push_back(std::stod(cell));
+      if (column >= 4 && column < 7) values.push_back(std::stod(cell));
   }
   return values;
 }

@@ -34,10 +34,11 @@ void ignoreOwnElements(const RTCFilterFunctionNArguments* args) {
     // A segment meets the plane of an end point's element only at that end point (a line crosses a plane
     // once), so a hit on another element of that plane is float rounding at the end: a ray grazing up a wall
     // would otherwise "hit" the wall's next element, which can happen far from the end at grazing angles.
+    // A negative index is a free point (a query point not known to lie on an element): no plane to skip.
     const std::vector<int>& plane = *context->elementPlane;
     const int p = plane[static_cast<std::size_t>(element)];
-    if (p == plane[static_cast<std::size_t>(context->ignoreA)] ||
-        p == plane[static_cast<std::size_t>(context->ignoreB)])
+    if ((context->ignoreA >= 0 && p == plane[static_cast<std::size_t>(context->ignoreA)]) ||
+        (context->ignoreB >= 0 && p == plane[static_cast<std::size_t>(context->ignoreB)]))
       args->valid[k] = 0;
   }
 }

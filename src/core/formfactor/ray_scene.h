@@ -22,9 +22,11 @@ class RayScene {
   RayScene& operator=(const RayScene&) = delete;
 
   // True when the open segment from `from` to `to` crosses no element other than `ignoreA`/`ignoreB` (the two
-  // ends' own elements, which a ray leaving or reaching them must not count as occluders). Thread-safe.
+  // ends' own elements, which a ray leaving or reaching them must not count as occluders; -1 for an end on
+  // no element). Thread-safe.
   bool visible(const Vec3& from, const Vec3& to, int ignoreA, int ignoreB) const;
-  // First element hit along origin + t direction (direction unit), skipping element `ignore`. Thread-safe.
+  // First element hit along origin + t direction (direction unit), skipping element `ignore` and the elements
+  // in its plane (-1: skip none). Thread-safe.
   RayHit firstHit(const Vec3& origin, const Vec3& direction, int ignore) const;
   double sceneSize() const { return size_; }
 

@@ -167,4 +167,25 @@ bool ShaftCulling::mayBeOccluded(int i, int j) const {
   return tree_.anyOverlapping(shaft, eps_, [&](int k) { return patchMayBlock(k, a, b) && blocks(k); });
 }
 
+bool ShaftCulling::mayBeOccluded(const Vec3& point, const Vec3& normal, int pointPatch, int j) const {
+  if (!anyOccluder_) return false;
+  const int b = elementPatch_[static_cast<std::size_t>(j)];
+  Eigen::AlignedBox3d shaft = elementBoxes_[static_cast<std::size_t>(j)];
+  shaft.extend(point);
+  return tree_.anyOverlapping(shaft, eps_, [&](int k) {
+    if (k == b || k == pointPatch) return false;
+    // (2): k reaches in front of j's plane and in front of the point's tangent plane.
+    if (!(sideOfPatch(k, b) & kFront)) return false;
+    const auto& outline = patches_[static_cast<std::size_t>(k)].outline;
+    if (std::none_of(outline.begin(), outline.end(),
+                     [&](const Vec3& v) { return normal.dot(v - point) > eps_; }))
+      return false;
+    // (3): k's plane has the point strictly on one side and part of j strictly on the other.
+    const PatchInfo& p = patches_[static_cast<std::size_t>(k)];
+    const double d = p.normal.dot(point - p.point);
+    const std::uint8_t pointSide = d > eps_ ? kFront : d < -eps_ ? kBack : kOn;
+    return ((pointSide | sideOfElement(j, k)) & kBoth) == kBoth;
+  });
+}
+
 }  // namespace rt

@@ -21,6 +21,10 @@ class ShaftCulling {
   explicit ShaftCulling(const Mesh& mesh);
   // False only when no element can possibly lie between i and j. Thread-safe.
   bool mayBeOccluded(int i, int j) const;
+  // The same test between a point (facing `normal`, lying on patch `pointPatch` or -1) and element j: false
+  // only when nothing can stand between the point and any part of j. The two-pass method's direct light is
+  // exact (Lambert's formula) where this says so. Thread-safe.
+  bool mayBeOccluded(const Vec3& point, const Vec3& normal, int pointPatch, int j) const;
   // False when no patch has anything strictly behind its plane: a convex enclosure, where nothing can block.
   bool anyOccluder() const { return anyOccluder_; }
 

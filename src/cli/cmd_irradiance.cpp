@@ -1,0 +1,118 @@
+// radiosity irradiance: H and B at the user's points, by the two-pass method (the radiosity solution of
+// `solve`, direct light computed at the point, one final gather), or by the path tracer (--path-trace N).
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "cli/cli_common.h"
+#include "cli/commands.h"
+#include "cli/output_paths.h"
+#include "cli/solution.h"
+#include "core/io/point_csv.h"
+#include "core/io/scene_loader.h"
+#include "core/pathtrace/path_tracer.h"
+#include "core/pathtrace/two_pass.h"
+
+namespace rt::cli {
+namespace {
+
+struct IrradianceArguments {
+  std::string scene;
+  std::string points;
+  std::string output;
+  SolutionArguments solution;
+  TwoPassOptions twoPass;
+  int pathTrace = 0;  // paths per point; 0: the two-pass method
+};
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void run(const IrradianceArguments& a) {
+  const auto start = std::chrono::steady_clock::now();
+  checkOutputPaths({a.output});
+  const Scene scene = loadSceneReportingWarnings(a.scene);
+  requireLight(scene);
+  const std::vector<SurfacePoint> points = readSurfacePoints(a.points);
+  const TracingScene tracing(scene);
+  std::vector<PointEstimate> estimates;
+  if (a.pathTrace > 0) {
+    PathTracer tracer(scene);
+    PathTraceOptions options;
+    options.samples = a.pathTrace;
+    options.seed = a.solution.seed;
+    estimates = tracer.estimate(points, options);
+    std::fprintf(stderr, "path tracing: %zu points x %d paths, %.3g rays, %.2f s\n", points.size(),
+                 a.pathTrace, static_cast<double>(tracer.raysCast()), secondsSince(start));
+  } else {
+    Pipeline pipeline;
+    const Solution solution = solveOnMesh(scene, a.solution, pipeline);
+    const double solved = secondsSince(start);
+    TwoPassOptions options = a.twoPass;
+    options.seed = a.solution.seed;
+    const TwoPass twoPass(tracing, solution.mesh, solution.outcome.B,
+                          solution.formFactors ? &solution.formFactors->F : nullptr);
+    estimates = twoPass.estimate(points, options);
+    std::fprintf(stderr,
+                 "two-pass: %zu points, solution (%zu elements) %.2f s, direct light and gather %.2f s\n",
+                 points.size(), solution.mesh.size(), solved, secondsSince(start) - solved);
+  }
+  std::vector<std::string> surfaces(points.size());
+  std::size_t nowhere = 0, first = 0;
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    if (estimates[p].element >= 0) {
+      surfaces[p] =
+          scene
+              .surfaces[static_cast<std::size_t>(
+                  scene.patches[static_cast<std::size_t>(tracing.patchOf(estimates[p].element))].surface)]
+              .name;
+    } else if (nowhere++ == 0) {
+      first = p;
+    }
+  }
+  if (nowhere > 0)
+    std::cerr << "warning: " << nowhere
+              << " point(s) lie on no surface facing their normal (the first is point " << first + 1
+              << ", line " << first + 2 << " of " << a.points
+              << " if the file has no blank lines): their B is written as 0\n";
+  writePointEstimates(a.output, points, estimates, surfaces);
+  std::cerr << "irradiance written to " << a.output << " (" << secondsSince(start) << " s in all)\n";
+}
+
+}  // namespace
+
+void addIrradianceCommand(CLI::App& app) {
+  auto a = std::make_shared<IrradianceArguments>();
+  auto* command = app.add_subcommand(
+      "irradiance",
+      "Irradiance H and radiosity B at given points (CSV x,y,z,nx,ny,nz) by the two-pass method: the "
+      "radiosity "
+      "solution, direct light computed at each point, one final gather; or by path tracing");
+  command->add_option("scene", a->scene, "Scene file (.json or .obj)")->required()->check(CLI::ExistingFile);
+  command->add_option("--points", a->points, "CSV of points: header x,y,z,nx,ny,nz, one point per line")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command
+      ->add_option("--output", a->output,
+                   "CSV, one row per point in order: x,y,z,nx,ny,nz,surface,H_r,H_g,H_b,B_r,B_g,B_b and the "
+                   "standard error of each (H_r_error...)")
+      ->required();
+  a->solution.add(*command);
+  command->add_option("--gather-rays", a->twoPass.gatherRays, "Final-gather rays per point")
+      ->capture_default_str()
+      ->check(CLI::Range(16, 1 << 24));
+  command
+      ->add_option("--shadow-rays", a->twoPass.shadowRays,
+                   "Shadow rays per point and emitter, only where the shaft test finds a possible blocker")
+      ->capture_default_str()
+      ->check(CLI::Range(16, 1 << 20));
+  command
+      ->add_option("--path-trace", a->pathTrace,
+                   "Path-trace each point with this many paths instead (no mesh, no solve: the reference)")
+      ->check(CLI::Range(32, 1 << 30));
+  command->callback([a] { run(*a); });
+}
+
+}  // namespace rt::cli

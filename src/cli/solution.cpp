@@ -1,0 +1,117 @@
+#include "cli/solution.h"
+
+#include <cstdio>
+#include <iostream>
+
+#include "cli/setting_options.h"
+
+namespace rt::cli {
+
+void SolutionArguments::add(CLI::App& command) {
+  if (method.empty()) method = defaultFormFactorMethod();
+  addSettingOption(command, "method", method)->default_str(defaultFormFactorMethod());
+  addSettingOption(command, "solver", solver)->default_str("direct for small scenes, gauss-seidel otherwise");
+  addSettingOption(command, "tolerance", tolerance);
+  addSettingOption(command, "iterations", maxIterations);
+  addSettingOption(command, "seed", seed);
+  addSettingOption(command, "rays-per-iteration", raysPerIteration);
+  addSettingOption(command, "resolution", resolution);
+  addSettingOption(command, "samples", samples);
+  mesh.add(command);
+  command.add_flag("--verbose", verbose, "One line per iteration instead of a progress line");
+}
+
+FormFactorOptions SolutionArguments::formFactorOptions() const {
+  FormFactorOptions options;
+  options.hemicubeResolution = resolution;
+  options.samples = samples;
+  options.seed = seed;
+  return options;
+}
+
+SolverOptions SolutionArguments::solverOptions() const {
+  SolverOptions options;
+  options.tolerance = tolerance;
+  options.maxIterations = maxIterations;
+  options.seed = seed;
+  options.raysPerIteration = raysPerIteration;
+  options.ambient = ambient;
+  options.recordHistory = false;
+  return options;
+}
+
+void printIteration(const IterationRecord& r) {
+  std::fprintf(stderr, "iteration %d: residual %.6e, unshot power %.6e%s\n", r.iteration, r.residual,
+               r.unshotPower, r.shooter >= 0 ? (", shooter " + std::to_string(r.shooter)).c_str() : "");
+}
+
+namespace {
+
+std::string solverFor(const Mesh& mesh, const SolutionArguments& a) {
+  if (!a.solver.empty()) return a.solver;
+  if (!a.automatic) return chooseSolver(mesh.size());
+  const AutomaticSolve chosen = chooseAutomaticSolve(mesh.size());
+  std::cerr << "solver: none named: " << chosen.solver << " for " << chosen.why
+            << " (--solver and --method: your own)\n";
+  return chosen.solver;
+}
+
+void checkOutcome(const SolveOutcome& outcome, const SolutionArguments& a) {
+  if (outcome.status == SolverStatus::NoConvergence)
+    std::cerr << "warning: not converged: the iteration cap ("
+              << (a.maxIterations > 0
+                      ? "--iterations " + std::to_string(a.maxIterations)
+                      : std::to_string(outcome.iterations) + ", automatic; --iterations raises it")
+              << ") was reached with relative residual " << outcome.error << "\n";
+  if (outcome.status != SolverStatus::Success && outcome.status != SolverStatus::NoConvergence)
+    throw std::runtime_error("the solver failed: " + toString(outcome.status));
+}
+
+std::function<void(const IterationRecord&)> observerFor(const SolutionArguments& a) {
+  return a.verbose ? std::function<void(const IterationRecord&)>(printIteration)
+                   : std::function<void(const IterationRecord&)>();
+}
+
+}  // namespace
+
+SolveOutcome solveMesh(const Mesh& mesh, const SolutionArguments& a, Pipeline& pipeline,
+                       std::shared_ptr<const CachedFormFactors>* formFactors) {
+  const std::string method = a.method.empty() ? defaultFormFactorMethod() : a.method;
+  const std::string name = solverFor(mesh, a);
+  ProgressLine progress(!a.verbose);
+  if (!solverNeedsMatrix(name)) {
+    // It traces its own rays through the mesh: nothing n x n is computed or stored.
+    std::cerr << "form factors: none (" << name << " traces rays through the " << mesh.size()
+              << " elements; no matrix stored)\n";
+    SolveOutcome outcome = solveRadiosity(RadiositySystem::fromGeometry(mesh), name, a.solverOptions(), false,
+                                          progress, observerFor(a));
+    progress.finish();
+    std::cerr << "solve (" << name << "): " << toString(outcome.status) << " after " << outcome.iterations
+              << " " << (outcome.iterations == 1 ? "iteration" : "iterations") << ", " << outcome.rays
+              << " rays, unshot residual " << outcome.error << ", relative standard error "
+              << outcome.standardError << "\n";
+    checkOutcome(outcome, a);
+    return outcome;
+  }
+  const auto cached = pipeline.formFactors(mesh, method, a.formFactorOptions(), progress);
+  progress.finish();
+  reportFormFactorStats(std::cerr, method, cached->stats);
+  if (formFactors) *formFactors = cached;
+  SolveOutcome outcome = solveRadiosity(RadiositySystem::fromMesh(mesh, cached->F), name, a.solverOptions(),
+                                        false, progress, observerFor(a));
+  progress.finish();
+  std::cerr << "solve (" << name << "): " << toString(outcome.status) << " after " << outcome.iterations
+            << " " << (outcome.iterations == 1 ? "iteration" : "iterations") << ", relative residual "
+            << outcome.residual << "\n";
+  checkOutcome(outcome, a);
+  return outcome;
+}
+
+Solution solveOnMesh(const Scene& scene, const SolutionArguments& a, Pipeline& pipeline) {
+  if (!a.solver.empty()) makeSolver(a.solver);  // an unknown name fails before the expensive part
+  Solution solution{buildMesh(scene, a.mesh.optionsFor(scene)), {}};
+  solution.outcome = solveMesh(solution.mesh, a, pipeline, &solution.formFactors);
+  return solution;
+}
+
+}  // namespace rt::cli

@@ -1,0 +1,27 @@
+// Query points as CSV: a header naming the columns x,y,z,nx,ny,nz (in any order, other columns ignored), then
+// one point and the normal of the surface it lies on per line, in scene units. And the answers: one row per
+// point, in the same order, with H and B per channel and their standard errors.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/pathtrace/estimate.h"
+#include "core/pathtrace/tracing_scene.h"
+
+namespace rt {
+
+// Throws InputError naming the file and line (and the column) for a missing column, a line with too few
+// cells, a value that is not a finite number, or a zero normal. Normals are returned unit length.
+std::vector<SurfacePoint> readSurfacePoints(const std::string& path);
+
+// x,y,z,nx,ny,nz,surface,H_r,H_g,H_b,B_r,B_g,B_b,H_r_error,H_g_error,H_b_error,B_r_error,B_g_error,B_b_error.
+// `surface` names the surface each point lies on (empty: none found, and B is 0). Errors are standard errors.
+void writePointEstimates(const std::string& path, const std::vector<SurfacePoint>& points,
+                         const std::vector<PointEstimate>& estimates,
+                         const std::vector<std::string>& surfaces);
+
+// Reads a file writePointEstimates wrote (the reference of a comparison).
+std::vector<PointEstimate> readPointEstimates(const std::string& path);
+
+}  // namespace rt

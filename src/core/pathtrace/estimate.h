@@ -1,0 +1,46 @@
+// Monte Carlo estimates with their standard errors. Samples are drawn in independent batches, each
+// stratified over its own samples: the batch means are independent and identically distributed, so their
+// spread gives an honest standard error for the stratified estimator (the naive per-sample variance would
+// overstate it, because stratification makes the error fall faster than the samples' spread says).
+#pragma once
+
+#include <cmath>
+
+#include "core/vec.h"
+
+namespace rt {
+
+// Irradiance H (the power arriving per unit area, sum_j F_ij B_j) and radiosity B = E + rho H leaving a
+// point, per RGB channel, in W/m^2, each with its standard error.
+struct PointEstimate {
+  Rgb H = Rgb::Zero();
+  Rgb HError = Rgb::Zero();
+  Rgb B = Rgb::Zero();
+  Rgb BError = Rgb::Zero();
+  int element = -1;  // the surface the point lies on (-1: none, and B is 0)
+};
+
+// Mean and standard error of the mean of independent RGB values (Welford's update: no cancellation).
+class RgbMean {
+ public:
+  void add(const Rgb& x) {
+    ++count_;
+    const Rgb delta = x - mean_;
+    mean_ += delta / static_cast<double>(count_);
+    squares_ += delta * (x - mean_);
+  }
+  int count() const { return count_; }
+  Rgb mean() const { return mean_; }
+  // Zero for fewer than two values (no spread to measure).
+  Rgb standardError() const {
+    if (count_ < 2) return Rgb::Zero();
+    return (squares_ / (static_cast<double>(count_) * (count_ - 1))).sqrt();
+  }
+
+ private:
+  int count_ = 0;
+  Rgb mean_ = Rgb::Zero();
+  Rgb squares_ = Rgb::Zero();
+};
+
+}  // namespace rt

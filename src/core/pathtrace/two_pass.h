@@ -1,0 +1,85 @@
+// The two-pass method: a radiosity solution shown or queried through a second pass at each point. The
+// emitters' direct light is computed accurately at the point itself (Lambert's exact point-to-polygon form
+// factor where the shaft test proves that nothing can block, less the part shadow rays find hidden where
+// something can), and everything else arrives by one final gather from the solution: cosine-distributed rays
+// that take, at the element they hit, its solved radiosity minus its emission. The mesh's errors then only
+// enter through the indirect light, averaged over the hemisphere; shadows and the light's falloff are exact.
+//
+// Given the solution's form factors, the gather goes one step further: what the hit element reflects is split
+// into the direct light it receives, which the solution only knows as an average over the element, and the
+// rest. The direct part is then taken at the hit point itself (Lambert's formula, less a shadow ray's
+// estimate of the hidden part where something may block), so that a shadow or the light's falloff across a
+// coarse element does not smear into the gathered light. A gather hit close to the point (within a few
+// element sizes) sees its element's flat indirect light at a large solid angle, so it gathers that part anew
+// from the solution, one bounce further on (docs/pathtrace.md).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "core/formfactor/formfactor_matrix.h"
+#include "core/formfactor/ray_scene.h"
+#include "core/formfactor/shaft_culling.h"
+#include "core/io/rgb_image.h"
+#include "core/pathtrace/estimate.h"
+#include "core/pathtrace/tracing_scene.h"
+
+namespace rt {
+
+struct TwoPassOptions {
+  int gatherRays = 4096;  // final-gather rays per point
+  int shadowRays = 256;   // per point and emitter, only where something may block
+  int batches = 16;       // independent batches (standard errors from their spread)
+  double nearFactor = 2;  // gather hits closer than this many element sizes gather their indirect light anew
+  int nearRays = 16;      // with this many rays
+  std::uint64_t seed = 1;
+};
+
+class TwoPass {
+ public:
+  // `B` is the solution on `solution` (n x 3), `F` its form factors (null: gather B - E as it is); all of
+  // them and the tracing scene must outlive this.
+  TwoPass(const TracingScene& tracing, const Mesh& solution, const RgbField& B,
+          const FormFactorMatrix* F = nullptr);
+  TwoPass(const TwoPass&) = delete;
+  TwoPass& operator=(const TwoPass&) = delete;
+
+  // H, B and their standard errors (the Monte Carlo part: shadow rays and the gather; the solution's own
+  // discretisation error is not in them). TBB parallel, deterministic for a seed.
+  std::vector<PointEstimate> estimate(const std::vector<SurfacePoint>& points,
+                                      const TwoPassOptions& options) const;
+  // The same for points whose elements of the tracing scene are known (-1: none).
+  std::vector<PointEstimate> estimate(const std::vector<SurfacePoint>& points,
+                                      const std::vector<int>& elements, const TwoPassOptions& options) const;
+
+  // The two-pass picture: per pixel, the point the pixel's centre ray reaches first, and B there (E + rho H,
+  // H by estimate() with `options`). Back sides and nothing are black.
+  RgbImage render(const Camera& camera, int width, int height, const TwoPassOptions& options) const;
+
+  // The emitters' direct irradiance alone, with its standard error (zero where no ray was needed).
+  Rgb direct(const SurfacePoint& point, int element, const TwoPassOptions& options, std::uint64_t index,
+             Rgb& error) const;
+
+ private:
+  Rgb gather(const SurfacePoint& point, int element, const TwoPassOptions& options, std::uint64_t index,
+             Rgb& error) const;
+  // The indirect irradiance at a point of solution element `element`: cosine rays taking B - E where they
+  // hit.
+  Rgb secondaryGather(const Vec3& point, const Vec3& normal, int element, int rays, PairRandom& random) const;
+  // One-sample unbiased estimate of the emitters' direct irradiance at a point of tracing element `element`.
+  Rgb directSample(const Vec3& point, const Vec3& normal, int element, PairRandom& random) const;
+
+  const TracingScene& tracing_;
+  const Mesh& solution_;
+  const RgbField& B_;
+  ShaftCulling shaft_;
+  std::unique_ptr<RayScene> solutionRays_;
+  std::vector<int> patchElement_;  // per patch: one element of the solution's mesh on it
+  // With form factors: per solution element, the irradiance that is not the emitters' direct light,
+  // (B - E) / rho - sum_l F_il E_l, per channel (0 where rho is 0).
+  RgbField indirect_;
+  std::vector<double> receiving_;  // per solution element: the part that receives light at all
+};
+
+}  // namespace rt

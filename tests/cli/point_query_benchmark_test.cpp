@@ -1,0 +1,95 @@
+// The point-query numbers of docs/benchmarks.md: irradiance on the floor of the closed Cornell box by the
+// two-pass method, end to end (the command, wall clock), against the stored path-traced reference
+// (tests/data/pathtrace/README.md). Disabled by default (a benchmark, not a timed test); run with
+//   cli_tests --gtest_also_run_disabled_tests --gtest_filter='PointQueryBenchmark.*'
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/test_paths.h"
+
+namespace rt::test {
+namespace {
+
+// Column name -> values, for a CSV with a header.
+std::map<std::string, std::vector<std::string>> readColumns(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  std::stringstream header(line);
+  for (std::string cell; std::getline(header, cell, ',');) names.push_back(cell);
+  std::map<std::string, std::vector<std::string>> columns;
+  while (std::getline(in, line)) {
+    std::stringstream row(line);
+    std::size_t k = 0;
+    for (std::string cell; std::getline(row, cell, ',') && k < names.size(); ++k)
+      columns[names[k]].push_back(cell);
+  }
+  return columns;
+}
+
+struct Score {
+  double rms = 0, largest = 0, mean = 0, covered = 0;
+};
+
+Score score(const std::string& reference, const std::string& answer) {
+  auto ref = readColumns(reference), got = readColumns(answer);
+  Score s;
+  int n = 0;
+  for (const char* c : {"r", "g", "b"}) {
+    const std::string h = std::string("H_") + c, e = h + "_error";
+    for (std::size_t p = 0; p < ref[h].size() && p < got[h].size(); ++p) {
+      const double truth = std::stod(ref[h][p]), value = std::stod(got[h][p]);
+      const double relative = (value - truth) / truth;
+      s.rms += relative * relative;
+      s.mean += relative;
+      s.largest = std::max(s.largest, std::abs(relative));
+      s.covered += std::abs(value - truth) <= 3 * std::hypot(std::stod(ref[e][p]), std::stod(got[e][p]));
+      ++n;
+    }
+  }
+  s.rms = std::sqrt(s.rms / n);
+  s.mean /= n;
+  s.covered /= n;
+  return s;
+}
+
+TEST(PointQueryBenchmark, DISABLED_ClosedCornellBoxFloor) {
+  const std::string points = dataPath("pathtrace/cornell-closed-floor-points.csv");
+  const std::string reference = dataPath("pathtrace/cornell-closed-floor-reference.csv");
+  const std::string out = scratchDir("point-query-benchmark") + "/H.csv";
+  std::printf("| settings | elements | seconds | RMS relative error | largest | mean | within 3 sigma |\n");
+  for (const char* settings :
+       {"", "--method hybrid --samples 70", "--method hybrid --samples 70 --shadow-rays 1024",
+        "--method hybrid --samples 70 --shadow-rays 1024 --max-edge 60",
+        "--method hybrid --samples 70 --shadow-rays 1024 --max-edge 45"}) {
+    std::string log;
+    const auto start = std::chrono::steady_clock::now();
+    ASSERT_EQ(runCommand(cliPath() + " irradiance " + sourcePath("scenes/cornell-box-closed.json") +
+                             " --points " + points + " --output " + out + " " + settings,
+                         &log),
+              0)
+        << log;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const Score s = score(reference, out);
+    const auto at = log.find("solution (");
+    std::printf("| `%s` | %s | %.2f | %.4f | %.4f | %+.4f | %.2f |\n", settings,
+                at == std::string::npos ? "?" : log.substr(at + 10, log.find(' ', at + 10) - at - 10).c_str(),
+                seconds, s.rms, s.largest, s.mean, s.covered);
+    std::fflush(stdout);
+    // Known answer, loosely: the two-pass method is within a few percent of the reference everywhere.
+    EXPECT_LT(s.rms, 0.03);
+    EXPECT_LT(s.largest, 0.1);
+  }
+}
+
+}  // namespace
+}  // namespace rt::test
