@@ -332,8 +332,9 @@ const std::vector<std::string>& stepKeys() {
 }
 
 const std::vector<std::string>& knownMethods() {
-  static const std::vector<std::string> methods{
-      "analytic", "analytic-visibility", "hemicube", "raycast", "montecarlo", "nusselt", "hybrid", "exact"};
+  static const std::vector<std::string> methods{"analytic", "analytic-visibility", "hemicube",
+                                                "raycast",  "montecarlo",          "nusselt",
+                                                "hybrid",   "quadrature",          "exact"};
   return methods;
 }
 

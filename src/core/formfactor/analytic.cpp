@@ -275,6 +275,10 @@ double lambertContourSum(const Vec3& point, const Vec3& normal, const Polygon& p
   return lambertSum(point, normal, polygon.data(), static_cast<int>(polygon.size()));
 }
 
+double lambertContourSum(const Vec3& point, const Vec3& normal, const Vec3* polygon, int count) {
+  return lambertSum(point, normal, polygon, count);
+}
+
 double pointToPolygonFormFactor(const Vec3& point, const Vec3& normal, const Vec3* polygon, int count) {
   if (count < 3) return 0;
   Vec3 polygonNormal = Vec3::Zero();

@@ -27,6 +27,7 @@ double pointToPolygonFormFactor(const Vec3& point, const Vec3& normal, const Pol
 // with the sign such that a polygon facing the point gives a positive value. Also the area of the polygon's
 // Nusselt projection on the unit disk divided by pi.
 double lambertContourSum(const Vec3& point, const Vec3& normal, const Polygon& polygon);
+double lambertContourSum(const Vec3& point, const Vec3& normal, const Vec3* polygon, int count);
 
 // F_ij from polygon i to polygon j (both CCW seen from their fronts), unoccluded, horizon-clipped.
 double polygonToPolygonFormFactor(const Polygon& from, const Polygon& to);

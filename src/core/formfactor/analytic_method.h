@@ -17,5 +17,8 @@ std::unique_ptr<FormFactorMethod> makeHemicubeMethod();
 std::unique_ptr<FormFactorMethod> makeNusseltMethod();
 // "hybrid": exact near, centroid far, ray-cast hidden part with rays in proportion to F (hybrid_method.cpp).
 std::unique_ptr<FormFactorMethod> makeHybridMethod();
+// "quadrature": every entry to an absolute tolerance, the hidden part clipped per point
+// (quadrature_method.cpp).
+std::unique_ptr<FormFactorMethod> makeQuadratureMethod();
 
 }  // namespace rt

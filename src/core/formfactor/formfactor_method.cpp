@@ -72,6 +72,9 @@ std::string FormFactorStats::summary() const {
       "visibility, %zu rays, %.3f s",
       elements, pairsComputed, pairsSkippedFacing, pairsByReciprocity, pairsUnoccluded, raysCast, seconds);
   std::string s = line;
+  if (kernelEvaluations > 0 || contourIntegrals > 0)
+    s += ", " + std::to_string(kernelEvaluations) + " point evaluations, " +
+         std::to_string(contourIntegrals) + " contour integrals";
   if (standardError > 0) s += ", standard error " + std::to_string(standardError);
   if (!notes.empty()) s += " (" + notes + ")";
   return s;

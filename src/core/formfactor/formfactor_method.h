@@ -18,7 +18,7 @@ struct FormFactorOptions {
   int hemicubeResolution = 128;  // pixels along the top face's edge
   int samples = 16;              // raycast: sample pairs per element pair; montecarlo: rays per element
   std::uint64_t seed = 1;        // stochastic methods are deterministic for a seed
-  double tolerance = 1e-9;       // exact: requested relative tolerance
+  double tolerance = 1e-9;       // exact: requested relative tolerance; quadrature: absolute error per entry
   int threads = 0;               // 0 = all cores
 };
 
@@ -30,6 +30,9 @@ struct FormFactorStats {
   std::size_t pairsByReciprocity = 0;  // derived as F_ji = A_i F_ij / A_j
   std::size_t pairsUnoccluded = 0;     // shaft proved empty: no visibility work
   std::size_t raysCast = 0;
+  // Work of the methods that integrate kernels: Lambert point-to-polygon evaluations and exact contour
+  // integrals (a measure of cost that does not depend on the machine or its load).
+  std::size_t kernelEvaluations = 0, contourIntegrals = 0;
   double seconds = 0.0;
   double standardError = 0.0;  // stochastic methods: RMS standard error of the entries (0 otherwise)
   std::size_t pairsOccludersIgnored = 0;  // pairs whose shaft may be blocked, computed as if it were not

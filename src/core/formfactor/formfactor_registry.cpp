@@ -12,6 +12,7 @@ void registerBuiltinFormFactorMethods() {
     registerFormFactorMethod("hemicube", [] { return makeHemicubeMethod(); });
     registerFormFactorMethod("nusselt", [] { return makeNusseltMethod(); });
     registerFormFactorMethod("hybrid", [] { return makeHybridMethod(); });
+    registerFormFactorMethod("quadrature", [] { return makeQuadratureMethod(); });
     return true;
   }();
   (void)once;

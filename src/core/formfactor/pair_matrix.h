@@ -18,7 +18,7 @@ bool elementsFaceEachOther(const Mesh& mesh, int i, int j);
 // Counters a row accumulates locally and the driver adds into FormFactorStats.
 struct RowCounters {
   std::size_t pairsComputed = 0, pairsSkippedFacing = 0, pairsByReciprocity = 0, pairsUnoccluded = 0,
-              raysCast = 0;
+              raysCast = 0, kernelEvaluations = 0, contourIntegrals = 0;
   double varianceSum = 0;  // stochastic methods: sum over entries of the estimator variance
 };
 
@@ -30,9 +30,11 @@ void forEachRow(std::size_t rows, const FormFactorOptions& options, Progress& pr
 
 // The result of integrating one pair.
 struct PairResult {
-  double value = 0;              // F_ij
-  std::size_t rays = 0;          // rays cast for it
-  bool needsVisibility = false;  // false: the shaft test proved it unoccluded
+  double value = 0;                   // F_ij
+  std::size_t rays = 0;               // rays cast for it
+  bool needsVisibility = false;       // false: the shaft test proved it unoccluded
+  std::size_t kernelEvaluations = 0;  // point-to-polygon (Lambert) evaluations, for methods that count them
+  std::size_t contourIntegrals = 0;   // exact polygon-to-polygon contour integrals, likewise
 };
 
 // F_ij for a method that estimates on the element it samples: integrate(a, b) runs from the smaller of i and

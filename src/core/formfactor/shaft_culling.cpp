@@ -148,6 +148,28 @@ std::vector<int> ShaftCulling::patchPairCandidates(int a, int b) const {
   return out;
 }
 
+void ShaftCulling::candidates(int i, int j, std::vector<int>& patches) const {
+  if (!anyOccluder_) return;
+  const int a = elementPatch_[static_cast<std::size_t>(i)], b = elementPatch_[static_cast<std::size_t>(j)];
+  if (a == b) return;
+  Eigen::AlignedBox3d shaft = elementBoxes_[static_cast<std::size_t>(i)];
+  shaft.extend(elementBoxes_[static_cast<std::size_t>(j)]);
+  auto blocks = [&](int k) {
+    if (!BoxTree::overlaps(shaft, patches_[static_cast<std::size_t>(k)].box, eps_)) return false;
+    return ((sideOfElement(i, k) | sideOfElement(j, k)) & kBoth) == kBoth;
+  };
+  if (!pairCandidates_.empty()) {
+    for (int k : pairCandidates_[static_cast<std::size_t>(std::min(a, b)) * patchCount_ +
+                                 static_cast<std::size_t>(std::max(a, b))])
+      if (blocks(k)) patches.push_back(k);
+    return;
+  }
+  tree_.anyOverlapping(shaft, eps_, [&](int k) {
+    if (patchMayBlock(k, a, b) && blocks(k)) patches.push_back(k);
+    return false;
+  });
+}
+
 bool ShaftCulling::mayBeOccluded(int i, int j) const {
   if (!anyOccluder_) return false;
   const int a = elementPatch_[static_cast<std::size_t>(i)], b = elementPatch_[static_cast<std::size_t>(j)];

@@ -27,6 +27,14 @@ class ShaftCulling {
   bool mayBeOccluded(const Vec3& point, const Vec3& normal, int pointPatch, int j) const;
   // False when no patch has anything strictly behind its plane: a convex enclosure, where nothing can block.
   bool anyOccluder() const { return anyOccluder_; }
+  // Appends to `patches` every patch that may block some segment from i to j (the patches for which
+  // mayBeOccluded answers true). Thread-safe.
+  void candidates(int i, int j, std::vector<int>& patches) const;
+  // A patch's extreme points in order around it (the convex hull of its elements' vertices).
+  const std::vector<Vec3>& outline(int patch) const {
+    return patches_[static_cast<std::size_t>(patch)].outline;
+  }
+  std::size_t patchCount() const { return patchCount_; }
 
  private:
   enum Side : std::uint8_t { kOn = 0, kFront = 1, kBack = 2, kBoth = 3 };

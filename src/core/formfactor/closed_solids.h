@@ -1,0 +1,28 @@
+// Which patches bound closed convex solids (a block with its bottom, given as separate faces)? Their back
+// faces need no clipping from outside (shadow_clipper.h), which halves the occluders of a block.
+#pragma once
+
+#include <vector>
+
+#include "core/formfactor/shadow_clipper.h"
+#include "core/vec.h"
+
+namespace rt {
+
+// outlines[k]: patch k's convex outline, counter-clockwise seen from its front. Returns per patch the index
+// of the solid it bounds, or -1, and fills `planes` with each solid's outward face planes. A group of
+// patches joined by shared edges is a solid when every edge is shared by exactly two of its faces, in
+// opposite directions (closed and consistently oriented), and every vertex lies on or behind every face
+// (convex, facing outwards). A room's inward-facing walls are closed too, but not outward: they are no solid.
+std::vector<int> closedConvexSolids(const std::vector<const std::vector<Vec3>*>& outlines,
+                                    std::vector<SolidPlanes>& planes);
+
+// The area of the part of a convex polygon inside the solid (on or behind every face plane, within eps).
+// A floor element partly under a block: that part sees nothing at all.
+double areaInside(const SmallPolygon& polygon, const SolidPlanes& solid, double eps);
+
+// Appends to `out` the convex pieces of `polygon` outside the solid (in front of some face plane).
+void piecesOutside(const SmallPolygon& polygon, const SolidPlanes& solid, double eps,
+                   std::vector<SmallPolygon>& out);
+
+}  // namespace rt

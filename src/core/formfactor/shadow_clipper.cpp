@@ -1,0 +1,195 @@
+#include "core/formfactor/shadow_clipper.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/formfactor/analytic.h"
+
+namespace rt {
+namespace {
+
+Vec3 centreOf(const SmallPolygon& p) {
+  Vec3 c = Vec3::Zero();
+  for (int k = 0; k < p.count; ++k) c += p.v[static_cast<std::size_t>(k)];
+  return c / std::max(1, p.count);
+}
+
+double areaOf(const SmallPolygon& p) {
+  Vec3 sum = Vec3::Zero();
+  for (int k = 0; k < p.count; ++k)
+    sum += p.v[static_cast<std::size_t>(k)].cross(p.v[static_cast<std::size_t>((k + 1) % p.count)]);
+  return 0.5 * sum.norm();
+}
+
+}  // namespace
+
+void clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& normal, double eps,
+                 SmallPolygon& out) {
+  out.count = 0;
+  const double length = normal.norm();
+  if (count < 3 || !(length > 0)) return;
+  double side[SmallPolygon::kCapacity];
+  bool anyBehind = false, anyFront = false;
+  for (int k = 0; k < count; ++k) {
+    double d = normal.dot(in[k] - origin) / length;
+    if (std::abs(d) <= eps) d = 0;
+    side[k] = d;
+    anyBehind |= d < 0;
+    anyFront |= d > 0;
+  }
+  if (!anyFront) return;
+  if (!anyBehind) {
+    for (int k = 0; k < count; ++k) out.v[static_cast<std::size_t>(k)] = in[k];
+    out.count = count;
+    return;
+  }
+  for (int k = 0; k < count && out.count + 2 <= SmallPolygon::kCapacity; ++k) {
+    const int next = (k + 1) % count;
+    const double dp = side[k], dq = side[next];
+    if (dp >= 0) out.v[static_cast<std::size_t>(out.count++)] = in[k];
+    if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0))
+      out.v[static_cast<std::size_t>(out.count++)] = in[k] + (in[next] - in[k]) * (dp / (dp - dq));
+  }
+  if (out.count < 3) out.count = 0;
+}
+
+ShadowClipper::ShadowClipper(const SmallPolygon& source, const Vec3& sourceNormal,
+                             const SmallPolygon& receiver, const Vec3& receiverNormal,
+                             const std::vector<OccluderPolygon>& occluders,
+                             const std::vector<SolidPlanes>& solids)
+    : receiver_(receiver), sourceNormal_(sourceNormal), solids_(solids) {
+  const Vec3 cs = centreOf(source), cr = centreOf(receiver);
+  double size = (cs - cr).norm();
+  for (int k = 0; k < source.count; ++k)
+    size = std::max(size, (source.v[static_cast<std::size_t>(k)] - cr).norm());
+  eps_ = 1e-10 * size;
+  hullPlanes(source.v.data(), source.count, receiver.v.data(), receiver.count);
+  SmallPolygon front;
+  for (const OccluderPolygon& occluder : occluders) {
+    const std::vector<Vec3>* polygon = occluder.polygon;
+    if (polygon->size() < 3 || polygon->size() > SmallPolygon::kCapacity - 4) continue;
+    Occluder o;
+    clipToFront(polygon->data(), static_cast<int>(polygon->size()), source.v[0], sourceNormal, eps_, front);
+    clipToFront(front.v.data(), front.count, receiver.v[0], receiverNormal, eps_, o.polygon);
+    if (o.polygon.count < 3 || areaOf(o.polygon) <= 1e-20 * size * size) continue;
+    Vec3 n = Vec3::Zero();
+    for (int k = 0; k < o.polygon.count; ++k)
+      n += o.polygon.v[static_cast<std::size_t>(k)].cross(
+          o.polygon.v[static_cast<std::size_t>((k + 1) % o.polygon.count)]);
+    o.normal = n.normalized();
+    o.centre = centreOf(o.polygon);
+    o.solid = occluder.solid;
+    if (outsideHull(o)) continue;
+    all_.push_back(static_cast<int>(prepared_.size()));
+    prepared_.push_back(o);
+  }
+}
+
+void ShadowClipper::hullPlanes(const Vec3* a, int na, const Vec3* b, int nb) const {
+  planes_.clear();
+  // Faces of the hull of two convex polygons other than their own planes hold an edge of one and a vertex
+  // of the other.
+  auto tryPlane = [&](const Vec3& p, const Vec3& q, const Vec3& r) {
+    Vec3 n = (q - p).cross(r - p);
+    const double length = n.norm();
+    if (!(length > 0)) return;
+    n /= length;
+    bool above = false, below = false;
+    for (int k = 0; k < na && !(above && below); ++k) {
+      const double d = n.dot(a[k] - p);
+      above |= d > eps_;
+      below |= d < -eps_;
+    }
+    for (int k = 0; k < nb && !(above && below); ++k) {
+      const double d = n.dot(b[k] - p);
+      above |= d > eps_;
+      below |= d < -eps_;
+    }
+    if (above && below) return;
+    if (above) n = -n;  // outward: every hull point on or below
+    planes_.push_back({n, n.dot(p)});
+  };
+  for (int e = 0; e < na; ++e)
+    for (int k = 0; k < nb; ++k) tryPlane(a[e], a[(e + 1) % na], b[k]);
+  for (int e = 0; e < nb; ++e)
+    for (int k = 0; k < na; ++k) tryPlane(b[e], b[(e + 1) % nb], a[k]);
+}
+
+bool ShadowClipper::outsideHull(const Occluder& o) const {
+  for (const auto& [n, offset] : planes_) {
+    bool inside = false;
+    for (int k = 0; k < o.polygon.count && !inside; ++k)
+      inside = n.dot(o.polygon.v[static_cast<std::size_t>(k)]) - offset < -eps_;
+    if (!inside) return true;
+  }
+  return false;
+}
+
+void ShadowClipper::cull(const SourcePanel& panel, const std::vector<int>& in, std::vector<int>& out) const {
+  out.clear();
+  if (in.empty()) return;
+  hullPlanes(panel.v.data(), panel.count, receiver_.v.data(), receiver_.count);
+  for (int k : in)
+    if (!outsideHull(prepared_[static_cast<std::size_t>(k)])) out.push_back(k);
+}
+
+double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders) const {
+  pieces_.resize(1);
+  pieces_[0] = receiver_;
+  double sum = 0;
+  SmallPolygon inside, part;
+  std::array<Vec3, SmallPolygon::kCapacity> cone;
+  outside_.assign(solids_.size(), -1);
+  for (int index : occluders) {
+    const Occluder& o = prepared_[static_cast<std::size_t>(index)];
+    const double height = o.normal.dot(x - o.centre);
+    if (std::abs(height) <= eps_) continue;  // seen edge-on: hides no area
+    if (o.solid >= 0 && height < 0) {
+      signed char& outside = outside_[static_cast<std::size_t>(o.solid)];
+      if (outside < 0) {
+        outside = 0;
+        for (const auto& [n, offset] : solids_[static_cast<std::size_t>(o.solid)])
+          if (n.dot(x) - offset > eps_) outside = 1;
+      }
+      if (outside == 1) continue;  // a back face of a solid x is outside of: its front faces cover it
+    }
+    const int m = o.polygon.count;
+    for (int k = 0; k < m; ++k) {
+      const Vec3 a = o.polygon.v[static_cast<std::size_t>(k)] - x,
+                 b = o.polygon.v[static_cast<std::size_t>((k + 1) % m)] - x;
+      Vec3 n = a.cross(b);
+      if (n.dot(o.centre - x) < 0) n = -n;  // inward: the cone's inside in front
+      cone[static_cast<std::size_t>(k)] = n;
+    }
+    next_.clear();
+    for (const SmallPolygon& piece : pieces_) {
+      // Wholly outside one side plane: untouched by this shadow.
+      bool clear = false;
+      for (int k = 0; k < m && !clear; ++k) {
+        const double length = cone[static_cast<std::size_t>(k)].norm();
+        bool anyInside = false;
+        for (int v = 0; v < piece.count && !anyInside; ++v)
+          anyInside =
+              cone[static_cast<std::size_t>(k)].dot(piece.v[static_cast<std::size_t>(v)] - x) > eps_ * length;
+        clear = !anyInside;
+      }
+      if (clear) {
+        next_.push_back(piece);
+        continue;
+      }
+      inside = piece;
+      for (int k = 0; k < m && inside.count > 0; ++k) {
+        clipToFront(inside.v.data(), inside.count, x, -cone[static_cast<std::size_t>(k)], eps_, part);
+        if (part.count > 0) next_.push_back(part);
+        clipToFront(inside.v.data(), inside.count, x, cone[static_cast<std::size_t>(k)], eps_, part);
+        inside = part;
+      }
+      if (inside.count > 0) sum += lambertContourSum(x, sourceNormal_, inside.v.data(), inside.count);
+    }
+    pieces_.swap(next_);
+    if (pieces_.empty()) break;
+  }
+  return std::max(0.0, sum);
+}
+
+}  // namespace rt

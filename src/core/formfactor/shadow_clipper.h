@@ -1,0 +1,86 @@
+// The part of a receiver that occluders hide from one point, in double precision, and the form factor of it.
+//
+// From a point x on the source, an occluder O hides the part of the receiver R inside the cone from x over O.
+// Cutting R into convex pieces by the cone's side planes (planes through x and each edge of O) and dropping
+// the piece inside all of them removes that shadow exactly, up to rounding of the cut lines (~1e-16 of the
+// scene's size); one occluder after another, the pieces left are the visible part of R, and the dropped
+// pieces, which do not overlap, the hidden part. Lambert's formula on the dropped pieces gives the hidden
+// form factor F(dA_x -> hidden part of R). This is the exact reference's split path (src/exact) without its
+// exact predicates.
+//
+// Occluders are first clipped to what can cast a shadow (in front of the source's plane and of the
+// receiver's plane) and then culled against the convex hull of the source and the receiver: a convex
+// occluder that lies outside one face plane of that hull cannot cut any segment from source to receiver.
+// The same test on a part of the source (a panel) tells where visibility cannot change, so adaptive
+// quadrature splits only where it can.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/formfactor/source_panels.h"
+#include "core/vec.h"
+
+namespace rt {
+
+// A convex polygon of bounded size: each clip by a plane adds at most one vertex.
+struct SmallPolygon {
+  static constexpr int kCapacity = 32;
+  std::array<Vec3, kCapacity> v;
+  int count = 0;
+};
+
+// The part of `in` with normal . (p - origin) >= 0, vertices within `eps` (a length) of the plane counting
+// as on it; normal need not be unit. Empty (count 0) when less than a triangle is left.
+void clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& normal, double eps,
+                 SmallPolygon& out);
+
+// A closed convex solid (a block with its bottom): the outward planes of its faces (unit normal, offset).
+using SolidPlanes = std::vector<std::pair<Vec3, double>>;
+
+// An occluder: a convex polygon, counter-clockwise seen from its front, and the closed convex solid it
+// bounds (or -1). A segment from a point outside such a solid that crosses it enters through a face the
+// point is in front of, so from there the faces it sees from behind need not be clipped.
+struct OccluderPolygon {
+  const std::vector<Vec3>* polygon;
+  int solid = -1;
+};
+
+class ShadowClipper {
+ public:
+  // source and receiver already horizon-clipped against each other. Keeps the occluders that may cut a
+  // segment from the source to the receiver. `solids` outlives the clipper.
+  ShadowClipper(const SmallPolygon& source, const Vec3& sourceNormal, const SmallPolygon& receiver,
+                const Vec3& receiverNormal, const std::vector<OccluderPolygon>& occluders,
+                const std::vector<SolidPlanes>& solids);
+
+  // Indices of the occluders kept (all of them may block).
+  const std::vector<int>& occluders() const { return all_; }
+  // Of `in`, those that may cut a segment from `panel` to the receiver, into `out`.
+  void cull(const SourcePanel& panel, const std::vector<int>& in, std::vector<int>& out) const;
+  // F(dA_x -> the part of the receiver hidden by `occluders`) for x on the source.
+  double hidden(const Vec3& x, const std::vector<int>& occluders) const;
+
+ private:
+  struct Occluder {
+    SmallPolygon polygon;  // clipped to the front of the source's and the receiver's planes
+    Vec3 centre;
+    Vec3 normal;  // unit
+    int solid = -1;
+  };
+  // Outward face planes (unit normal, offset) of the convex hull of the points a and b.
+  void hullPlanes(const Vec3* a, int na, const Vec3* b, int nb) const;
+  bool outsideHull(const Occluder& o) const;
+
+  SmallPolygon receiver_;
+  Vec3 sourceNormal_;
+  double eps_ = 0;  // a length: 1e-10 of the pair's size
+  const std::vector<SolidPlanes>& solids_;
+  std::vector<Occluder> prepared_;
+  std::vector<int> all_;
+  mutable std::vector<std::pair<Vec3, double>> planes_;
+  mutable std::vector<SmallPolygon> pieces_, next_;
+  mutable std::vector<signed char> outside_;  // per solid, for the current point: -1 not yet known
+};
+
+}  // namespace rt
