@@ -21,20 +21,6 @@
 namespace rt::test {
 namespace {
 
-std::vector<std::vector<std::string>> readCsv(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
-
 // One run shared by the tests below: the furnace cube split 2 x 2 (24 elements) is solved in well under a
 // second.
 const std::string& benchOutput(std::string* log = nullptr) {

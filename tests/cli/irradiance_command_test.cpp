@@ -21,20 +21,6 @@ std::string writeFile(const std::string& dir, const std::string& name, const std
   return path;
 }
 
-std::vector<std::vector<std::string>> readCsv(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
-
 int column(const std::vector<std::string>& header, const std::string& name) {
   for (std::size_t k = 0; k < header.size(); ++k)
     if (header[k] == name) return static_cast<int>(k);

@@ -19,20 +19,6 @@
 namespace rt::test {
 namespace {
 
-std::vector<std::vector<std::string>> readCsv(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
-
 TEST(SolveCommand, FurnaceCubeGivesEOverOneMinusRho) {
   const std::string out = scratchDir("solve-furnace") + "/B.csv";
   std::string log;

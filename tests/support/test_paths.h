@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace rt::test {
 
@@ -14,5 +15,7 @@ std::string cliPath();                                // the radiosity executabl
 std::string scratchDir(const std::string& name);
 // Runs a command through the shell; returns its exit code and captures stdout+stderr.
 int runCommand(const std::string& command, std::string* output = nullptr);
+// The cells of a comma-separated file, row by row, as text (no quoting: the program's own CSV files).
+std::vector<std::vector<std::string>> readCsv(const std::string& path);
 
 }  // namespace rt::test
