@@ -90,8 +90,6 @@ void book(BookOptions o) {
   const auto printed = typeset::printBook(QString::fromStdString(print.string()),
                                           QString::fromStdString((out / "book.pdf").string()));
   fs::remove(print);
-  // WebEngine writes the PDF for its owner only; the book is for handing out.
-  fs::permissions(out / "book.pdf", fs::perms::group_read | fs::perms::others_read, fs::perm_options::add);
   if (!printed.maths.errors.empty()) fail(printed.maths.errors, "formula(s) did not typeset in the PDF");
   std::cout << out.string() << "/book.pdf: " << printed.pages << " pages\n";
 }

@@ -50,7 +50,6 @@ void printPdfs(const std::vector<std::string>& markdownFiles) {
     const auto printed =
         typeset::printBook(QString::fromStdString(print.string()), QString::fromStdString(pdf.string()));
     fs::remove(print);
-    fs::permissions(pdf, fs::perms::group_read | fs::perms::others_read, fs::perm_options::add);
     for (const std::string& e : printed.maths.errors) problems.push_back(md.string() + ": error: " + e);
   }
   if (!problems.empty()) {

@@ -1,5 +1,6 @@
 #include "typeset/book_printer.h"
 
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -149,6 +150,9 @@ PrintedBook printBook(const QString& htmlFile, const QString& pdfFile) {
   page.waitFor("Array.prototype.every.call(document.images, function (i) { return i.complete; })", 20000);
   book.pages = page.run(kPaginate).toInt();
   if (!page.printToPdf(pdfFile)) throw std::runtime_error(pdfFile.toStdString() + ": cannot write the PDF");
+  // WebEngine writes the PDF for its owner only; a book or a handout is for handing out.
+  QFile::setPermissions(pdfFile,
+                        QFile::permissions(pdfFile) | QFileDevice::ReadGroup | QFileDevice::ReadOther);
   return book;
 }
 

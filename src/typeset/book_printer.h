@@ -14,7 +14,8 @@ struct PrintedBook {
   MathsReport maths;
 };
 
-// Also prints any document written by lesson::printDocumentHtml (handouts, answer keys).
+// Also prints any document written by lesson::printDocumentHtml (handouts, answer keys). The PDF is readable
+// by all, as a document to hand out.
 // Throws std::runtime_error when the document cannot be loaded or the PDF cannot be written.
 PrintedBook printBook(const QString& htmlFile, const QString& pdfFile);
 
