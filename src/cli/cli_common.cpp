@@ -49,6 +49,16 @@ MeshOptions MeshArguments::optionsFor(const Scene& scene) const {
   return chosen;
 }
 
+void CameraArgument::add(CLI::App& command) {
+  command.add_option("--camera", text,
+                     "The view: \"position x y z target x y z up x y z fov_y_degrees f\" in scene units "
+                     "(default: the scene's camera, or one that frames the whole scene)");
+}
+
+void CameraArgument::applyTo(Scene& scene) const {
+  if (!text.empty()) scene.camera = parseCameraText(text, {"--camera", 0, {}});
+}
+
 Scene loadSceneReportingWarnings(const std::string& path) {
   Scene scene = loadScene(path);
   for (const std::string& w : scene.warnings) std::cerr << w << "\n";

@@ -38,6 +38,15 @@ struct MeshArguments {
   MeshOptions optionsFor(const Scene& scene) const;
 };
 
+// --camera "position x y z target x y z up x y z fov_y_degrees f": the view of every picture a command makes,
+// in place of the scene's own camera (or the default one looking at the whole scene).
+struct CameraArgument {
+  std::string text;
+  void add(CLI::App& command);
+  // Sets scene.camera when --camera was given; throws InputError naming --camera when the text is wrong.
+  void applyTo(Scene& scene) const;
+};
+
 // Loads and validates the scene, printing its warnings to stderr.
 Scene loadSceneReportingWarnings(const std::string& path);
 

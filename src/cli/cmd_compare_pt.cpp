@@ -20,6 +20,7 @@ namespace {
 
 struct CompareArguments {
   std::string scene;
+  CameraArgument camera;
   std::string output = "compare-pt";
   SolutionArguments solution;
   int width = 160, height = 160;
@@ -38,7 +39,8 @@ void writeImages(const std::string& folder, const std::string& name, const RgbIm
 
 void run(const CompareArguments& a) {
   std::filesystem::create_directories(a.output);
-  const Scene scene = loadSceneReportingWarnings(a.scene);
+  Scene scene = loadSceneReportingWarnings(a.scene);
+  a.camera.applyTo(scene);
   requireLight(scene);
   const Camera camera = scene.cameraOrDefault();
   auto start = std::chrono::steady_clock::now();
@@ -112,6 +114,7 @@ void addComparePtCommand(CLI::App& app) {
       "error with the path tracer's noise taken out and a 95 % interval; images and error images");
   command->add_option("scene", a->scene, "Scene file (.json or .obj)")->required()->check(CLI::ExistingFile);
   a->solution.add(*command);
+  a->camera.add(*command);
   command->add_option("--output", a->output, "Folder for the images")->capture_default_str();
   command->add_option("--width", a->width, "Image width")->capture_default_str()->check(CLI::Range(1, 8192));
   command->add_option("--height", a->height, "Image height")

@@ -21,6 +21,7 @@ namespace {
 struct FigureArguments {
   std::string scene;
   MeshArguments mesh;
+  CameraArgument camera;
   std::string channel = "g";  // r, g or b
   viz::FigureRequest request;
   FigureArguments() { request.formFactors = defaultFormFactorMethod(); }
@@ -43,7 +44,8 @@ void run(FigureArguments& arguments, const CLI::App& command) {
   if (!a.input.empty()) {
     viz::drawTimingTableFigure(a);
   } else {
-    const Scene scene = loadSceneReportingWarnings(arguments.scene);
+    Scene scene = loadSceneReportingWarnings(arguments.scene);
+    arguments.camera.applyTo(scene);
     viz::drawFigure(scene, arguments.mesh.options(), a);
   }
   progress.finish();
@@ -75,6 +77,7 @@ void addFigureCommand(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(24.0, 1200.0));
   a->mesh.add(*command);
+  a->camera.add(*command);
   addDeprecatedAlias(
       *command, "--formfactors",
       addSettingOption(*command, "method", a->request.formFactors)->default_str(defaultFormFactorMethod()));

@@ -35,6 +35,7 @@ struct SolveArguments {
   std::string output;
   std::string ply;
   std::string image;
+  CameraArgument camera;
   int width = 1024, height = 1024;
   double exposure = 0.0;
   std::string toneMap = "linear";
@@ -145,7 +146,8 @@ void checkStatus(const SolveArguments& a, SolverStatus status, double error, int
 
 void run(const SolveArguments& a) {
   checkOutputPaths({a.output, a.image, a.ply});  // before the expensive part, not after it
-  const Scene scene = loadSceneReportingWarnings(a.scene);
+  Scene scene = loadSceneReportingWarnings(a.scene);
+  a.camera.applyTo(scene);
   requireLight(scene);
   if (!a.refineMode.empty()) return runRefined(a, scene);
   const std::string solverName = !a.s.solver.empty() ? a.s.solver
@@ -231,6 +233,7 @@ void addSolveCommand(CLI::App& app) {
                     "southwell/progressive: compute each shooter's row of F when it shoots (--formfactors "
                     "hemicube, the default here, or raycast) instead of storing the n x n matrix");
   a->s.mesh.add(*command);
+  a->camera.add(*command);
   command->add_option("--output", a->output,
                       "Write B per element as CSV (element,patch,surface,area,B_r,B_g,B_b,x,y,z,nx,ny,nz: "
                       "the centroid and the unit normal)");

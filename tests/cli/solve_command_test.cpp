@@ -185,6 +185,35 @@ TEST(SolveCommand, CornellBoxImageShowsColourBleeding) {
   EXPECT_GT(leftRed, 1.5 * leftGreen) << "the left (red) wall should look red";
   EXPECT_GT(rightGreen, 1.2 * rightRed) << "the right (green) wall should look green";
 }
+
+// --camera replaces the scene's view: from high up at the back wall looking out of the open side, the red
+// wall is on the right and the green one on the left. A camera that cannot be read is an input error naming
+// --camera.
+TEST(SolveCommand, CameraOptionSetsTheView) {
+  const std::string dir = scratchDir("solve-camera");
+  std::string log;
+  const std::string base = cliPath() + " solve " + sourcePath("scenes/cornell-box.json") +
+                           " --max-edge 100 --width 200 --height 200 --image " + dir + "/turned.png";
+  ASSERT_EQ(
+      runCommand(base + " --camera 'position 278 500 550 target 278 350 0 up 0 1 0 fov_y_degrees 80'", &log),
+      0)
+      << log;
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName((dir + "/turned.png").c_str());
+  reader->Update();
+  vtkImageData* image = reader->GetOutput();
+  double leftRed = 0, leftGreen = 0, rightRed = 0, rightGreen = 0;
+  for (int y = 70; y < 140; ++y)  // a band across the middle: walls at both sides, no block, no ceiling
+    for (int x = 0; x < 200; ++x) {
+      const auto* p = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
+      if (x < 20) leftRed += p[0], leftGreen += p[1];
+      if (x >= 180) rightRed += p[0], rightGreen += p[1];
+    }
+  EXPECT_GT(rightRed, 1.5 * rightGreen) << "the red wall should be on the right";
+  EXPECT_GT(leftGreen, 1.2 * leftRed) << "the green wall should be on the left";
+  EXPECT_EQ(runCommand(base + " --camera 'eye 1 2 3'", &log), 3) << log;
+  EXPECT_NE(log.find("--camera: error: camera: unknown word 'eye'"), std::string::npos) << log;
+}
 #endif
 
 }  // namespace

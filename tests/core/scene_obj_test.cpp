@@ -242,7 +242,7 @@ TEST(SceneObj, TruncatedAndCorruptedFilesGiveInputErrorsOnly) {
 }
 
 TEST(SceneObj, RejectsBadCameraComment) {
-  expectRejected(replaced(kObj, "fov_y_degrees 30", "fov_y_degrees"), kMtl, "two.obj:3", "camera comment");
+  expectRejected(replaced(kObj, "fov_y_degrees 30", "fov_y_degrees"), kMtl, "two.obj:3", "camera: ");
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "core/input_error.h"
 #include "core/scene.h"
 
 namespace rt {
@@ -23,6 +24,10 @@ Scene loadSceneObj(const std::string& path);
 // the mtllib name), or nullopt when it cannot be read. Tests and fuzzing use it.
 using MtlSource = std::function<std::optional<std::string>(const std::string& path)>;
 Scene parseSceneObj(const std::string& text, const std::string& fileName, const MtlSource& mtlText);
+
+// A camera as text, "position x y z target x y z up x y z fov_y_degrees f" (any order, every word once): the
+// OBJ files' camera comment and the programs' --camera. Throws InputError at `where` naming what is wrong.
+Camera parseCameraText(const std::string& text, const SourceLocation& where);
 
 // Checks the invariants every loader guarantees (convex planar non-degenerate patches, finite coordinates,
 // reflectance in [0,1), emission >= 0 and finite). Throws InputError naming the patch's origin.

@@ -48,48 +48,6 @@ struct ObjScan {
   std::optional<Camera> camera;
 };
 
-// "# camera: position x y z target x y z up x y z fov_y_degrees f": OBJ has no camera, a comment keeps it
-// with the file.
-Camera parseCameraComment(const std::string& text, const SourceLocation& where) {
-  const std::vector<std::string> words = splitWords(text);
-  Camera camera;
-  auto numbers = [&](std::size_t at, int count) {
-    std::vector<double> out;
-    for (int k = 0; k < count; ++k) {
-      const std::optional<double> x = at + k < words.size() ? parseNumber(words[at + k]) : std::nullopt;
-      if (!x || !std::isfinite(*x))
-        throw InputError(where,
-                         "camera comment: '" + words[at - 1] + "' needs " + std::to_string(count) +
-                             " finite numbers (expected '# camera: position x y z target x y z up x y z "
-                             "fov_y_degrees f')");
-      out.push_back(*x);
-    }
-    return out;
-  };
-  for (std::size_t i = 0; i < words.size();) {
-    const std::string& key = words[i++];
-    const int count = key == "fov_y_degrees" ? 1 : 3;
-    if (key != "position" && key != "target" && key != "up" && key != "fov_y_degrees")
-      throw InputError(where, "camera comment: unknown word '" + key + "'");
-    const std::vector<double> v = numbers(i, count);
-    i += count;
-    if (key == "fov_y_degrees") {
-      camera.fovYDegrees = v[0];
-    } else {
-      (key == "position" ? camera.position
-       : key == "target" ? camera.target
-                         : camera.up) = Vec3(v[0], v[1], v[2]);
-    }
-  }
-  if (!(camera.fovYDegrees > 0 && camera.fovYDegrees < 180))
-    throw InputError(where, "camera comment: field of view outside (0, 180) degrees");
-  if ((camera.target - camera.position).norm() == 0 ||
-      camera.up.cross(camera.target - camera.position).norm() == 0)
-    throw InputError(where,
-                     "camera comment: target equals position, or up is parallel to the viewing direction");
-  return camera;
-}
-
 // Statements that say nothing a radiosity scene can use; skipped without a word.
 const std::set<std::string>& skippedStatements() {
   static const std::set<std::string> keys{"vt", "vn", "vp", "s", "lod", "shadow_obj", "trace_obj", "mg"};
@@ -105,7 +63,7 @@ void readMetaComment(const std::string& line, const SourceLocation& where, ObjSc
   const std::string value = trimmed(body.substr(colon + 1));
   if (word == "unit" && !value.empty()) scan.unit = value;
   if (word == "name") scan.name = value;
-  if (word == "camera") scan.camera = parseCameraComment(value, where);
+  if (word == "camera") scan.camera = parseCameraText(value, where);
 }
 
 Vec3 parseVertex(const std::vector<std::string>& words, const SourceLocation& where) {
@@ -205,6 +163,47 @@ std::vector<MtlMaterial> readLibraries(const ObjScan& scan, const std::string& p
 }
 
 }  // namespace
+
+// "# camera: position x y z target x y z up x y z fov_y_degrees f": OBJ has no camera, a comment keeps it
+// with the file.
+Camera parseCameraText(const std::string& text, const SourceLocation& where) {
+  const std::vector<std::string> words = splitWords(text);
+  Camera camera;
+  auto numbers = [&](std::size_t at, int count) {
+    std::vector<double> out;
+    for (int k = 0; k < count; ++k) {
+      const std::optional<double> x = at + k < words.size() ? parseNumber(words[at + k]) : std::nullopt;
+      if (!x || !std::isfinite(*x))
+        throw InputError(where,
+                         "camera: '" + words[at - 1] + "' needs " + std::to_string(count) +
+                             " finite numbers (expected '# camera: position x y z target x y z up x y z "
+                             "fov_y_degrees f')");
+      out.push_back(*x);
+    }
+    return out;
+  };
+  for (std::size_t i = 0; i < words.size();) {
+    const std::string& key = words[i++];
+    const int count = key == "fov_y_degrees" ? 1 : 3;
+    if (key != "position" && key != "target" && key != "up" && key != "fov_y_degrees")
+      throw InputError(where, "camera: unknown word '" + key + "'");
+    const std::vector<double> v = numbers(i, count);
+    i += count;
+    if (key == "fov_y_degrees") {
+      camera.fovYDegrees = v[0];
+    } else {
+      (key == "position" ? camera.position
+       : key == "target" ? camera.target
+                         : camera.up) = Vec3(v[0], v[1], v[2]);
+    }
+  }
+  if (!(camera.fovYDegrees > 0 && camera.fovYDegrees < 180))
+    throw InputError(where, "camera: field of view outside (0, 180) degrees");
+  if ((camera.target - camera.position).norm() == 0 ||
+      camera.up.cross(camera.target - camera.position).norm() == 0)
+    throw InputError(where, "camera: target equals position, or up is parallel to the viewing direction");
+  return camera;
+}
 
 Scene parseSceneObj(const std::string& text, const std::string& path, const MtlSource& mtlText) {
   ObjScan scan = scanObj(text, path);
