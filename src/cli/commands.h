@@ -19,6 +19,7 @@ void addBenchFormFactorsCommand(CLI::App& bench);
 void addBenchSolversCommand(CLI::App& bench);
 // `radiosity homework new`, `check` and `topics` share the `homework` parent.
 void addHomeworkNewCommand(CLI::App& homework);
+void addHomeworkPdfCommand(CLI::App& homework);
 void addHomeworkCheckCommand(CLI::App& homework);
 void addHomeworkTopicsCommand(CLI::App& homework);
 

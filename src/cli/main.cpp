@@ -60,6 +60,7 @@ int main(int argc, char** argv) {
   auto* homework = app.add_subcommand("homework", "Randomised exercises with answer keys, and their grading");
   homework->require_subcommand(1);
   rt::cli::addHomeworkNewCommand(*homework);
+  rt::cli::addHomeworkPdfCommand(*homework);
   rt::cli::addHomeworkCheckCommand(*homework);
   rt::cli::addHomeworkTopicsCommand(*homework);
   reportMissingFilesAsInputErrors(app);

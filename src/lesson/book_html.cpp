@@ -145,14 +145,14 @@ std::string printBookHtml(const std::vector<RenderedLesson>& lessons) {
 }
 
 std::string printDocumentHtml(const std::string& title, const std::string& markdown,
-                              const std::string& katexStyleUrl) {
+                              const std::string& katexStyleUrl, bool dense) {
   std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" +
                      escapeHtml(title) + "</title>\n<link rel=\"stylesheet\" href=\"" +
                      escapeHtml(katexStyleUrl) + "\">\n<style>\n" + bookStyleSheet() +
                      "@page { size: A4; margin: 0; }\n</style>\n</head>\n";
   // The page layout moves the children of #flow into pages, so the document's blocks must be its children.
-  return html + "<body class=\"print document\">\n<div id=\"flow\">\n" + markdownToHtml(markdown) +
-         "</div>\n</body>\n</html>\n";
+  return html + "<body class=\"print document" + (dense ? " dense" : "") + "\">\n<div id=\"flow\">\n" +
+         markdownToHtml(markdown) + "</div>\n</body>\n</html>\n";
 }
 
 std::string bookStyleSheet() {
@@ -193,6 +193,8 @@ body.print { font-size: 11pt; }
                       font-family: "DejaVu Sans", sans-serif; font-size: 9pt; color: #333; }
 .print figure img { max-height: 110mm; max-width: 100%; }
 .print .title-page { text-align: center; padding-top: 70mm; }
+.print.dense { font-size: 9pt; line-height: 1.35; }
+.print.dense .page { padding: 14mm 16mm 18mm; }
 .print .book-title { font-size: 2.4em; }
 .print .subtitle { font-size: 1.2em; color: #444; }
 )";

@@ -32,8 +32,9 @@ std::string printBookHtml(const std::vector<RenderedLesson>& lessons);
 // typesetter: A4 pages, the book's style inline, KaTeX's style sheet from `katexStyleUrl` (a file URL, so
 // that nothing has to be copied beside the document). Relative paths in the Markdown (figures) are relative
 // to where the HTML is written.
+// `dense`: smaller type and margins, for a long reference document such as a class's answer key.
 std::string printDocumentHtml(const std::string& title, const std::string& markdown,
-                              const std::string& katexStyleUrl);
+                              const std::string& katexStyleUrl, bool dense = false);
 // The style sheet shared by the pages and the printed book.
 std::string bookStyleSheet();
 

@@ -93,6 +93,12 @@ TEST(HomeworkCli, EveryHandoutAndTheKeyAreTypesetToPdf) {
   EXPECT_NE(text.find("Radiosity homework, student s05"), std::string::npos) << text;
   EXPECT_NE(text.find("Exercise 12"), std::string::npos) << text;
   EXPECT_EQ(text.find('$'), std::string::npos) << "raw maths left in the PDF:\n" << text;
+  // An instructor edits a handout and typesets it again.
+  std::ofstream(dir + "/s02/handout.md", std::ios::app)
+      << "\nBonus: show that $F_{ii} = 0$ for a flat patch.\n";
+  ASSERT_EQ(runCommand(cliPath() + " homework pdf " + dir + "/s02/handout.md", &log), 0) << log;
+  ASSERT_EQ(runCommand("pdftotext " + dir + "/s02/handout.pdf -", &text), 0);
+  EXPECT_NE(text.find("Bonus: show that"), std::string::npos) << text;
   std::string info;
   ASSERT_EQ(runCommand("pdfinfo " + dir + "/key.pdf", &info), 0) << info;
   EXPECT_NE(info.find("(A4)"), std::string::npos) << info;
