@@ -148,29 +148,8 @@ std::vector<int> ShaftCulling::patchPairCandidates(int a, int b) const {
   return out;
 }
 
-void ShaftCulling::candidates(int i, int j, std::vector<int>& patches) const {
-  if (!anyOccluder_) return;
-  const int a = elementPatch_[static_cast<std::size_t>(i)], b = elementPatch_[static_cast<std::size_t>(j)];
-  if (a == b) return;
-  Eigen::AlignedBox3d shaft = elementBoxes_[static_cast<std::size_t>(i)];
-  shaft.extend(elementBoxes_[static_cast<std::size_t>(j)]);
-  auto blocks = [&](int k) {
-    if (!BoxTree::overlaps(shaft, patches_[static_cast<std::size_t>(k)].box, eps_)) return false;
-    return ((sideOfElement(i, k) | sideOfElement(j, k)) & kBoth) == kBoth;
-  };
-  if (!pairCandidates_.empty()) {
-    for (int k : pairCandidates_[static_cast<std::size_t>(std::min(a, b)) * patchCount_ +
-                                 static_cast<std::size_t>(std::max(a, b))])
-      if (blocks(k)) patches.push_back(k);
-    return;
-  }
-  tree_.anyOverlapping(shaft, eps_, [&](int k) {
-    if (patchMayBlock(k, a, b) && blocks(k)) patches.push_back(k);
-    return false;
-  });
-}
-
-bool ShaftCulling::mayBeOccluded(int i, int j) const {
+template <class Visit>
+bool ShaftCulling::visitBlockers(int i, int j, Visit&& visit) const {
   if (!anyOccluder_) return false;
   const int a = elementPatch_[static_cast<std::size_t>(i)], b = elementPatch_[static_cast<std::size_t>(j)];
   if (a == b) return false;  // one planar patch: its elements cannot see each other at all
@@ -182,11 +161,24 @@ bool ShaftCulling::mayBeOccluded(int i, int j) const {
     return ((sideOfElement(i, k) | sideOfElement(j, k)) & kBoth) == kBoth;
   };
   if (!pairCandidates_.empty()) {
-    const auto& candidates = pairCandidates_[static_cast<std::size_t>(std::min(a, b)) * patchCount_ +
-                                             static_cast<std::size_t>(std::max(a, b))];
-    return std::any_of(candidates.begin(), candidates.end(), blocks);
+    for (int k : pairCandidates_[static_cast<std::size_t>(std::min(a, b)) * patchCount_ +
+                                 static_cast<std::size_t>(std::max(a, b))])
+      if (blocks(k) && visit(k)) return true;
+    return false;
   }
-  return tree_.anyOverlapping(shaft, eps_, [&](int k) { return patchMayBlock(k, a, b) && blocks(k); });
+  return tree_.anyOverlapping(shaft, eps_,
+                              [&](int k) { return patchMayBlock(k, a, b) && blocks(k) && visit(k); });
+}
+
+void ShaftCulling::candidates(int i, int j, std::vector<int>& patches) const {
+  visitBlockers(i, j, [&](int k) {
+    patches.push_back(k);
+    return false;
+  });
+}
+
+bool ShaftCulling::mayBeOccluded(int i, int j) const {
+  return visitBlockers(i, j, [](int) { return true; });
 }
 
 bool ShaftCulling::mayBeOccluded(const Vec3& point, const Vec3& normal, int pointPatch, int j) const {

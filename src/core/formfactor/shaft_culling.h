@@ -47,6 +47,10 @@ class ShaftCulling {
   std::uint8_t sideOfElement(int e, int plane) const;  // element e against a patch's plane
   bool patchMayBlock(int k, int a, int b) const;       // (2) and (3) for whole patches
   std::vector<int> patchPairCandidates(int a, int b) const;
+  // Calls visit(k) for each patch k that may block some segment from element i to j, until visit returns
+  // true; returns whether it did. The one test behind mayBeOccluded(i, j) and candidates().
+  template <class Visit>
+  bool visitBlockers(int i, int j, Visit&& visit) const;
 
   const Mesh& mesh_;
   std::vector<PatchInfo> patches_;
