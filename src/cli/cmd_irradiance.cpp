@@ -23,11 +23,43 @@ struct IrradianceArguments {
   std::string output;
   SolutionArguments solution;
   TwoPassOptions twoPass;
-  int pathTrace = 0;  // paths per point; 0: the two-pass method
+  int pathTrace = 0;      // paths per point; 0: the two-pass method
+  bool meshError = true;  // estimate the solution's mesh error from a second solve on a coarser mesh
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<PointEstimate> twoPassEstimates(const Scene& scene, const TracingScene& tracing,
+                                            const MeshOptions& mesh, const IrradianceArguments& a,
+                                            const std::vector<SurfacePoint>& points,
+                                            std::chrono::steady_clock::time_point start) {
+  Pipeline pipeline;
+  const Solution solution = solveOnMesh(scene, mesh, a.solution, pipeline);
+  const double solved = secondsSince(start);
+  TwoPassOptions options = a.twoPass;
+  options.seed = a.solution.seed;
+  const TwoPass twoPass(tracing, solution.mesh, solution.outcome.B,
+                        solution.formFactors ? &solution.formFactors->F : nullptr);
+  std::vector<PointEstimate> estimates = twoPass.estimate(points, options);
+  std::fprintf(stderr,
+               "two-pass: %zu points, solution (%zu elements) %.2f s, direct light and gather %.2f s\n",
+               points.size(), solution.mesh.size(), solved, secondsSince(start) - solved);
+  return estimates;
+}
+
+// The mesh error of the fine solution, estimated from its difference to the coarse one's at each point. With
+// the same seed both passes draw the same rays, so the difference is the meshes' and not noise. If the error
+// falls like h^p in the element size h, e(h) = (e(2h) - e(h)) / (2^p - 1): at most the difference for p >= 1
+// (piecewise-constant radiosity where the light is smooth), at most twice it for p >= 0.58 (along shadow
+// boundaries the elements straddle, where it converges more slowly). Twice the difference is written.
+void addMeshErrors(std::vector<PointEstimate>& fine, const std::vector<PointEstimate>& coarse) {
+  constexpr double kSlowestOrderFactor = 2;
+  for (std::size_t p = 0; p < fine.size(); ++p) {
+    fine[p].HMeshError = kSlowestOrderFactor * (fine[p].H - coarse[p].H).abs();
+    fine[p].BMeshError = kSlowestOrderFactor * (fine[p].B - coarse[p].B).abs();
+  }
 }
 
 void run(const IrradianceArguments& a) {
@@ -47,17 +79,16 @@ void run(const IrradianceArguments& a) {
     std::fprintf(stderr, "path tracing: %zu points x %d paths, %.3g rays, %.2f s\n", points.size(),
                  a.pathTrace, static_cast<double>(tracer.raysCast()), secondsSince(start));
   } else {
-    Pipeline pipeline;
-    const Solution solution = solveOnMesh(scene, a.solution, pipeline);
-    const double solved = secondsSince(start);
-    TwoPassOptions options = a.twoPass;
-    options.seed = a.solution.seed;
-    const TwoPass twoPass(tracing, solution.mesh, solution.outcome.B,
-                          solution.formFactors ? &solution.formFactors->F : nullptr);
-    estimates = twoPass.estimate(points, options);
-    std::fprintf(stderr,
-                 "two-pass: %zu points, solution (%zu elements) %.2f s, direct light and gather %.2f s\n",
-                 points.size(), solution.mesh.size(), solved, secondsSince(start) - solved);
+    const MeshOptions mesh = a.solution.mesh.optionsFor(scene);
+    estimates = twoPassEstimates(scene, tracing, mesh, a, points, start);
+    MeshOptions coarser;
+    if (a.meshError && coarserMesh(mesh, coarser)) {
+      const auto coarse = std::chrono::steady_clock::now();
+      std::cerr << "mesh error: the same points on a mesh with elements twice the size\n";
+      addMeshErrors(estimates, twoPassEstimates(scene, tracing, coarser, a, points, coarse));
+    } else if (a.meshError) {
+      std::cerr << "mesh error: not estimated (one element per polygon cannot be made coarser)\n";
+    }
   }
   std::vector<std::string> surfaces(points.size());
   std::size_t nowhere = 0, first = 0;
@@ -96,8 +127,9 @@ void addIrradianceCommand(CLI::App& app) {
       ->check(CLI::ExistingFile);
   command
       ->add_option("--output", a->output,
-                   "CSV, one row per point in order: x,y,z,nx,ny,nz,surface,H_r,H_g,H_b,B_r,B_g,B_b and the "
-                   "standard error of each (H_r_error...)")
+                   "CSV, one row per point in order: x,y,z,nx,ny,nz,surface,H_r,H_g,H_b,B_r,B_g,B_b, the "
+                   "standard error of each (H_r_error...) and the estimate of the mesh's error "
+                   "(H_r_mesh_error...)")
       ->required();
   a->solution.add(*command);
   command->add_option("--gather-rays", a->twoPass.gatherRays, "Final-gather rays per point")
@@ -108,6 +140,10 @@ void addIrradianceCommand(CLI::App& app) {
                    "Shadow rays per point and emitter, only where the shaft test finds a possible blocker")
       ->capture_default_str()
       ->check(CLI::Range(16, 1 << 20));
+  command->add_flag(
+      "!--no-mesh-error", a->meshError,
+      "Skip the mesh-error estimate (by default the points are computed a second time on a mesh with "
+      "elements twice the size, and the difference is written as H_r_mesh_error...)");
   command
       ->add_option("--path-trace", a->pathTrace,
                    "Path-trace each point with this many paths instead (no mesh, no solve: the reference)")

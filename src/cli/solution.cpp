@@ -108,10 +108,28 @@ SolveOutcome solveMesh(const Mesh& mesh, const SolutionArguments& a, Pipeline& p
 }
 
 Solution solveOnMesh(const Scene& scene, const SolutionArguments& a, Pipeline& pipeline) {
+  return solveOnMesh(scene, a.mesh.optionsFor(scene), a, pipeline);
+}
+
+Solution solveOnMesh(const Scene& scene, const MeshOptions& mesh, const SolutionArguments& a,
+                     Pipeline& pipeline) {
   if (!a.solver.empty()) makeSolver(a.solver);  // an unknown name fails before the expensive part
-  Solution solution{buildMesh(scene, a.mesh.optionsFor(scene)), {}};
+  Solution solution{buildMesh(scene, mesh), {}};
   solution.outcome = solveMesh(solution.mesh, a, pipeline, &solution.formFactors);
   return solution;
+}
+
+bool coarserMesh(const MeshOptions& mesh, MeshOptions& coarser) {
+  coarser = mesh;
+  if (mesh.mode == MeshOptions::Mode::MaxEdge && mesh.maxEdge > 0) {
+    coarser.maxEdge = 2 * mesh.maxEdge;
+    return true;
+  }
+  if (mesh.mode == MeshOptions::Mode::Count && mesh.count >= 2) {
+    coarser.count = mesh.count / 2;
+    return true;
+  }
+  return false;
 }
 
 }  // namespace rt::cli

@@ -47,6 +47,12 @@ struct Solution {
 // a solver that does not read it) and solves, reporting as `solve` does. Throws std::runtime_error when the
 // solver fails outright; a solve that stops at its iteration cap is returned with a warning on stderr.
 Solution solveOnMesh(const Scene& scene, const SolutionArguments& arguments, Pipeline& pipeline);
+// The same on a mesh of the caller's choosing.
+Solution solveOnMesh(const Scene& scene, const MeshOptions& mesh, const SolutionArguments& arguments,
+                     Pipeline& pipeline);
+// The mesh with elements twice the size (half the splits), whose solution's difference to this one's
+// estimates this one's mesh error; false when the mesh cannot be coarsened (one element per polygon).
+bool coarserMesh(const MeshOptions& mesh, MeshOptions& coarser);
 // The pipeline part alone, on a mesh already built; `formFactors`, when given, receives F.
 SolveOutcome solveMesh(const Mesh& mesh, const SolutionArguments& arguments, Pipeline& pipeline,
                        std::shared_ptr<const CachedFormFactors>* formFactors = nullptr);

@@ -96,6 +96,44 @@ TEST(IrradianceCommand, TwoPassAgreesWithThePathTracer) {
   }
 }
 
+// The error estimate against the stored long path-traced reference on the closed Cornell box's floor
+// (tests/data/pathtrace): the Monte Carlo standard errors alone leave out the solution's mesh error, which is
+// most of the error here; with the mesh-error estimate added, H +- (3 sigma + mesh error) holds the reference
+// at all but a few of the values.
+TEST(IrradianceCommand, ErrorEstimateCoversTheErrorAgainstALongPathTracedRun) {
+  const std::string dir = scratchDir("irradiance-covers");
+  std::string log;
+  ASSERT_EQ(runCommand(cliPath() + " irradiance " + sourcePath("scenes/cornell-box-closed.json") +
+                           " --points " + sourcePath("tests/data/pathtrace/cornell-closed-floor-points.csv") +
+                           " --output " + dir + "/H.csv",
+                       &log),
+            0)
+      << log;
+  EXPECT_NE(log.find("mesh error: the same points on a mesh with elements twice the size"), std::string::npos)
+      << log;
+  const auto a = readCsv(dir + "/H.csv");
+  const auto b = readCsv(sourcePath("tests/data/pathtrace/cornell-closed-floor-reference.csv"));
+  ASSERT_EQ(a.size(), b.size());
+  int values = 0, withinNoise = 0, covered = 0;
+  for (const char* channel : {"r", "g", "b"}) {
+    const std::string H = std::string("H_") + channel;
+    const int value = column(a[0], H), error = column(a[0], H + "_error"),
+              mesh = column(a[0], H + "_mesh_error");
+    const int reference = column(b[0], H), referenceError = column(b[0], H + "_error");
+    for (std::size_t r = 1; r < a.size(); ++r) {
+      const double difference = std::abs(std::stod(a[r][static_cast<std::size_t>(value)]) -
+                                         std::stod(b[r][static_cast<std::size_t>(reference)]));
+      const double sigma = std::hypot(std::stod(a[r][static_cast<std::size_t>(error)]),
+                                      std::stod(b[r][static_cast<std::size_t>(referenceError)]));
+      ++values;
+      withinNoise += difference <= 3 * sigma;
+      covered += difference <= 3 * sigma + std::stod(a[r][static_cast<std::size_t>(mesh)]);
+    }
+  }
+  EXPECT_GE(covered, 0.95 * values) << withinNoise << " of " << values << " within 3 sigma alone";
+  EXPECT_LT(withinNoise, 0.9 * values);  // the mesh error is what the standard errors alone miss
+}
+
 struct BadPoints {
   const char* text;
   const char* where;    // file:line the message must name

@@ -1,11 +1,13 @@
-// The two-pass point query: direct light exact where nothing can block (Lambert's formula, no rays, no
-// error), shadow rays where something can, and the final gather from a solution; checked against the path
-// tracer on a room with a block that casts shadows on the floor.
+// The two-pass point query: direct light exact (Lambert's formula where nothing can block, less the part of
+// the light the blockers hide, cut out exactly, where something can), and the final gather from a solution;
+// checked against many shadow rays and against the path tracer on a room with a block that casts shadows on
+// the floor.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/formfactor/analytic.h"
+#include "core/formfactor/sampling.h"
 #include "core/pathtrace/path_tracer.h"
 #include "core/pathtrace/two_pass.h"
 #include "core/pipeline/pipeline.h"
@@ -39,6 +41,47 @@ TEST(TwoPass, DirectLightIsLambertsFormulaWhereNothingCanBlock) {
     EXPECT_NEAR(H(0), F, 1e-14);
     EXPECT_EQ(error(0), 0.0);  // no ray was needed
   }
+}
+
+// Through the block's penumbra and umbra, the direct light is the unoccluded form factor less the hidden
+// part's, with no rays and no error; a million shadow rays to uniform points of the light agree within their
+// standard error.
+TEST(TwoPass, ShadowedDirectLightIsExact) {
+  const Scene scene = test::roomWithBlock();  // a unit room, the top emits, a block on the floor
+  const TracingScene tracing(scene);
+  const PipelineOutput solved = solve(scene, 2);
+  const TwoPass twoPass(tracing, *solved.mesh, solved.solve.B, solved.F.get());
+  const Patch* light = nullptr;
+  for (const Patch& patch : scene.patches)
+    if (scene.materialOf(patch).emission(0) > 0) light = &patch;
+  ASSERT_NE(light, nullptr);
+  const double lightArea = polygonArea(light->vertices);
+  const PolygonSampler sampler(light->vertices.data(), static_cast<int>(light->vertices.size()));
+  int shadowed = 0;
+  for (double x : {0.02, 0.12, 0.2, 0.29, 0.71, 0.8, 0.9}) {
+    const Vec3 p(x, 0.47, 0);
+    const int element = tracing.locate({p, Vec3::UnitZ()});
+    ASSERT_GE(element, 0);
+    Rgb error;
+    const double H = twoPass.direct({p, Vec3::UnitZ()}, element, TwoPassOptions(), 0, error)(0);
+    EXPECT_EQ(error(0), 0.0);
+    shadowed += H < 0.95 * pointToPolygonFormFactor(p, Vec3::UnitZ(), light->vertices);
+    constexpr int kRays = 1 << 20;
+    PairRandom random(3, static_cast<std::uint64_t>(x * 1000), 0);
+    double sum = 0, squares = 0;
+    for (int k = 0; k < kRays; ++k) {
+      const Vec3 y = sampler.point(random.uniform(), random.uniform());
+      double f = pointToPointKernel(p, Vec3::UnitZ(), y, light->normal) * lightArea;
+      if (f > 0 && !tracing.rays().visible(p, y, element,
+                                           tracing.elementOf(static_cast<int>(light - scene.patches.data()))))
+        f = 0;
+      sum += f;
+      squares += f * f;
+    }
+    const double mean = sum / kRays, sigma = std::sqrt((squares / kRays - mean * mean) / kRays);
+    EXPECT_NEAR(H, mean, 4 * sigma + 1e-12) << "x = " << x;
+  }
+  EXPECT_GE(shadowed, 4);  // the points do lie in the block's shadow
 }
 
 TEST(TwoPass, AgreesWithThePathTracerAroundABlock) {

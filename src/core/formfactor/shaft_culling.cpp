@@ -181,7 +181,9 @@ bool ShaftCulling::mayBeOccluded(int i, int j) const {
   return visitBlockers(i, j, [](int) { return true; });
 }
 
-bool ShaftCulling::mayBeOccluded(const Vec3& point, const Vec3& normal, int pointPatch, int j) const {
+template <class Visit>
+bool ShaftCulling::visitPointBlockers(const Vec3& point, const Vec3& normal, int pointPatch, int j,
+                                      Visit&& visit) const {
   if (!anyOccluder_) return false;
   const int b = elementPatch_[static_cast<std::size_t>(j)];
   Eigen::AlignedBox3d shaft = elementBoxes_[static_cast<std::size_t>(j)];
@@ -198,7 +200,19 @@ bool ShaftCulling::mayBeOccluded(const Vec3& point, const Vec3& normal, int poin
     const PatchInfo& p = patches_[static_cast<std::size_t>(k)];
     const double d = p.normal.dot(point - p.point);
     const std::uint8_t pointSide = d > eps_ ? kFront : d < -eps_ ? kBack : kOn;
-    return ((pointSide | sideOfElement(j, k)) & kBoth) == kBoth;
+    return ((pointSide | sideOfElement(j, k)) & kBoth) == kBoth && visit(k);
+  });
+}
+
+bool ShaftCulling::mayBeOccluded(const Vec3& point, const Vec3& normal, int pointPatch, int j) const {
+  return visitPointBlockers(point, normal, pointPatch, j, [](int) { return true; });
+}
+
+void ShaftCulling::candidates(const Vec3& point, const Vec3& normal, int pointPatch, int j,
+                              std::vector<int>& patches) const {
+  visitPointBlockers(point, normal, pointPatch, j, [&](int k) {
+    patches.push_back(k);
+    return false;
   });
 }
 

@@ -30,6 +30,9 @@ class ShaftCulling {
   // Appends to `patches` every patch that may block some segment from i to j (the patches for which
   // mayBeOccluded answers true). Thread-safe.
   void candidates(int i, int j, std::vector<int>& patches) const;
+  // The same between a point and element j (the patches for which the point's mayBeOccluded answers true).
+  void candidates(const Vec3& point, const Vec3& normal, int pointPatch, int j,
+                  std::vector<int>& patches) const;
   // A patch's extreme points in order around it (the convex hull of its elements' vertices).
   const std::vector<Vec3>& outline(int patch) const {
     return patches_[static_cast<std::size_t>(patch)].outline;
@@ -51,6 +54,9 @@ class ShaftCulling {
   // true; returns whether it did. The one test behind mayBeOccluded(i, j) and candidates().
   template <class Visit>
   bool visitBlockers(int i, int j, Visit&& visit) const;
+  // The same from a point (facing `normal`, on patch `pointPatch` or -1) to element j.
+  template <class Visit>
+  bool visitPointBlockers(const Vec3& point, const Vec3& normal, int pointPatch, int j, Visit&& visit) const;
 
   const Mesh& mesh_;
   std::vector<PatchInfo> patches_;

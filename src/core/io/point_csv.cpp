@@ -1,5 +1,6 @@
 #include "core/io/point_csv.h"
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -100,7 +101,8 @@ void writePointEstimates(const std::string& path, const std::vector<SurfacePoint
   std::ofstream out(path);
   if (!out) throw InputError({path}, "cannot write the output file");
   out << "x,y,z,nx,ny,nz,surface,H_r,H_g,H_b,B_r,B_g,B_b,H_r_error,H_g_error,H_b_error,B_r_error,B_g_error,"
-         "B_b_error\n";
+         "B_b_error,H_r_mesh_error,H_g_mesh_error,H_b_mesh_error,B_r_mesh_error,B_g_mesh_error,B_b_mesh_"
+         "error\n";
   char buffer[1024];
   for (std::size_t p = 0; p < points.size(); ++p) {
     const SurfacePoint& q = points[p];
@@ -108,10 +110,11 @@ void writePointEstimates(const std::string& path, const std::vector<SurfacePoint
     std::snprintf(
         buffer, sizeof buffer,
         "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.4g,%.4g,%.4g,%.4g,"
-        "%.4g,%.4g\n",
+        "%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g\n",
         q.position.x(), q.position.y(), q.position.z(), q.normal.x(), q.normal.y(), q.normal.z(),
         surfaces[p].c_str(), e.H(0), e.H(1), e.H(2), e.B(0), e.B(1), e.B(2), e.HError(0), e.HError(1),
-        e.HError(2), e.BError(0), e.BError(1), e.BError(2));
+        e.HError(2), e.BError(0), e.BError(1), e.BError(2), e.HMeshError(0), e.HMeshError(1), e.HMeshError(2),
+        e.BMeshError(0), e.BMeshError(1), e.BMeshError(2));
     out << buffer;
   }
   if (!out) throw InputError({path}, "error while writing the output file");
@@ -125,7 +128,16 @@ std::vector<PointEstimate> readPointEstimates(const std::string& path) {
   const std::vector<std::string> names{"H_r",       "H_g",       "H_b",       "B_r",
                                        "B_g",       "B_b",       "H_r_error", "H_g_error",
                                        "H_b_error", "B_r_error", "B_g_error", "B_b_error"};
-  const auto columns = columnsOf(splitCells(line), names, {path, 1});
+  const auto header = splitCells(line);
+  const auto columns = columnsOf(header, names, {path, 1});
+  // The mesh-error columns are the two-pass method's alone; files written before them lack them.
+  const std::vector<std::string> meshNames{"H_r_mesh_error", "H_g_mesh_error", "H_b_mesh_error",
+                                           "B_r_mesh_error", "B_g_mesh_error", "B_b_mesh_error"};
+  const bool hasMeshErrors = std::all_of(meshNames.begin(), meshNames.end(), [&](const std::string& n) {
+    return std::find(header.begin(), header.end(), n) != header.end();
+  });
+  const auto meshColumns =
+      hasMeshErrors ? columnsOf(header, meshNames, {path, 1}) : std::vector<std::size_t>();
   std::vector<PointEstimate> out;
   for (int lineNumber = 2; std::getline(in, line); ++lineNumber) {
     if (blank(line)) continue;
@@ -140,6 +152,11 @@ std::vector<PointEstimate> readPointEstimates(const std::string& path) {
                            names[static_cast<std::size_t>(c + 6)], where);
       e.BError(c) = number(cells, columns[static_cast<std::size_t>(c + 9)],
                            names[static_cast<std::size_t>(c + 9)], where);
+      if (!hasMeshErrors) continue;
+      e.HMeshError(c) = number(cells, meshColumns[static_cast<std::size_t>(c)],
+                               meshNames[static_cast<std::size_t>(c)], where);
+      e.BMeshError(c) = number(cells, meshColumns[static_cast<std::size_t>(c + 3)],
+                               meshNames[static_cast<std::size_t>(c + 3)], where);
     }
     out.push_back(e);
   }

@@ -15,8 +15,10 @@ namespace rt {
 // cells, a value that is not a finite number, or a zero normal. Normals are returned unit length.
 std::vector<SurfacePoint> readSurfacePoints(const std::string& path);
 
-// x,y,z,nx,ny,nz,surface,H_r,H_g,H_b,B_r,B_g,B_b,H_r_error,H_g_error,H_b_error,B_r_error,B_g_error,B_b_error.
-// `surface` names the surface each point lies on (empty: none found, and B is 0). Errors are standard errors.
+// x,y,z,nx,ny,nz,surface,H_r,H_g,H_b,B_r,B_g,B_b,H_r_error,H_g_error,H_b_error,B_r_error,B_g_error,B_b_error,
+// H_r_mesh_error,...,B_b_mesh_error. `surface` names the surface each point lies on (empty: none found, and B
+// is 0). The *_error columns are Monte Carlo standard errors; the *_mesh_error columns the estimate of what
+// the radiosity solution's mesh adds (0 where there is no mesh, as for the path tracer).
 void writePointEstimates(const std::string& path, const std::vector<SurfacePoint>& points,
                          const std::vector<PointEstimate>& estimates,
                          const std::vector<std::string>& surfaces);

@@ -17,6 +17,10 @@ struct PointEstimate {
   Rgb HError = Rgb::Zero();
   Rgb B = Rgb::Zero();
   Rgb BError = Rgb::Zero();
+  // The two-pass method's estimate of the error its radiosity solution's mesh brings in (a bound, not a
+  // standard error: see meshErrorEstimate in cli/solution.h); zero for the path tracer, which has no mesh.
+  Rgb HMeshError = Rgb::Zero();
+  Rgb BMeshError = Rgb::Zero();
   int element = -1;  // the surface the point lies on (-1: none, and B is 0)
 };
 

@@ -8,6 +8,7 @@
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/sampling.h"
+#include "core/formfactor/shadow_clipper.h"
 #include "core/pathtrace/path_tracer.h"
 
 namespace rt {
@@ -46,7 +47,11 @@ TwoPass::TwoPass(const TracingScene& tracing, const Mesh& solution, const RgbFie
       B_(B),
       shaft_(tracing.mesh()),
       solutionRays_(std::make_unique<RayScene>(solution)),
-      patchElement_(tracing.scene().patches.size(), -1) {
+      patchElement_(tracing.scene().patches.size(), -1),
+      patchPolygons_(tracing.scene().patches.size()) {
+  for (std::size_t e = 0; e < tracing.mesh().size(); ++e)
+    patchPolygons_[static_cast<std::size_t>(tracing.patchOf(static_cast<int>(e)))].push_back(
+        tracing.mesh().polygon(static_cast<int>(e)));
   for (std::size_t e = solution.size(); e-- > 0;)
     patchElement_[static_cast<std::size_t>(solution.elements[e].patch)] = static_cast<int>(e);
   receiving_ = receivingFractions(solution, *solutionRays_);
@@ -84,6 +89,26 @@ Rgb TwoPass::directSample(const Vec3& point, const Vec3& normal, int element, Pa
   return H;
 }
 
+double TwoPass::hiddenExactly(const Vec3& point, const Vec3& normal, int emitter,
+                              const std::vector<int>& blockers) const {
+  const Polygon light = tracing_.mesh().polygon(emitter);
+  const Vec3& lightNormal = tracing_.mesh().elements[static_cast<std::size_t>(emitter)].normal;
+  const double size = (light[0] - point).norm();
+  // The light's part above the point's horizon; the point itself is the clipper's one-vertex "source".
+  SmallPolygon source, receiver;
+  source.v[0] = point;
+  source.count = 1;
+  clipToFront(light.data(), static_cast<int>(light.size()), point, normal, 1e-12 * size, receiver);
+  if (receiver.count < 3) return 0;
+  std::vector<OccluderPolygon> occluders;
+  for (int k : blockers)
+    for (const Polygon& polygon : patchPolygons_[static_cast<std::size_t>(k)])
+      occluders.push_back({&polygon, -1});
+  static const std::vector<SolidPlanes> kNoSolids;
+  const ShadowClipper clipper(source, normal, receiver, lightNormal, occluders, kNoSolids);
+  return clipper.occluders().empty() ? 0 : clipper.hidden(point, clipper.occluders());
+}
+
 Rgb TwoPass::direct(const SurfacePoint& point, int element, const TwoPassOptions& options,
                     std::uint64_t index, Rgb& error) const {
   Rgb H = Rgb::Zero();
@@ -98,6 +123,14 @@ Rgb TwoPass::direct(const SurfacePoint& point, int element, const TwoPassOptions
     if (emitter.element == element) continue;
     const double unoccluded = pointToPolygonFormFactor(point.position, point.normal, emitter.polygon);
     if (unoccluded <= 0) continue;
+    if (element >= 0) {
+      std::vector<int> blockers;
+      shaft_.candidates(point.position, point.normal, patch, emitter.element, blockers);
+      const double hidden =
+          blockers.empty() ? 0 : hiddenExactly(point.position, point.normal, emitter.element, blockers);
+      H += emitter.emission * std::max(0.0, unoccluded - hidden);
+      continue;
+    }
     if (!shaft_.mayBeOccluded(point.position, point.normal, patch, emitter.element)) {
       H += emitter.emission * unoccluded;
       continue;

@@ -1,9 +1,11 @@
 // The two-pass method: a radiosity solution shown or queried through a second pass at each point. The
-// emitters' direct light is computed accurately at the point itself (Lambert's exact point-to-polygon form
-// factor where the shaft test proves that nothing can block, less the part shadow rays find hidden where
-// something can), and everything else arrives by one final gather from the solution: cosine-distributed rays
-// that take, at the element they hit, its solved radiosity minus its emission. The mesh's errors then only
-// enter through the indirect light, averaged over the hemisphere; shadows and the light's falloff are exact.
+// emitters' direct light is computed exactly at the point itself: Lambert's point-to-polygon form factor,
+// less, where the shaft test finds something that may block, the form factor of the part of the emitter that
+// the blockers' polygons hide from the point (cut out by the cones from the point over them, in double
+// precision; shadow rays only for a point on no known surface), and everything else arrives by one final
+// gather from the solution: cosine-distributed rays that take, at the element they hit, its solved radiosity
+// minus its emission. The mesh's errors then only enter through the indirect light, averaged over the
+// hemisphere; shadows and the light's falloff are exact.
 //
 // Given the solution's form factors, the gather goes one step further: what the hit element reflects is split
 // into the direct light it receives, which the solution only knows as an average over the element, and the
@@ -67,6 +69,10 @@ class TwoPass {
   // The indirect irradiance at a point of solution element `element`: cosine rays taking B - E where they
   // hit.
   Rgb secondaryGather(const Vec3& point, const Vec3& normal, int element, int rays, PairRandom& random) const;
+  // F(dA at the point -> the part of emitter element `emitter` that the patches in `blockers` hide), exactly:
+  // the emitter is cut by the cones from the point over each blocker's polygons (ShadowClipper).
+  double hiddenExactly(const Vec3& point, const Vec3& normal, int emitter,
+                       const std::vector<int>& blockers) const;
   // One-sample unbiased estimate of the emitters' direct irradiance at a point of tracing element `element`.
   Rgb directSample(const Vec3& point, const Vec3& normal, int element, PairRandom& random) const;
 
@@ -75,7 +81,8 @@ class TwoPass {
   const RgbField& B_;
   ShaftCulling shaft_;
   std::unique_ptr<RayScene> solutionRays_;
-  std::vector<int> patchElement_;  // per patch: one element of the solution's mesh on it
+  std::vector<int> patchElement_;                    // per patch: one element of the solution's mesh on it
+  std::vector<std::vector<Polygon>> patchPolygons_;  // per patch: the polygons of its tracing elements
   // With form factors: per solution element, the irradiance that is not the emitters' direct light,
   // (B - E) / rho - sum_l F_il E_l, per channel (0 where rho is 0).
   RgbField indirect_;
