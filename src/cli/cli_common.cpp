@@ -18,7 +18,12 @@ void MeshArguments::add(CLI::App& command) {
   auto* edge =
       command.add_option("--max-edge", maxEdge, "Split patches until no edge is longer than L (scene units)")
           ->check(CLI::PositiveNumber);
-  none->excludes(count)->excludes(edge);
+  auto* contacts =
+      command.add_flag("--split-at-contacts", splitAtContacts,
+                       "With --max-edge or --subdivide: first cut every patch along the lines where other "
+                       "surfaces stand on it, "
+                       "as the default mesh does, so that no element straddles a block's footprint");
+  none->excludes(count)->excludes(edge)->excludes(contacts);
   count->excludes(edge);
 }
 
@@ -31,6 +36,7 @@ MeshOptions MeshArguments::options() const {
     o.mode = MeshOptions::Mode::MaxEdge;
     o.maxEdge = maxEdge;
   }
+  o.splitAtContacts = splitAtContacts && o.mode != MeshOptions::Mode::None;
   return o;
 }
 

@@ -31,6 +31,7 @@ struct MeshArguments {
   bool noSubdivide = false;
   int subdivide = 0;
   double maxEdge = 0.0;
+  bool splitAtContacts = false;  // with subdivide or maxEdge: cut along contact lines first
   void add(CLI::App& command);
   MeshOptions options() const;
   // options(), except that a scene given without any mesh option gets defaultMeshOptions, and stderr says

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 #include "cli/cli_common.h"
@@ -140,6 +141,14 @@ void addIrradianceCommand(CLI::App& app) {
                    "Shadow rays per point and emitter, only where the shaft test finds a possible blocker")
       ->capture_default_str()
       ->check(CLI::Range(16, 1 << 20));
+  command
+      ->add_option("--near-factor", a->twoPass.nearFactor,
+                   "Gather hits closer than this many element sizes gather their indirect light anew, one "
+                   "bounce further on (default: every hit)")
+      ->check(CLI::Range(0.0, std::numeric_limits<double>::infinity()));
+  command->add_option("--near-rays", a->twoPass.nearRays, "Rays of that secondary gather")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1 << 16));
   command->add_flag(
       "!--no-mesh-error", a->meshError,
       "Skip the mesh-error estimate (by default the points are computed a second time on a mesh with "

@@ -97,15 +97,15 @@ TEST(IrradianceCommand, TwoPassAgreesWithThePathTracer) {
 }
 
 // The error estimate against the stored long path-traced reference on the closed Cornell box's floor
-// (tests/data/pathtrace): the Monte Carlo standard errors alone leave out the solution's mesh error, which is
-// most of the error here; with the mesh-error estimate added, H +- (3 sigma + mesh error) holds the reference
-// at all but a few of the values.
+// (tests/data/pathtrace), on a coarse mesh (elements across the blocks' footprints): the Monte Carlo standard
+// errors alone leave out the solution's mesh error, which is most of the error there; with the mesh-error
+// estimate added, H +- (3 sigma + mesh error) holds the reference at all but a few of the values.
 TEST(IrradianceCommand, ErrorEstimateCoversTheErrorAgainstALongPathTracedRun) {
   const std::string dir = scratchDir("irradiance-covers");
   std::string log;
   ASSERT_EQ(runCommand(cliPath() + " irradiance " + sourcePath("scenes/cornell-box-closed.json") +
                            " --points " + sourcePath("tests/data/pathtrace/cornell-closed-floor-points.csv") +
-                           " --output " + dir + "/H.csv",
+                           " --max-edge 120 --output " + dir + "/H.csv",
                        &log),
             0)
       << log;
@@ -131,7 +131,7 @@ TEST(IrradianceCommand, ErrorEstimateCoversTheErrorAgainstALongPathTracedRun) {
     }
   }
   EXPECT_GE(covered, 0.95 * values) << withinNoise << " of " << values << " within 3 sigma alone";
-  EXPECT_LT(withinNoise, 0.9 * values);  // the mesh error is what the standard errors alone miss
+  EXPECT_LT(withinNoise, 0.7 * values);  // the mesh error is what the standard errors alone miss
 }
 
 struct BadPoints {

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -33,8 +34,13 @@ struct TwoPassOptions {
   int gatherRays = 4096;  // final-gather rays per point
   int shadowRays = 256;   // per point and emitter, only where something may block
   int batches = 16;       // independent batches (standard errors from their spread)
-  double nearFactor = 2;  // gather hits closer than this many element sizes gather their indirect light anew
-  int nearRays = 16;      // with this many rays
+  // Gather hits closer than this many element sizes gather their indirect light anew, one bounce further on,
+  // with nearRays rays. At every hit by default: the solution's flat element averages then enter one bounce
+  // later, where the mesh's error is spread over the hit point's hemisphere, and the answer is unbiased with
+  // respect to the mesh to well within its noise (the closed Cornell box's floor: 95 % of the values within
+  // 3 sigma of the long path-traced reference, against 83 % when only hits within 2 element sizes do so).
+  double nearFactor = std::numeric_limits<double>::infinity();
+  int nearRays = 2;
   std::uint64_t seed = 1;
 };
 
