@@ -21,13 +21,6 @@ std::string writeFile(const std::string& dir, const std::string& name, const std
   return path;
 }
 
-int column(const std::vector<std::string>& header, const std::string& name) {
-  for (std::size_t k = 0; k < header.size(); ++k)
-    if (header[k] == name) return static_cast<int>(k);
-  ADD_FAILURE() << "no column " << name;
-  return 0;
-}
-
 const char* kCubePoints =
     "x,y,z,nx,ny,nz\n"
     "0.5,0,0.5,0,1,0\n"

@@ -88,6 +88,37 @@ TEST(SolveCommand, ASceneWithoutMeshOptionsGetsAMeshAndSaysWhich) {
   EXPECT_EQ(readCsv(out).size(), 1u + 20u);
 }
 
+// An explicit --max-edge keeps the plain grid; --split-at-contacts adds the default mesh's cuts along the
+// blocks' footprints, which make more elements, and the element centroids then never lie under a block.
+TEST(SolveCommand, SplitAtContactsCutsAnExplicitGridAlongTheFootprints) {
+  const std::string dir = scratchDir("solve-contacts");
+  std::string log;
+  const std::string base = cliPath() + " solve " + sourcePath("scenes/cornell-box.json") + " --max-edge 120";
+  ASSERT_EQ(runCommand(base + " --output " + dir + "/plain.csv", &log), 0) << log;
+  ASSERT_EQ(runCommand(base + " --split-at-contacts --output " + dir + "/cut.csv", &log), 0) << log;
+  const auto plain = readCsv(dir + "/plain.csv"), cut = readCsv(dir + "/cut.csv");
+  EXPECT_GT(cut.size(), plain.size() + 10);
+  // The cut mesh has floor elements wholly under the blocks (B = 0), which together are the two footprints
+  // (55,260 mm^2); on the plain grid every floor element under a block also reaches out beside it.
+  auto darkFloorArea = [](const std::vector<std::vector<std::string>>& rows) {
+    const int surface = column(rows[0], "surface"), area = column(rows[0], "area"),
+              B = column(rows[0], "B_g");
+    double sum = 0;
+    for (std::size_t r = 1; r < rows.size(); ++r)
+      if (rows[r][static_cast<std::size_t>(surface)] == "floor" &&
+          std::stod(rows[r][static_cast<std::size_t>(B)]) == 0)
+        sum += std::stod(rows[r][static_cast<std::size_t>(area)]);
+    return sum;
+  };
+  EXPECT_NEAR(darkFloorArea(cut), 55259.5, 1.0);
+  EXPECT_EQ(darkFloorArea(plain), 0.0);
+  // Without a mesh to cut it is refused as contradictory.
+  EXPECT_NE(runCommand(cliPath() + " solve " + sourcePath("scenes/cornell-box.json") +
+                           " --no-subdivide --split-at-contacts --output " + dir + "/none.csv",
+                       &log),
+            0);
+}
+
 // The PLY export: a face per element with its B, a vertex per element corner; in the furnace every value
 // is 2.
 TEST(SolveCommand, PlyCarriesRadiosityPerFaceAndVertex) {

@@ -1,5 +1,7 @@
 #include "support/test_paths.h"
 
+#include <gtest/gtest.h>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -57,6 +59,13 @@ std::vector<std::vector<std::string>> readCsv(const std::string& path) {
     rows.push_back(cells);
   }
   return rows;
+}
+
+int column(const std::vector<std::string>& header, const std::string& name) {
+  for (std::size_t k = 0; k < header.size(); ++k)
+    if (header[k] == name) return static_cast<int>(k);
+  ADD_FAILURE() << "no column " << name;
+  return 0;
 }
 
 }  // namespace rt::test

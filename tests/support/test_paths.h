@@ -17,5 +17,7 @@ std::string scratchDir(const std::string& name);
 int runCommand(const std::string& command, std::string* output = nullptr);
 // The cells of a comma-separated file, row by row, as text (no quoting: the program's own CSV files).
 std::vector<std::vector<std::string>> readCsv(const std::string& path);
+// The index of the column called `name` in a CSV header row (a test failure, and 0, when there is none).
+int column(const std::vector<std::string>& header, const std::string& name);
 
 }  // namespace rt::test
