@@ -24,8 +24,9 @@ struct CompareArguments {
   std::string output = "compare-pt";
   SolutionArguments solution;
   int width = 160, height = 160;
-  int paths = 1024;      // per pixel
-  int gatherRays = 256;  // per pixel of the two-pass picture
+  int paths = 1024;       // per pixel
+  int gatherRays = 256;   // per gathered pixel of the two-pass picture
+  int gatherSpacing = 1;  // gather at every this many pixels of a row and column, interpolate between
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -67,7 +68,7 @@ void run(const CompareArguments& a) {
   twoPassOptions.seed = a.solution.seed;
   const TwoPass twoPass(tracer.tracing(), solution.mesh, solution.outcome.B,
                         solution.formFactors ? &solution.formFactors->F : nullptr);
-  const RgbImage twoPassImage = twoPass.render(camera, a.width, a.height, twoPassOptions);
+  const RgbImage twoPassImage = twoPass.render(camera, a.width, a.height, twoPassOptions, a.gatherSpacing);
   const double twoPassSeconds = secondsSince(start);
 
   // One exposure for every picture: the path-traced image's mean maps to 18 % grey.
@@ -123,9 +124,19 @@ void addComparePtCommand(CLI::App& app) {
   command->add_option("--paths", a->paths, "Path-traced samples per pixel")
       ->capture_default_str()
       ->check(CLI::Range(2, 1 << 24));
-  command->add_option("--gather-rays", a->gatherRays, "Final-gather rays per pixel of the two-pass picture")
+  command
+      ->add_option("--gather-rays", a->gatherRays,
+                   "Final-gather rays per gathered pixel of the two-pass picture")
       ->capture_default_str()
       ->check(CLI::Range(16, 1 << 20));
+  command
+      ->add_option(
+          "--gather-spacing", a->gatherSpacing,
+          "Gather at every N-th pixel of each row and column of the two-pass picture and interpolate "
+          "the gathered light between those on the same surface (the direct light is exact at every "
+          "pixel)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 64));
   command->callback([a] { run(*a); });
 }
 

@@ -247,24 +247,4 @@ std::vector<PointEstimate> TwoPass::estimate(const std::vector<SurfacePoint>& po
   return out;
 }
 
-RgbImage TwoPass::render(const Camera& camera, int width, int height, const TwoPassOptions& options) const {
-  std::vector<SurfacePoint> points;
-  std::vector<int> elements;
-  std::vector<std::size_t> pixels;
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) {
-      const Vec3 direction = cameraRay(camera, width, height, x + 0.5, y + 0.5);
-      const RayHit hit = tracing_.rays().firstHit(camera.position, direction, -1);
-      if (hit.element < 0 || !hit.frontSide) continue;
-      points.push_back({camera.position + hit.distance * direction,
-                        tracing_.mesh().elements[static_cast<std::size_t>(hit.element)].normal});
-      elements.push_back(hit.element);
-      pixels.push_back(static_cast<std::size_t>(y) * width + x);
-    }
-  const std::vector<PointEstimate> estimates = estimate(points, elements, options);
-  RgbImage image(width, height);
-  for (std::size_t k = 0; k < points.size(); ++k) image.pixels[pixels[k]] = estimates[k].B;
-  return image;
-}
-
 }  // namespace rt

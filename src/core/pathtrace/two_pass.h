@@ -61,9 +61,12 @@ class TwoPass {
   std::vector<PointEstimate> estimate(const std::vector<SurfacePoint>& points,
                                       const std::vector<int>& elements, const TwoPassOptions& options) const;
 
-  // The two-pass picture: per pixel, the point the pixel's centre ray reaches first, and B there (E + rho H,
-  // H by estimate() with `options`). Back sides and nothing are black.
-  RgbImage render(const Camera& camera, int width, int height, const TwoPassOptions& options) const;
+  // The two-pass picture (two_pass_image.cpp): per pixel, the point the pixel's centre ray reaches first, and
+  // B there, E + rho H. The direct part of H is exact at every pixel; the gathered part, which varies slowly
+  // along a surface, is gathered (options.gatherRays rays) at every gatherSpacing-th pixel of each row and
+  // column and interpolated between those of the same patch. Back sides and nothing are black.
+  RgbImage render(const Camera& camera, int width, int height, const TwoPassOptions& options,
+                  int gatherSpacing = 1) const;
 
   // The emitters' direct irradiance alone, with its standard error (zero where no ray was needed).
   Rgb direct(const SurfacePoint& point, int element, const TwoPassOptions& options, std::uint64_t index,
