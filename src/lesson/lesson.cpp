@@ -7,7 +7,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 12> kViews{{
+constexpr std::array<std::pair<View, const char*>, 16> kViews{{
     {View::Scene, "scene"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
@@ -20,6 +20,10 @@ constexpr std::array<std::pair<View, const char*>, 12> kViews{{
     {View::Visibility, "visibility"},
     {View::Error, "error"},
     {View::Local, "local"},
+    {View::Traced, "traced"},
+    {View::Difference, "difference"},
+    {View::Noise, "noise"},
+    {View::TwoPass, "two-pass"},
 }};
 
 }  // namespace
@@ -74,6 +78,11 @@ const std::vector<StageInfo>& stageTable() {
        "exercise",
        "a homework exercise of `topic` drawn with `seed`: questions, Check, hint, worked solution",
        {}},
+      {Stage::PathTrace,
+       "pathtrace",
+       "B with `solver`; path-traced (`paths`), radiosity and two-pass images of `image-size`; noise against "
+       "paths; times",
+       {V::Scene, V::Traced, V::Difference, V::Noise, V::TwoPass}},
   };
   return table;
 }

@@ -30,6 +30,7 @@ enum class Stage {
   Benchmark,    // run time against error for methods over a parameter sweep
   Refine,       // meshes that follow the light: adaptive, discontinuity or hierarchical (core/refine)
   Exercise,     // a homework exercise (src/homework) the reader answers: questions, Check, hint, solution
+  PathTrace,    // the radiosity image against a path-traced one of the same equation, and the two-pass image
 };
 
 // The figures a step can ask for; the names match the viz layer's views.
@@ -45,7 +46,11 @@ enum class View {
   SweepError,  // error against the sweep's knob (samples, resolution), log-log
   Visibility,
   Error,
-  Local
+  Local,
+  Traced,      // path-traced and radiosity images side by side
+  Difference,  // |image - path-traced| of the radiosity and two-pass images
+  Noise,       // the path tracer's noise against its paths per pixel, log-log
+  TwoPass,     // the two-pass image beside the path-traced one
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.
@@ -115,6 +120,10 @@ struct StepParameters {
   std::string matrix = "F";  // matrix stage: the matrix shown, F, rhoF or K = I - rho F
   std::string from;          // the element or surface a hemicube/Nusselt/rays view is seen from
   std::string topic;         // exercise stage: the homework topic (src/homework/topic_table.h)
+  // pathtrace stage: the images are small so that a step renders in seconds (the tracer is TBB-parallel)
+  int paths = 256;      // path-traced samples per pixel
+  int imageSize = 128;  // pixels along each side of the images
+  int gatherRays = 64;  // final-gather rays per pixel of the two-pass image
 };
 
 struct Step {

@@ -13,6 +13,7 @@
 #include "core/pipeline/pipeline.h"
 #include "core/scene.h"
 #include "homework/exercise.h"
+#include "lesson/traced_pictures.h"
 
 namespace rt::lesson {
 
@@ -64,6 +65,9 @@ struct StepResult {
   std::shared_ptr<const Eigen::MatrixXd> shownMatrix;
   // The solver run a reader replays iteration by iteration (RunOptions::recordHistory): its B per iteration.
   SolveOutcome replay;
+
+  // Pathtrace stage: the images, the noise sweep and the times.
+  std::shared_ptr<const TracedPictures> pictures;
 
   // Exercise stage: the question, its answers and worked solution (values: given.<name>, answer.<id>).
   std::optional<homework::Exercise> exercise;

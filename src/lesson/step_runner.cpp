@@ -43,6 +43,10 @@ void quickCaps(StepParameters& p) {
   p.samples = std::min(p.samples.value_or(8), 8);
   // Lists keep their length and labels (the text names their entries); only the largest values shrink.
   for (int& s : p.sweep) s = std::min(s, 64);
+  // Divided rather than capped, so that a reader's change still changes a quick run's pictures.
+  p.paths = std::max(4, p.paths / 4);
+  p.imageSize = std::max(16, p.imageSize / 4);
+  p.gatherRays = std::max(4, p.gatherRays / 4);
   if (p.maxEdge) p.maxEdge = *p.maxEdge * 2.0;
 }
 
@@ -65,6 +69,17 @@ std::shared_ptr<const FormFactorMatrix> StepRunner::formFactors(const Mesh& mesh
   auto cached = pipeline_.formFactors(mesh, method, options, progress);
   stats = cached->stats;
   return {cached, &cached->F};
+}
+
+std::shared_ptr<const TracedPictures> StepRunner::tracedPictures(const std::string& key) const {
+  for (const auto& [k, pictures] : traced_)
+    if (k == key) return pictures;
+  return nullptr;
+}
+
+void StepRunner::keepTracedPictures(const std::string& key, std::shared_ptr<const TracedPictures> pictures) {
+  traced_.emplace_back(key, std::move(pictures));
+  if (traced_.size() > 3) traced_.pop_front();
 }
 
 StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& progress) {
@@ -165,6 +180,9 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
       break;
     case Stage::Refine:
       detail::computeRefine(c);
+      break;
+    case Stage::PathTrace:
+      detail::computePathTrace(c);
       break;
   }
   if (result.B.rows() == static_cast<Eigen::Index>(result.mesh.size()))

@@ -7,6 +7,7 @@
 #include "viz/chart.h"
 #include "viz/exact_visibility.h"
 #include "viz/hemicube_view.h"
+#include "viz/lesson_traced_figures.h"
 #include "viz/matrix_view.h"
 #include "viz/nusselt_view.h"
 #include "viz/rays_view.h"
@@ -218,6 +219,11 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
       writeSceneFigure(r.mesh, r.camera, data, o, path);
       return "Difference from the reference solution, relative to its brightest reflecting element";
     }
+    case View::Traced:
+    case View::Difference:
+    case View::Noise:
+    case View::TwoPass:
+      return detail::renderTracedView(view, step, r, s, path);
   }
   return "";
 }
