@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <utility>
 
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 16> kViews{{
+constexpr std::array<std::pair<View, const char*>, 17> kViews{{
     {View::Scene, "scene"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
@@ -24,6 +25,7 @@ constexpr std::array<std::pair<View, const char*>, 16> kViews{{
     {View::Difference, "difference"},
     {View::Noise, "noise"},
     {View::TwoPass, "two-pass"},
+    {View::Walkthrough, "walkthrough"},
 }};
 
 }  // namespace
@@ -60,7 +62,10 @@ const std::vector<StageInfo>& stageTable() {
        "matrix",
        "F, K, spectral radius, dominance, condition, export, and B with `solver`",
        {V::Scene, V::FormFactor, V::Matrix}},
-      {Stage::Solve, "solve", "F and B with `solver`", {V::Scene, V::FormFactor, V::Matrix, V::Convergence}},
+      {Stage::Solve,
+       "solve",
+       "F and B with `solver`",
+       {V::Scene, V::FormFactor, V::Matrix, V::Convergence, V::Walkthrough}},
       {Stage::Compare,
        "compare",
        "several `solvers`, `methods` or `subdivisions`",
@@ -82,7 +87,7 @@ const std::vector<StageInfo>& stageTable() {
        "pathtrace",
        "B with `solver`; path-traced (`paths`), radiosity and two-pass images of `image-size`; noise against "
        "paths; times",
-       {V::Scene, V::Traced, V::Difference, V::Noise, V::TwoPass}},
+       {V::Scene, V::Traced, V::Difference, V::Noise, V::TwoPass, V::Walkthrough}},
   };
   return table;
 }
@@ -141,6 +146,13 @@ std::vector<std::string> viewNames() {
   std::vector<std::string> names;
   for (const auto& entry : kViews) names.emplace_back(entry.second);
   return names;
+}
+
+std::string walkthroughFrameFile(const std::string& figureFile, int frame) {
+  const auto dot = figureFile.rfind('.');
+  char number[16];
+  std::snprintf(number, sizeof number, "-%04d", frame + 1);
+  return figureFile.substr(0, dot) + number + (dot == std::string::npos ? "" : figureFile.substr(dot));
 }
 
 std::vector<std::string> Step::figureFiles() const {

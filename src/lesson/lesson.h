@@ -47,10 +47,11 @@ enum class View {
   Visibility,
   Error,
   Local,
-  Traced,      // path-traced and radiosity images side by side
-  Difference,  // |image - path-traced| of the radiosity and two-pass images
-  Noise,       // the path tracer's noise against its paths per pixel, log-log
-  TwoPass,     // the two-pass image beside the path-traced one
+  Traced,       // path-traced and radiosity images side by side
+  Difference,   // |image - path-traced| of the radiosity and two-pass images
+  Noise,        // the path tracer's noise against its paths per pixel, log-log
+  TwoPass,      // the two-pass image beside the path-traced one
+  Walkthrough,  // the solution along the step's camera path, as numbered frames
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.
@@ -80,9 +81,12 @@ struct Field {
 };
 
 struct CameraOverride {
+  std::string name;  // a camera the scene names; position... adjust it
   std::optional<Vec3> position, target, up;
   std::optional<double> fovYDegrees;
-  bool any() const { return position || target || up || fovYDegrees; }
+  std::vector<std::string> path;  // camera-path: the scene's cameras a walkthrough flies through
+  int pathFrames = 48;
+  bool any() const { return !name.empty() || position || target || up || fovYDegrees; }
 };
 
 // The parameters of a step. Unset optionals mean "the method's or solver's default".
@@ -146,6 +150,10 @@ struct Step {
   // "<figure>-<view>.png" otherwise.
   std::vector<std::string> figureFiles() const;
 };
+
+// The walkthrough view writes its figure file (the first frame) and every frame beside it, numbered from 1:
+// "tour.png" -> "tour-0001.png", "tour-0002.png"...
+std::string walkthroughFrameFile(const std::string& figureFile, int frame);
 
 struct Lesson {
   std::string id;  // the file name without extension

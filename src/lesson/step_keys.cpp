@@ -395,6 +395,14 @@ std::vector<StepKey> makeTable() {
   add({"camera.up", KeyType::Vec3, 0, 0, nullptr, "", "Camera up", "x y z of the up direction."});
   add({"camera.fov", KeyType::Double, 1, 170, nullptr, "", "Field of view",
        "Vertical field of view, degrees."});
+  add({"camera", KeyType::Text, 0, 0, nullptr, "", "Camera",
+       "A camera the scene names (JSON cameras, OBJ '# camera NAME:' comments); the camera.* keys adjust "
+       "it."});
+  add({"camera-path", KeyType::Text, 0, 0, nullptr, "", "Camera path",
+       "Two or more cameras the scene names: the app flies through them after one solve (the solution does "
+       "not depend on the view), and the walkthrough view writes the flight as numbered frames."});
+  add({"path-frames", KeyType::Int, 2, 10000, nullptr, "48", "Frames",
+       "The frames of the camera path, the first and last on its first and last camera."});
   add({"highlight", KeyType::Text, 0, 0, nullptr, "", "Highlight",
        "Surfaces or element numbers to outline."});
   add({"figure", KeyType::Text, 0, 0, nullptr, "", "Figure",

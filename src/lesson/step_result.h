@@ -46,6 +46,7 @@ struct StepResult {
   Scene scene;  // after the step's material overrides
   Mesh mesh;
   Camera camera;
+  std::vector<Camera> cameraPath;             // the step's camera-path, one camera per frame (empty: none)
   std::shared_ptr<const FormFactorMatrix> F;  // empty when the stage needs none
   FormFactorStats formFactorStats;
   std::string method;                                  // the form-factor method used

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "core/camera_path.h"
 #include "core/formfactor/formfactor_matrix.h"
 #include "core/io/scene_loader.h"
 #include "core/pipeline/scene_overrides.h"
@@ -117,6 +118,11 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
 
   // The camera: the scene's (or one that sees everything), with the step's overrides.
   result.camera = result.scene.cameraOrDefault();
+  if (!step.camera.name.empty()) result.camera = namedCamera(result.scene, step.camera.name, c.at("camera"));
+  std::vector<Camera> keys;
+  for (const auto& name : step.camera.path)
+    keys.push_back(namedCamera(result.scene, name, c.at("camera-path")));
+  result.cameraPath = interpolateCameraPath(keys, step.camera.pathFrames);
   if (step.camera.position) result.camera.position = *step.camera.position;
   if (step.camera.target) result.camera.target = *step.camera.target;
   if (step.camera.up) result.camera.up = *step.camera.up;

@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <QImage>
+#include <QPushButton>
 #include <QSpinBox>
 #include <QTest>
 
+#include "app/camera_path_player.h"
 #include "app/figures_pane.h"
 #include "app/parameter_panel.h"
+#include "app/scene_view.h"
 #include "app/screenshot.h"
 #include "app_test_support.h"
 #include "lesson/step_result.h"
@@ -68,4 +71,33 @@ TEST(TwoSolutionsInTheApp, MorePathsPerPixelRetraceWithLessNoise) {
   const double after = *stepResult(*window)->value("noise.path-traced");
   // Four times the paths: half the noise.
   EXPECT_NEAR(after / before, 0.5, 0.1);
+}
+
+// The step with a camera path: one solve, then the Walkthrough button flies the 3D view through the scene's
+// cameras left, above and right, ending on the last.
+TEST(TwoSolutionsInTheApp, TheWalkthroughFliesThroughTheScenesCameras) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  ASSERT_TRUE(window->openLesson("two-solutions", 4)) << window->lastError().toStdString();
+  CameraPathPlayer* player = window->pathPlayer();
+  ASSERT_TRUE(player->isVisible());
+  EXPECT_EQ(player->frameCount(), 24);
+  EXPECT_EQ(window->figuresPane()->figureCount(), 0) << "the walkthrough is flown, not drawn as frames";
+  const auto* r = stepResult(*window);
+  ASSERT_NE(r, nullptr);
+  const rt::Camera last = r->cameraPath.back();
+  const QImage before = window->primaryView()->grab().toImage();
+  player->setFramesPerSecond(200);
+  QTest::mouseClick(player->button(), Qt::LeftButton);
+  EXPECT_TRUE(player->playing());
+  EXPECT_TRUE(QTest::qWaitFor([&] { return !player->playing(); }, 10000));
+  EXPECT_EQ(player->current(), 23);
+  const rt::Camera shown = window->primaryView()->currentCamera();
+  EXPECT_LT((shown.position - last.position).norm(), 1e-6 * last.position.norm());
+  const QImage after = window->primaryView()->grab().toImage();
+  EXPECT_NE(before, after) << "the view moved";
+  EXPECT_GT(pixelStatistics(after).nonBlackFraction, 0.5) << "inside the box, not behind a wall";
+  // A step without a path hides the button.
+  ASSERT_TRUE(window->openLesson("two-solutions", 0));
+  EXPECT_FALSE(player->isVisible());
 }
