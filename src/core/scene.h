@@ -54,7 +54,9 @@ struct Scene {
   std::vector<Surface> surfaces;
   std::vector<Patch> patches;
   std::optional<Camera> camera;
-  std::vector<NamedCamera> cameras;   // JSON "cameras", OBJ "# camera NAME: ..." comments, in file order
+  // JSON "cameras" (in name order: a JSON object has none) and OBJ "# camera NAME: ..." comments (in file
+  // order)
+  std::vector<NamedCamera> cameras;
   std::vector<std::string> warnings;  // e.g. non-planar quads that were split, each naming file and line
 
   const Material& materialOf(const Patch& p) const { return materials[surfaces[p.surface].material]; }
