@@ -60,7 +60,8 @@ int FiguresPane::showStep(const lesson::Lesson& lesson, const lesson::Step& step
   lesson::Step others = step;
   others.views.clear();
   for (lesson::View v : step.views)
-    if (v != lesson::View::Scene) others.views.push_back(v);
+    // The walkthrough is flown in the 3D view (CameraPathPlayer), not drawn as frames here.
+    if (v != lesson::View::Scene && v != lesson::View::Walkthrough) others.views.push_back(v);
   if (others.views.empty() || !folder_.isValid()) return 0;
   // A fresh folder per call: the files of the previous step may still be on screen while these are written.
   const QString dir = folder_.filePath(QString::number(++serial_));

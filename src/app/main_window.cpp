@@ -1,6 +1,7 @@
 // MainWindow: construction of the widgets, menus, shortcuts, presenter and compare modes, exports.
 // Navigation and results are in main_window_steps.cpp.
 #include "app/main_window.h"
+#include "app/camera_path_player.h"
 
 #include <QAction>
 #include <QApplication>
@@ -156,6 +157,7 @@ void MainWindow::buildUi() {
   auto* lowerLayout = new QVBoxLayout(lower);
   lowerLayout->setContentsMargins(0, 0, 0, 0);
   player_ = new IterationPlayer(lower);
+  pathPlayer_ = new CameraPathPlayer(lower);
   tabs_ = new QTabWidget(lower);
   chart_ = new ResidualChart(tabs_);
   matrix_ = new MatrixView(tabs_);
@@ -164,6 +166,7 @@ void MainWindow::buildUi() {
   figures_ = new FiguresPane(tabs_);
   tabs_->addTab(figures_, tr("Step figures"));
   lowerLayout->addWidget(player_);
+  lowerLayout->addWidget(pathPlayer_);
   lowerLayout->addWidget(tabs_, 1);
   right->addWidget(viewSplitter_);
   right->addWidget(lower);
@@ -195,6 +198,10 @@ void MainWindow::buildUi() {
     if (compare_) primaryView_->syncCameraFrom(*secondaryView_);
   });
   connect(player_, &IterationPlayer::currentChanged, this, &MainWindow::showIteration);
+  connect(pathPlayer_, &CameraPathPlayer::cameraChanged, this, [this](const Camera& camera) {
+    primaryView_->applyCamera(camera);
+    if (compare_) secondaryView_->syncCameraFrom(*primaryView_);
+  });
   connect(primaryView_, &SceneView::elementPicked, this, [this](int e) { selectElements(e, -1); });
   connect(secondaryView_, &SceneView::elementPicked, this, [this](int e) { selectElements(e, -1); });
   connect(matrix_, &MatrixView::elementsSelected, this, &MainWindow::selectElements);

@@ -36,6 +36,7 @@ class ContentsTree;
 class ExercisePanel;
 class FiguresPane;
 class IterationPlayer;
+class CameraPathPlayer;
 class LessonFigureExport;
 class LessonLibrary;
 class MatrixView;
@@ -131,6 +132,7 @@ class MainWindow : public QMainWindow {
   LessonTextView* textView() const { return text_; }
   ExercisePanel* exercisePanel() const { return exercise_; }
   IterationPlayer* player() const { return player_; }
+  CameraPathPlayer* pathPlayer() const { return pathPlayer_; }
   ResidualChart* residualChart() const { return chart_; }
   MatrixView* matrixView() const { return matrix_; }
   ParameterPanel* parameterPanel() const { return panel_; }
@@ -225,6 +227,7 @@ class MainWindow : public QMainWindow {
   QSplitter* viewSplitter_ = nullptr;
   QWidget* viewsPane_ = nullptr;  // views, player and tabs: hidden for a step of text only
   IterationPlayer* player_ = nullptr;
+  CameraPathPlayer* pathPlayer_ = nullptr;  // a step's camera path: the walkthrough after one solve
   ResidualChart* chart_ = nullptr;
   MatrixView* matrix_ = nullptr;
   FiguresPane* figures_ = nullptr;

@@ -13,6 +13,7 @@
 #include <algorithm>
 
 #include "app/builtin_scene.h"
+#include "app/camera_path_player.h"
 #include "app/contents_tree.h"
 #include "app/exercise_panel.h"
 #include "app/figures_pane.h"
@@ -355,6 +356,7 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   int longest = static_cast<int>(r.history.size());
   if (compare_ && r.compared) longest = std::max(longest, static_cast<int>(r.compared->history.size()));
   player_->setIterationCount(longest);
+  pathPlayer_->setPath(stepResult ? stepResult->cameraPath : std::vector<Camera>{});
   matrix_->setMatrix(r.F);
   figures_->clear();
   if (step && stepResult) {

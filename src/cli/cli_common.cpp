@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "core/camera_path.h"
 #include "core/io/scene_loader.h"
 #include "core/time_left.h"
 
@@ -57,12 +58,13 @@ MeshOptions MeshArguments::optionsFor(const Scene& scene) const {
 
 void CameraArgument::add(CLI::App& command) {
   command.add_option("--camera", text,
-                     "The view: \"position x y z target x y z up x y z fov_y_degrees f\" in scene units "
-                     "(default: the scene's camera, or one that frames the whole scene)");
+                     "The view: a camera the scene names, or \"position x y z target x y z up x y z "
+                     "fov_y_degrees f\" in scene units (default: the scene's camera, or one that frames the "
+                     "whole scene)");
 }
 
 void CameraArgument::applyTo(Scene& scene) const {
-  if (!text.empty()) scene.camera = parseCameraText(text, {"--camera", 0, {}});
+  if (!text.empty()) scene.camera = cameraFromText(scene, text, {"--camera", 0, {}});
 }
 
 Scene loadSceneReportingWarnings(const std::string& path) {

@@ -23,6 +23,12 @@ Eigen::AlignedBox3d Scene::bounds() const {
   return box;
 }
 
+const Camera* Scene::findCamera(const std::string& name) const {
+  for (const NamedCamera& c : cameras)
+    if (c.name == name) return &c.camera;
+  return nullptr;
+}
+
 Camera Scene::cameraOrDefault() const {
   if (camera) return *camera;
   Camera c;

@@ -39,6 +39,13 @@ struct Camera {
   double fovYDegrees = 40.0;  // vertical field of view
 };
 
+// A view a scene names, so that a command (--camera NAME), a lesson step (camera: NAME) or a camera path can
+// ask for it.
+struct NamedCamera {
+  std::string name;
+  Camera camera;
+};
+
 struct Scene {
   std::string name;
   std::string sourceFile;
@@ -47,6 +54,9 @@ struct Scene {
   std::vector<Surface> surfaces;
   std::vector<Patch> patches;
   std::optional<Camera> camera;
+  // JSON "cameras" (in name order: a JSON object has none) and OBJ "# camera NAME: ..." comments (in file
+  // order)
+  std::vector<NamedCamera> cameras;
   std::vector<std::string> warnings;  // e.g. non-planar quads that were split, each naming file and line
 
   const Material& materialOf(const Patch& p) const { return materials[surfaces[p.surface].material]; }
@@ -57,6 +67,8 @@ struct Scene {
   Eigen::AlignedBox3d bounds() const;
   // A camera looking at the whole scene when the file gives none.
   Camera cameraOrDefault() const;
+  // The camera called `name`, or null.
+  const Camera* findCamera(const std::string& name) const;
 };
 
 }  // namespace rt

@@ -31,7 +31,7 @@ const std::vector<Topic>& topicTable() {
        generateHemicube},
       {"raycast", "A ray-cast or local-line estimate and its standard error",
        "F_ij from a given table of random numbers (point pairs or local lines), with the standard error",
-       "exact-reference,ray-casting,runtime-error-lab,stochastic", generateRaycast},
+       "exact-reference,ray-casting,runtime-error-lab,stochastic,two-solutions", generateRaycast},
       {"assemble-k", "Assembling K", "K = I - diag(rho) F for an enclosure of 3 to 5 patches",
        "meshing,numerical-stability,radiosity-matrix,rendering-equation", generateAssembleK},
       {"jacobi-gauss-seidel", "Jacobi and Gauss-Seidel by hand",
@@ -48,8 +48,8 @@ const std::vector<Topic>& topicTable() {
        "exposure, linear or Reinhard tone map and sRGB gamma to 0..255", "cornell-box,patches-to-pixels",
        generateToneMapping},
       {"subdivision", "The adaptive subdivision criterion",
-       "whether the gradient criterion splits an element", "hierarchical,meshing,patches-to-pixels",
-       generateSubdivision},
+       "whether the gradient criterion splits an element",
+       "hierarchical,meshing,patches-to-pixels,two-solutions", generateSubdivision},
   };
   return table;
 }

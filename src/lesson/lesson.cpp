@@ -2,12 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <utility>
 
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 12> kViews{{
+constexpr std::array<std::pair<View, const char*>, 17> kViews{{
     {View::Scene, "scene"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
@@ -20,6 +21,11 @@ constexpr std::array<std::pair<View, const char*>, 12> kViews{{
     {View::Visibility, "visibility"},
     {View::Error, "error"},
     {View::Local, "local"},
+    {View::Traced, "traced"},
+    {View::Difference, "difference"},
+    {View::Noise, "noise"},
+    {View::TwoPass, "two-pass"},
+    {View::Walkthrough, "walkthrough"},
 }};
 
 }  // namespace
@@ -56,7 +62,10 @@ const std::vector<StageInfo>& stageTable() {
        "matrix",
        "F, K, spectral radius, dominance, condition, export, and B with `solver`",
        {V::Scene, V::FormFactor, V::Matrix}},
-      {Stage::Solve, "solve", "F and B with `solver`", {V::Scene, V::FormFactor, V::Matrix, V::Convergence}},
+      {Stage::Solve,
+       "solve",
+       "F and B with `solver`",
+       {V::Scene, V::FormFactor, V::Matrix, V::Convergence, V::Walkthrough}},
       {Stage::Compare,
        "compare",
        "several `solvers`, `methods` or `subdivisions`",
@@ -74,6 +83,11 @@ const std::vector<StageInfo>& stageTable() {
        "exercise",
        "a homework exercise of `topic` drawn with `seed`: questions, Check, hint, worked solution",
        {}},
+      {Stage::PathTrace,
+       "pathtrace",
+       "B with `solver`; path-traced (`paths`), radiosity and two-pass images of `image-size`; noise against "
+       "paths; times",
+       {V::Scene, V::Traced, V::Difference, V::Noise, V::TwoPass, V::Walkthrough}},
   };
   return table;
 }
@@ -132,6 +146,13 @@ std::vector<std::string> viewNames() {
   std::vector<std::string> names;
   for (const auto& entry : kViews) names.emplace_back(entry.second);
   return names;
+}
+
+std::string walkthroughFrameFile(const std::string& figureFile, int frame) {
+  const auto dot = figureFile.rfind('.');
+  char number[16];
+  std::snprintf(number, sizeof number, "-%04d", frame + 1);
+  return figureFile.substr(0, dot) + number + (dot == std::string::npos ? "" : figureFile.substr(dot));
 }
 
 std::vector<std::string> Step::figureFiles() const {

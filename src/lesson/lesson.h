@@ -30,6 +30,7 @@ enum class Stage {
   Benchmark,    // run time against error for methods over a parameter sweep
   Refine,       // meshes that follow the light: adaptive, discontinuity or hierarchical (core/refine)
   Exercise,     // a homework exercise (src/homework) the reader answers: questions, Check, hint, solution
+  PathTrace,    // the radiosity image against a path-traced one of the same equation, and the two-pass image
 };
 
 // The figures a step can ask for; the names match the viz layer's views.
@@ -45,7 +46,12 @@ enum class View {
   SweepError,  // error against the sweep's knob (samples, resolution), log-log
   Visibility,
   Error,
-  Local
+  Local,
+  Traced,       // path-traced and radiosity images side by side
+  Difference,   // |image - path-traced| of the radiosity and two-pass images
+  Noise,        // the path tracer's noise against its paths per pixel, log-log
+  TwoPass,      // the two-pass image beside the path-traced one
+  Walkthrough,  // the solution along the step's camera path, as numbered frames
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.
@@ -75,9 +81,12 @@ struct Field {
 };
 
 struct CameraOverride {
+  std::string name;  // a camera the scene names; position... adjust it
   std::optional<Vec3> position, target, up;
   std::optional<double> fovYDegrees;
-  bool any() const { return position || target || up || fovYDegrees; }
+  std::vector<std::string> path;  // camera-path: the scene's cameras a walkthrough flies through
+  int pathFrames = 48;
+  bool any() const { return !name.empty() || position || target || up || fovYDegrees; }
 };
 
 // The parameters of a step. Unset optionals mean "the method's or solver's default".
@@ -115,6 +124,10 @@ struct StepParameters {
   std::string matrix = "F";  // matrix stage: the matrix shown, F, rhoF or K = I - rho F
   std::string from;          // the element or surface a hemicube/Nusselt/rays view is seen from
   std::string topic;         // exercise stage: the homework topic (src/homework/topic_table.h)
+  // pathtrace stage: the images are small so that a step renders in seconds (the tracer is TBB-parallel)
+  int paths = 256;      // path-traced samples per pixel
+  int imageSize = 128;  // pixels along each side of the images
+  int gatherRays = 64;  // final-gather rays per pixel of the two-pass image
 };
 
 struct Step {
@@ -137,6 +150,10 @@ struct Step {
   // "<figure>-<view>.png" otherwise.
   std::vector<std::string> figureFiles() const;
 };
+
+// The walkthrough view writes its figure file (the first frame) and every frame beside it, numbered from 1:
+// "tour.png" -> "tour-0001.png", "tour-0002.png"...
+std::string walkthroughFrameFile(const std::string& figureFile, int frame);
 
 struct Lesson {
   std::string id;  // the file name without extension

@@ -1,4 +1,5 @@
 #include "lesson/lesson_loader.h"
+#include "core/camera_path.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -109,6 +110,11 @@ void checkAgainstScenes(const Lesson& lesson, const std::string& scenesDir) {
       for (const auto& s : surfaces) out += (out.empty() ? "" : ", ") + s;
       return out;
     };
+    // Camera names: unknown ones are errors at the key's line, listing the scene's cameras.
+    if (!step.camera.name.empty())
+      namedCamera(scene, step.camera.name, {lesson.file, lineOf(step, "camera")});
+    for (const auto& name : step.camera.path)
+      namedCamera(scene, name, {lesson.file, lineOf(step, "camera-path")});
     for (const auto& [surface, rho] : step.parameters.reflectance) {
       if (!known(surface))
         throw InputError(

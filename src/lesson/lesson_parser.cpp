@@ -1,4 +1,5 @@
 #include "lesson/lesson_parser.h"
+#include "core/camera_path.h"
 
 #include <algorithm>
 #include <cmath>
@@ -224,6 +225,18 @@ class Parser {
       step.camera.up = parseVec3(value, where, key);
     } else if (key == "camera.fov") {
       step.camera.fovYDegrees = parseDouble(value, where, key, row->min, row->max);
+    } else if (key == "camera") {
+      if (!isCameraName(value))
+        fail(where.line, "camera names one of the scene's cameras, not '" + value + "'");
+      step.camera.name = value;
+    } else if (key == "camera-path") {
+      step.camera.path = parseList(value);
+      if (step.camera.path.size() < 2) fail(where.line, "camera-path names two cameras or more");
+      for (const auto& name : step.camera.path)
+        if (!isCameraName(name)) fail(where.line, "'" + name + "' is not a camera name");
+    } else if (key == "path-frames") {
+      step.camera.pathFrames =
+          parseInt(value, where, key, static_cast<int>(row->min), static_cast<int>(row->max));
     } else if (key == "highlight") {
       step.highlights = parseList(value);
     } else if (key == "figure") {
@@ -280,6 +293,10 @@ class Parser {
         fail(lineOf("views"),
              "view '" + toString(v) + "' cannot be shown by stage '" + toString(step.stage) + "'");
     }
+    if (std::find(step.views.begin(), step.views.end(), View::Walkthrough) != step.views.end() &&
+        step.camera.path.empty())
+      fail(lineOf("views"),
+           "the walkthrough view needs a 'camera-path' (two or more of the scene's cameras)");
     if (step.stage == Stage::Compare && p.solvers.size() + p.methods.size() + p.subdivisions.size() < 2)
       fail(lineOf("stage"), "a compare step needs at least two 'solvers', 'methods' or 'subdivisions'");
     if (step.stage == Stage::Benchmark) {

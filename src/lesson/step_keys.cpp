@@ -43,10 +43,11 @@ std::string number(double v) {
 
 // One row per key. Order: what the step is, what it computes with, how it solves, how it is shown.
 std::vector<StepKey> makeTable() {
-  const std::vector<Stage> computeF{Stage::FormFactors, Stage::Hemicube, Stage::Nusselt,  Stage::Rays,
-                                    Stage::Exact,       Stage::Matrix,   Stage::Solve,    Stage::Compare,
-                                    Stage::Bounces,     Stage::Local,    Stage::Benchmark};
-  const std::vector<Stage> solving{Stage::Solve, Stage::Compare, Stage::Matrix, Stage::Local, Stage::Exact};
+  const std::vector<Stage> computeF{Stage::FormFactors, Stage::Hemicube, Stage::Nusselt,   Stage::Rays,
+                                    Stage::Exact,       Stage::Matrix,   Stage::Solve,     Stage::Compare,
+                                    Stage::Bounces,     Stage::Local,    Stage::Benchmark, Stage::PathTrace};
+  const std::vector<Stage> solving{Stage::Solve, Stage::Compare, Stage::Matrix,
+                                   Stage::Local, Stage::Exact,   Stage::PathTrace};
   const std::vector<Stage> seen{Stage::FormFactors, Stage::Hemicube, Stage::Nusselt, Stage::Rays,
                                 Stage::Exact};
   std::vector<StepKey> t;
@@ -242,6 +243,42 @@ std::vector<StepKey> makeTable() {
        .step = 0.5,
        .stages = {Stage::Local},
        .slot = &P::ambientLight});
+  add({.name = "paths",
+       .type = KeyType::Int,
+       .min = 4,
+       .max = 1000000,
+       .defaultText = "256",
+       .label = "Paths per pixel",
+       .tooltip = "Pathtrace stage: paths traced per pixel of the reference image. Its noise falls like "
+                  "1/sqrt(paths); the noise chart measures it at 1/64, 1/16 and 1/4 of them.",
+       .control = true,
+       .step = 64,
+       .stages = {Stage::PathTrace},
+       .slot = &P::paths});
+  add({.name = "image-size",
+       .type = KeyType::Int,
+       .min = 16,
+       .max = 2048,
+       .defaultText = "128",
+       .label = "Image size (pixels)",
+       .tooltip =
+           "Pathtrace stage: pixels along each side of the path-traced, radiosity and two-pass images.",
+       .control = true,
+       .step = 16,
+       .stages = {Stage::PathTrace},
+       .slot = &P::imageSize});
+  add({.name = "gather-rays",
+       .type = KeyType::Int,
+       .min = 4,
+       .max = 65536,
+       .defaultText = "64",
+       .label = "Gather rays",
+       .tooltip = "Pathtrace stage: final-gather rays per pixel of the two-pass image (direct light is "
+                  "computed at the point itself, the gather reads one bounce from the radiosity solution).",
+       .control = true,
+       .step = 16,
+       .stages = {Stage::PathTrace},
+       .slot = &P::gatherRays});
   add({.name = "light-scale",
        .type = KeyType::Double,
        .min = 0,
@@ -358,6 +395,14 @@ std::vector<StepKey> makeTable() {
   add({"camera.up", KeyType::Vec3, 0, 0, nullptr, "", "Camera up", "x y z of the up direction."});
   add({"camera.fov", KeyType::Double, 1, 170, nullptr, "", "Field of view",
        "Vertical field of view, degrees."});
+  add({"camera", KeyType::Text, 0, 0, nullptr, "", "Camera",
+       "A camera the scene names (JSON cameras, OBJ '# camera NAME:' comments); the camera.* keys adjust "
+       "it."});
+  add({"camera-path", KeyType::Text, 0, 0, nullptr, "", "Camera path",
+       "Two or more cameras the scene names: the app flies through them after one solve (the solution does "
+       "not depend on the view), and the walkthrough view writes the flight as numbered frames."});
+  add({"path-frames", KeyType::Int, 2, 10000, nullptr, "48", "Frames",
+       "The frames of the camera path, the first and last on its first and last camera."});
   add({"highlight", KeyType::Text, 0, 0, nullptr, "", "Highlight",
        "Surfaces or element numbers to outline."});
   add({"figure", KeyType::Text, 0, 0, nullptr, "", "Figure",

@@ -13,6 +13,7 @@
 #include "core/pipeline/pipeline.h"
 #include "core/scene.h"
 #include "homework/exercise.h"
+#include "lesson/traced_pictures.h"
 
 namespace rt::lesson {
 
@@ -45,6 +46,7 @@ struct StepResult {
   Scene scene;  // after the step's material overrides
   Mesh mesh;
   Camera camera;
+  std::vector<Camera> cameraPath;             // the step's camera-path, one camera per frame (empty: none)
   std::shared_ptr<const FormFactorMatrix> F;  // empty when the stage needs none
   FormFactorStats formFactorStats;
   std::string method;                                  // the form-factor method used
@@ -64,6 +66,9 @@ struct StepResult {
   std::shared_ptr<const Eigen::MatrixXd> shownMatrix;
   // The solver run a reader replays iteration by iteration (RunOptions::recordHistory): its B per iteration.
   SolveOutcome replay;
+
+  // Pathtrace stage: the images, the noise sweep and the times.
+  std::shared_ptr<const TracedPictures> pictures;
 
   // Exercise stage: the question, its answers and worked solution (values: given.<name>, answer.<id>).
   std::optional<homework::Exercise> exercise;

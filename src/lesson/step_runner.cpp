@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "core/camera_path.h"
 #include "core/formfactor/formfactor_matrix.h"
 #include "core/io/scene_loader.h"
 #include "core/pipeline/scene_overrides.h"
@@ -43,6 +44,10 @@ void quickCaps(StepParameters& p) {
   p.samples = std::min(p.samples.value_or(8), 8);
   // Lists keep their length and labels (the text names their entries); only the largest values shrink.
   for (int& s : p.sweep) s = std::min(s, 64);
+  // Divided rather than capped, so that a reader's change still changes a quick run's pictures.
+  p.paths = std::max(4, p.paths / 4);
+  p.imageSize = std::max(16, p.imageSize / 4);
+  p.gatherRays = std::max(4, p.gatherRays / 4);
   if (p.maxEdge) p.maxEdge = *p.maxEdge * 2.0;
 }
 
@@ -65,6 +70,17 @@ std::shared_ptr<const FormFactorMatrix> StepRunner::formFactors(const Mesh& mesh
   auto cached = pipeline_.formFactors(mesh, method, options, progress);
   stats = cached->stats;
   return {cached, &cached->F};
+}
+
+std::shared_ptr<const TracedPictures> StepRunner::tracedPictures(const std::string& key) const {
+  for (const auto& [k, pictures] : traced_)
+    if (k == key) return pictures;
+  return nullptr;
+}
+
+void StepRunner::keepTracedPictures(const std::string& key, std::shared_ptr<const TracedPictures> pictures) {
+  traced_.emplace_back(key, std::move(pictures));
+  if (traced_.size() > 3) traced_.pop_front();
 }
 
 StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& progress) {
@@ -102,6 +118,11 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
 
   // The camera: the scene's (or one that sees everything), with the step's overrides.
   result.camera = result.scene.cameraOrDefault();
+  if (!step.camera.name.empty()) result.camera = namedCamera(result.scene, step.camera.name, c.at("camera"));
+  std::vector<Camera> keys;
+  for (const auto& name : step.camera.path)
+    keys.push_back(namedCamera(result.scene, name, c.at("camera-path")));
+  result.cameraPath = interpolateCameraPath(keys, step.camera.pathFrames);
   if (step.camera.position) result.camera.position = *step.camera.position;
   if (step.camera.target) result.camera.target = *step.camera.target;
   if (step.camera.up) result.camera.up = *step.camera.up;
@@ -165,6 +186,9 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
       break;
     case Stage::Refine:
       detail::computeRefine(c);
+      break;
+    case Stage::PathTrace:
+      detail::computePathTrace(c);
       break;
   }
   if (result.B.rows() == static_cast<Eigen::Index>(result.mesh.size()))

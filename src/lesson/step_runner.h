@@ -3,6 +3,7 @@
 // options): steps that only change materials, the light or the solver never recompute F.
 #pragma once
 
+#include <deque>
 #include <map>
 #include <memory>
 #include <string>
@@ -24,8 +25,8 @@ class MethodUnavailable : public InputError {
 
 struct RunOptions {
   // Small parameters for quick renders (the documentation test): subdivision <= 3, hemicube resolution <= 32,
-  // samples <= 8, sweep values <= 64, refinement kept small. Lists keep their entries, so placeholders still
-  // resolve.
+  // samples <= 8, sweep values <= 64, refinement kept small; a pathtrace step's paths, image size and gather
+  // rays a quarter. Lists keep their entries, so placeholders still resolve.
   bool quick = false;
   std::string outputDir;  // where a matrix step writes its export (empty: the export is skipped)
   // Keep every iteration of the run a reader replays (StepResult::replay): the app steps through them.
@@ -47,6 +48,11 @@ class StepRunner {
   const RunOptions& options() const { return options_; }
   Pipeline& pipeline() { return pipeline_; }
 
+  // Pathtrace steps: the traced pictures last computed for `key` (everything they depend on, written out),
+  // so that the steps of a lesson showing other views of the same pictures trace them once. Null if none.
+  std::shared_ptr<const TracedPictures> tracedPictures(const std::string& key) const;
+  void keepTracedPictures(const std::string& key, std::shared_ptr<const TracedPictures> pictures);
+
   // The form factors for a mesh, through the pipeline's cache. Throws std::invalid_argument for a method
   // this build does not have.
   std::shared_ptr<const FormFactorMatrix> formFactors(const Mesh& mesh, const std::string& method,
@@ -61,6 +67,8 @@ class StepRunner {
   std::map<std::string, Scene> scenes_;
   Pipeline pipeline_{16};
   int stepRuns_ = 0;
+  // A few pictures only: large images take memory, and a reader's changes make old keys useless.
+  std::deque<std::pair<std::string, std::shared_ptr<const TracedPictures>>> traced_;
 };
 
 // The text of a step with its placeholders filled in from the result (InputError at the placeholder's line

@@ -59,5 +59,6 @@ void computeBounces(StageContext& c);
 void computeExact(StageContext& c);
 void computeBenchmark(StageContext& c);
 void computeRefine(StageContext& c);
+void computePathTrace(StageContext& c);  // stage_pathtrace.cpp
 
 }  // namespace rt::lesson::detail

@@ -30,6 +30,17 @@ void Drawing::rectangle(double x, double y, double w, double h, Rgb8 fill, doubl
   polygon({{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}}, fill, strokeWidth, stroke);
 }
 
+void Drawing::image(double x, double y, double w, double h, int pixelsWide, int pixelsHigh,
+                    std::vector<Rgb8> pixels) {
+  Shape s;
+  s.kind = Kind::Image;
+  s.points = {Vec2(x, y), Vec2(x + w, y + h)};
+  s.pixelsWide = pixelsWide;
+  s.pixelsHigh = pixelsHigh;
+  s.pixels = std::move(pixels);
+  shapes.push_back(std::move(s));
+}
+
 void Drawing::line(Vec2 a, Vec2 b, double strokeWidth, Rgb8 stroke) {
   outline({a, b}, strokeWidth, stroke, false);
 }

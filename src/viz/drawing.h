@@ -12,7 +12,7 @@
 namespace rt::viz {
 
 struct Drawing {
-  enum class Kind { Polygon, Polyline, Text };
+  enum class Kind { Polygon, Polyline, Text, Image };
   enum class Align { Start, Centre, End };
   struct Shape {
     Kind kind = Kind::Polygon;
@@ -26,6 +26,10 @@ struct Drawing {
     Align hAlign = Align::Start, vAlign = Align::Start;  // vertical: Start = bottom
     double angleDegrees = 0;
     bool bold = false;
+    // Image: pixels (top row first) of pixelsWide x pixelsHigh, stretched over points[0] (bottom-left) to
+    // points[1] (top-right), each pixel a sharp square.
+    std::vector<Rgb8> pixels;
+    int pixelsWide = 0, pixelsHigh = 0;
   };
 
   double width = 800, height = 600;
@@ -40,6 +44,8 @@ struct Drawing {
   void text(const std::string& text, Vec2 anchor, double fontSize, Align hAlign = Align::Start,
             Align vAlign = Align::Start, Rgb8 colour = {20, 20, 20}, bool bold = false,
             double angleDegrees = 0);
+  void image(double x, double y, double w, double h, int pixelsWide, int pixelsHigh,
+             std::vector<Rgb8> pixels);
   // A circle as a polygon with enough segments to look round at any print size.
   void circle(Vec2 centre, double radius, Rgb8 fill, bool filled, double strokeWidth, Rgb8 stroke);
 

@@ -6,8 +6,10 @@
 #include <vtkContextItem.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
+#include <vtkImageData.h>
 #include <vtkObjectFactory.h>
 #include <vtkPen.h>
+#include <vtkRect.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkStdString.h>
@@ -88,12 +90,30 @@ class DrawingItem : public vtkContextItem {
           painter->DrawString(xy[0], xy[1], vtkStdString(shape.text));
           break;
         }
+        case Drawing::Kind::Image:
+          if (n < 2 || shape.pixelsWide <= 0 || shape.pixelsHigh <= 0) break;
+          drawImage(painter, shape, xy);
+          break;
       }
     }
     return true;
   }
 
  private:
+  // Pixels as an RGB texture (VTK's rows run bottom-up), stretched over the shape's rectangle.
+  static void drawImage(vtkContext2D* painter, const Drawing::Shape& shape, const std::vector<float>& xy) {
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(shape.pixelsWide, shape.pixelsHigh, 1);
+    image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    auto* out = static_cast<unsigned char*>(image->GetScalarPointer());
+    for (int y = 0; y < shape.pixelsHigh; ++y)
+      for (int x = 0; x < shape.pixelsWide; ++x) {
+        const Rgb8& c =
+            shape.pixels[static_cast<std::size_t>(shape.pixelsHigh - 1 - y) * shape.pixelsWide + x];
+        std::copy(c.begin(), c.end(), out + 3 * (static_cast<std::size_t>(y) * shape.pixelsWide + x));
+      }
+    painter->DrawImage(vtkRectf(xy[0], xy[1], xy[2] - xy[0], xy[3] - xy[1]), image);
+  }
   static void strokePen(vtkContext2D* painter, const Drawing::Shape& shape) {
     painter->GetPen()->SetLineType(vtkPen::SOLID_LINE);
     painter->GetPen()->SetColor(shape.stroke[0], shape.stroke[1], shape.stroke[2], 255);

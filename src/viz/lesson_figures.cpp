@@ -7,6 +7,7 @@
 #include "viz/chart.h"
 #include "viz/exact_visibility.h"
 #include "viz/hemicube_view.h"
+#include "viz/lesson_traced_figures.h"
 #include "viz/matrix_view.h"
 #include "viz/nusselt_view.h"
 #include "viz/rays_view.h"
@@ -218,6 +219,29 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
       writeSceneFigure(r.mesh, r.camera, data, o, path);
       return "Difference from the reference solution, relative to its brightest reflecting element";
     }
+    case View::Walkthrough: {
+      // The one solution from every camera of the path: the figure is the first frame, the others beside it.
+      if (r.cameraPath.empty() || r.B.rows() == 0)
+        throw std::runtime_error(path + ": the step has no camera path or no solution");
+      SceneViewOptions o = sceneOptions(step, r, s);
+      SceneViewData data;
+      data.B = r.B;
+      o.caption = "";
+      for (std::size_t f = 0; f < r.cameraPath.size(); ++f) {
+        writeSceneFigure(r.mesh, r.cameraPath[f], data, o,
+                         lesson::walkthroughFrameFile(path, static_cast<int>(f)));
+        if (f == 0) writeSceneFigure(r.mesh, r.cameraPath[f], data, o, path);
+      }
+      std::string route;
+      for (const auto& name : step.camera.path) route += (route.empty() ? "" : " -> ") + name;
+      return "One solution, " + std::to_string(r.cameraPath.size()) + " views along the cameras " + route +
+             " (the first frame; the others are numbered beside it)";
+    }
+    case View::Traced:
+    case View::Difference:
+    case View::Noise:
+    case View::TwoPass:
+      return detail::renderTracedView(view, step, r, s, path);
   }
   return "";
 }

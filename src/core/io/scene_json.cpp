@@ -6,6 +6,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "core/camera_path.h"
 #include "core/io/json_line_map.h"
 #include "core/io/scene_assembly.h"
 #include "core/io/scene_loader.h"
@@ -43,7 +44,7 @@ class SceneJsonReader {
       fail(pointer,
            "key \"" + pointer.substr(pointer.rfind('/') + 1) + "\" appears twice in the same object");
     }
-    checkKeys(root_, "", {"version", "name", "unit", "camera", "materials", "surfaces"});
+    checkKeys(root_, "", {"version", "name", "unit", "camera", "cameras", "materials", "surfaces"});
     if (root_.contains("version")) {
       const json& v = root_["version"];
       if (!v.is_number_integer() || v.get<int>() != 1)
@@ -55,6 +56,7 @@ class SceneJsonReader {
       if (scene.unit.empty()) fail("/unit", "unit is empty (use e.g. \"m\" or \"mm\")");
     }
     if (root_.contains("camera")) scene.camera = camera(root_["camera"], "/camera");
+    if (root_.contains("cameras")) readCameras(scene);
     readMaterials(scene);
     readSurfaces(scene);
     validateScene(scene);
@@ -167,6 +169,18 @@ class SceneJsonReader {
                         (value.is_array() ? "an array of " + std::to_string(value.size()) : typeName(value)));
     return Rgb(number(value[0], pointer + "/0"), number(value[1], pointer + "/1"),
                number(value[2], pointer + "/2"));
+  }
+
+  // "cameras": {"NAME": {camera}, ...}: views a command or a lesson step asks for by name.
+  void readCameras(Scene& scene) const {
+    const json& cameras = root_["cameras"];
+    requireType(cameras, "/cameras", json::value_t::object, "an object of named cameras");
+    for (const auto& [name, value] : cameras.items()) {
+      if (!isCameraName(name))
+        fail("/cameras/" + name,
+             "camera name '" + name + "' uses letters, digits, '-', '_' and '.' only (no spaces)");
+      scene.cameras.push_back({name, camera(value, "/cameras/" + name)});
+    }
   }
 
   Camera camera(const json& value, const std::string& pointer) const {

@@ -11,6 +11,7 @@
 #include <set>
 #include <vector>
 
+#include "core/camera_path.h"
 #include "core/io/mtl_reader.h"
 #include "core/io/scene_assembly.h"
 #include "core/io/scene_loader.h"
@@ -46,6 +47,7 @@ struct ObjScan {
   std::string name;
   std::string unit = "m";
   std::optional<Camera> camera;
+  std::vector<NamedCamera> cameras;
 };
 
 // Statements that say nothing a radiosity scene can use; skipped without a word.
@@ -64,6 +66,15 @@ void readMetaComment(const std::string& line, const SourceLocation& where, ObjSc
   if (word == "unit" && !value.empty()) scan.unit = value;
   if (word == "name") scan.name = value;
   if (word == "camera") scan.camera = parseCameraText(value, where);
+  // "# camera NAME: ...": a named view, for --camera NAME and the lessons' camera keys.
+  if (word.rfind("camera ", 0) == 0) {
+    const std::string name = trimmed(word.substr(7));
+    if (!isCameraName(name))
+      throw InputError(where, "camera name '" + name + "' uses letters, digits, '-', '_' and '.' only");
+    for (const NamedCamera& c : scan.cameras)
+      if (c.name == name) throw InputError(where, "camera '" + name + "' is named twice");
+    scan.cameras.push_back({name, parseCameraText(value, where)});
+  }
 }
 
 Vec3 parseVertex(const std::vector<std::string>& words, const SourceLocation& where) {
@@ -211,6 +222,7 @@ Scene parseSceneObj(const std::string& text, const std::string& path, const MtlS
   scene.sourceFile = path;
   scene.unit = scan.unit;
   scene.camera = scan.camera;
+  scene.cameras = scan.cameras;
   if (!scan.name.empty()) {
     scene.name = scan.name;
   } else {
