@@ -257,9 +257,11 @@ SolverStatus hierarchicalClustering(const RadiositySystem& system, RgbField& B, 
       const bool converged = rec.residual <= options.tolerance;
       if (!B.allFinite()) return SolverStatus::NumericalIssue;
       if (round == 1 || !converged || iteration >= cap) {
-        // The estimate as it stands: the change from the first round (zero before there is one) and the
-        // Jacobi tail of this sweep's change.
-        const Row tail = change.cwiseAbs().colwise().maxCoeff() * (q / (1.0 - q));
+        // The estimate as it stands: the change from the first round (zero before there is one), the
+        // Jacobi tail of this sweep's change, and the links' float rounding (2^-24 of every transfer, all
+        // of which add up to at most the largest B - E, carried through the bounces).
+        const Row rounding = (B - system.emission).cwiseAbs().colwise().maxCoeff() * (0x1p-24 / (1.0 - q));
+        const Row tail = change.cwiseAbs().colwise().maxCoeff() * (q / (1.0 - q)) + rounding;
         RgbField estimate = round == 1 ? RgbField(2.0 * (B - first).cwiseAbs()) : RgbField::Zero(B.rows(), 3);
         estimate.rowwise() += tail;
         const double b = areaRms(B, system.areas);

@@ -15,8 +15,9 @@
 // brightness guessed as E + rho x the ambient term (Cohen et al. 1988); the second with the first's
 // radiosities as brightness and a threshold four times smaller, solved from the first's solution. The
 // second round's solution is returned. Its error estimate, per element and channel, is
-//   2 |B_second - B_first| + (q / (1 - q)) max |last sweep's change|,   q = largest reflectance:
-// twice the change from a four times tighter tolerance plus the Jacobi tail bound of the iteration error.
+//   2 |B_second - B_first| + (q / (1 - q)) max |last sweep's change| + 2^-24 max |B - E| / (1 - q),
+// q = largest reflectance: twice the change from a four times tighter tolerance, the Jacobi tail bound of
+// the iteration error, and the rounding of the links' float transfers.
 // If the error falls like tolerance^p, |B_second - B_first| >= (4^p - 1) x the second's error, so twice
 // the change covers it for p >= 0.29 (measured on the museum and the factory: p about 0.5 to 1). The
 // record's standardError is its area-weighted RMS relative to that of B.
