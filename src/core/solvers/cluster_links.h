@@ -16,10 +16,11 @@
 // source element), and the direction u from the receiver's centroid to the source's: clusters are
 // orientation-aware through six directional bins (+-x, +-y, +-z; Sillion 1995 uses a directional
 // distribution of the same kind). A source cluster radiates, towards w, (1/pi) sum over axes of
-// D[a][sign w_a] |w_a|, where D[a][s] = sum of B_e A_e max(0, s n_e,a) over its elements: exact for elements
-// whose normals lie along an axis, an upper estimate otherwise. A receiver cluster collects the normal
-// irradiance E in the same bins (E max(0, s u_a)), and pushes them down; an element below picks
-// sum of max(0, s n_a) x bin[a][s], which is E max(0, n . u) when n is along an axis. An element that
+// D[a][sign w_a] |w_a|, where D[a][s] = sum of B_e A_e f_a,s(n_e) over its elements, with the weights
+// f_a,s(n) = max(0, s n_a) / sum |n_a|: exact for elements whose normals lie along an axis, and conserving
+// the energy (over all directions) otherwise. A receiver cluster collects the normal irradiance E in the
+// same bins (E max(0, s u_a)), and pushes them down; an element below picks sum of f_a,s(n) x bin[a][s],
+// which is E max(0, n . u) when n is along an axis. An element that
 // receives directly uses its own cosine. Element pairs closer than twice their radii get the exact
 // unoccluded polygon-to-polygon form factor, others the centroid's point-to-polygon one. The visible
 // fraction V comes from a few rays between random points (area-weighted elements of a cluster, uniform
