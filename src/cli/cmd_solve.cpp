@@ -226,6 +226,7 @@ void addSolveCommand(CLI::App& app) {
                      addSettingOption(*command, "iterations", a->s.maxIterations));
   addSettingOption(*command, "seed", a->s.seed);
   addSettingOption(*command, "rays-per-iteration", a->s.raysPerIteration);
+  addSettingOption(*command, "cluster-tolerance", a->s.clusterTolerance);
   addSettingOption(*command, "resolution", a->s.resolution);
   addSettingOption(*command, "samples", a->s.samples);
   command->add_flag("--ambient", a->s.ambient, "progressive: show B plus the ambient term");

@@ -15,6 +15,7 @@ void SolutionArguments::add(CLI::App& command) {
   addSettingOption(command, "iterations", maxIterations);
   addSettingOption(command, "seed", seed);
   addSettingOption(command, "rays-per-iteration", raysPerIteration);
+  addSettingOption(command, "cluster-tolerance", clusterTolerance);
   addSettingOption(command, "resolution", resolution);
   addSettingOption(command, "samples", samples);
   mesh.add(command);
@@ -35,6 +36,7 @@ SolverOptions SolutionArguments::solverOptions() const {
   options.maxIterations = maxIterations;
   options.seed = seed;
   options.raysPerIteration = raysPerIteration;
+  options.clusterTolerance = clusterTolerance;
   options.ambient = ambient;
   options.recordHistory = false;
   return options;
@@ -86,10 +88,17 @@ SolveOutcome solveMesh(const Mesh& mesh, const SolutionArguments& a, Pipeline& p
     SolveOutcome outcome = solveRadiosity(RadiositySystem::fromGeometry(mesh), name, a.solverOptions(), false,
                                           progress, observerFor(a));
     progress.finish();
-    std::cerr << "solve (" << name << "): " << toString(outcome.status) << " after " << outcome.iterations
-              << " " << (outcome.iterations == 1 ? "iteration" : "iterations") << ", " << outcome.rays
-              << " rays, unshot residual " << outcome.error << ", relative standard error "
-              << outcome.standardError << "\n";
+    if (outcome.links > 0)
+      std::cerr << "solve (" << name << "): " << toString(outcome.status) << " after " << outcome.iterations
+                << " " << (outcome.iterations == 1 ? "sweep" : "sweeps") << ", " << outcome.links
+                << " links, " << outcome.nodes << " nodes, " << outcome.memoryBytes
+                << " bytes of links and nodes, " << outcome.rays
+                << " visibility rays, estimated relative RMS error " << outcome.standardError << "\n";
+    else
+      std::cerr << "solve (" << name << "): " << toString(outcome.status) << " after " << outcome.iterations
+                << " " << (outcome.iterations == 1 ? "iteration" : "iterations") << ", " << outcome.rays
+                << " rays, unshot residual " << outcome.error << ", relative standard error "
+                << outcome.standardError << "\n";
     checkOutcome(outcome, a);
     return outcome;
   }

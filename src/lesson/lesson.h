@@ -106,9 +106,10 @@ struct StepParameters {
   std::optional<int> iterations;     // maximum iterations
   std::optional<double> tolerance;
   std::optional<double> relaxation;
-  std::optional<int> raysPerIteration;  // stochastic solvers: rays of the first iteration
-  bool ambient = false;                 // progressive refinement with the ambient term
-  int bounces = 6;                      // bounces stage
+  std::optional<int> raysPerIteration;     // stochastic solvers: rays of the first iteration
+  std::optional<double> clusterTolerance;  // hierarchical-clustering: the refinement's threshold
+  bool ambient = false;                    // progressive refinement with the ambient term
+  int bounces = 6;                         // bounces stage
   double ambientLight = 0.0;  // local stage: the constant ambient radiosity (0 = the classic estimate)
   std::map<std::string, Rgb> reflectance;  // surface name -> reflectance override
   double lightScale = 1.0;                 // multiplies every emission

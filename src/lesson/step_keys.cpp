@@ -213,6 +213,22 @@ std::vector<StepKey> makeTable() {
        .zeroText = "automatic",
        .stages = solving,
        .slot = &P::raysPerIteration});
+  add({.name = "cluster-tolerance",
+       .type = KeyType::Double,
+       .min = 0,
+       .max = 10,
+       .defaultText = "0",
+       .label = "Cluster tolerance",
+       .tooltip =
+           "hierarchical-clustering: a link between two clusters (or elements) is kept when the light it "
+           "could miss is at most this fraction of the scene's mean radiosity; smaller gives more links "
+           "and less error. 0 is automatic: 0.05.",
+       .control = true,
+       .decimals = 3,
+       .step = 0.01,
+       .zeroText = "automatic",
+       .stages = solving,
+       .slot = &P::clusterTolerance});
   add({.name = "ambient",
        .type = KeyType::Bool,
        .defaultText = "false",

@@ -47,6 +47,7 @@ SolverOptions solverOptionsFor(const StepParameters& p) {
   if (p.iterations) o.maxIterations = *p.iterations;
   if (p.relaxation) o.relaxation = *p.relaxation;
   if (p.raysPerIteration) o.raysPerIteration = *p.raysPerIteration;
+  if (p.clusterTolerance) o.clusterTolerance = *p.clusterTolerance;
   if (p.seed) o.seed = *p.seed;
   o.ambient = p.ambient;
   return o;

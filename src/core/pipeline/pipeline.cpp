@@ -32,6 +32,9 @@ SolveOutcome solveRadiosity(const RadiositySystem& system, const std::string& re
     out.trace.push_back({r.iteration, r.residual, r.seconds});
     out.standardError = r.standardError;
     out.rays = r.rays;
+    out.links = r.links;
+    out.nodes = r.nodes;
+    out.memoryBytes = r.memoryBytes;
     if (observer) observer(r);
   });
   progress.report(0.0, "solve (" + out.solverName + ")");

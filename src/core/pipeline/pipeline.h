@@ -39,6 +39,10 @@ struct SolveOutcome {
   RgbField standardErrors;
   double standardError = 0;
   long rays = 0;
+  // Hierarchical solvers: links, nodes and the bytes they hold (IterationRecord).
+  long links = 0;
+  long nodes = 0;
+  long long memoryBytes = 0;
 };
 
 struct PipelineOutput {

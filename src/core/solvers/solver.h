@@ -26,6 +26,9 @@ struct SolverOptions {
   bool ambient = false;       // progressive: add the ambient term to the displayed B
   std::uint64_t seed = 1;     // stochastic solvers
   long raysPerIteration = 0;  // stochastic: ray budget per iteration (0 = a default from n)
+  // hierarchical-clustering: a link is kept when the light it could miss is at most this fraction of the
+  // scene's mean radiosity (0 = defaultClusterTolerance()).
+  double clusterTolerance = 0;
   bool recordHistory = true;  // keep every IterationRecord (memory n x 3 doubles per iteration)
   // random-walk: score every collision (lower variance) or only where a walk is absorbed.
   enum class WalkEstimator { Collision, Absorption };
@@ -58,6 +61,10 @@ struct IterationRecord {
   double standardError =
       0;          // stochastic methods: RMS of the per-element standard error of B, relative to ||B||
   long rays = 0;  // stochastic methods: rays (or walks) used so far
+  // Hierarchical methods: links, nodes, and the bytes they hold (counted from the containers, at the peak).
+  long links = 0;
+  long nodes = 0;
+  long long memoryBytes = 0;
 };
 
 using IterationObserver = std::function<void(const IterationRecord&)>;
@@ -123,7 +130,7 @@ const SolverInfo& solverInfo(const std::string& name);
 bool solverNeedsMatrix(const std::string& name);
 
 // Registry by name (solverTable()): direct, jacobi, gauss-seidel, southwell, progressive, bounces,
-// stochastic-jacobi, random-walk, local-lines.
+// stochastic-jacobi, random-walk, local-lines, hierarchical-clustering.
 std::unique_ptr<Solver> makeSolver(const std::string& name);  // throws std::invalid_argument
 std::vector<std::string> solverNames();
 // The solver used when none is named: a direct solve for small n, an iterative one otherwise.

@@ -2,6 +2,7 @@
 #include <stdexcept>
 
 #include "core/solvers/bounces_solver.h"
+#include "core/solvers/clustering_solver.h"
 #include "core/solvers/direct_solver.h"
 #include "core/solvers/gathering_solvers.h"
 #include "core/solvers/local_lines_solver.h"
@@ -41,6 +42,11 @@ const std::vector<SolverInfo>& solverTable() {
        Geometry,
        "shoots the unshot power with rays traced through the scene; stores no form factor, memory O(n)",
        {"tolerance", "iterations", "seed", "rays-per-iteration"}},
+      {"hierarchical-clustering",
+       Geometry,
+       "gathers along links between clusters of elements, refined by a bound on what each link carries; "
+       "stores no form factor matrix, memory about O(n)",
+       {"tolerance", "iterations", "seed", "cluster-tolerance"}},
   };
   return table;
 }
@@ -69,6 +75,8 @@ std::unique_ptr<Solver> makeSolver(const std::string& name) {
   if (name == "stochastic-jacobi") return std::make_unique<StochasticSolver>(name, &stochasticJacobi);
   if (name == "random-walk") return std::make_unique<StochasticSolver>(name, &randomWalk);
   if (name == "local-lines") return std::make_unique<StochasticSolver>(name, &localLines);
+  if (name == "hierarchical-clustering")
+    return std::make_unique<StochasticSolver>(name, &hierarchicalClustering);
   throw std::logic_error("solver '" + name + "' is in the table but has no implementation");
 }
 
