@@ -72,10 +72,8 @@ void run(const CompareArguments& a) {
   const double twoPassSeconds = secondsSince(start);
 
   // One exposure for every picture: the path-traced image's mean maps to 18 % grey.
-  double mean = 0;
-  for (const Rgb& p : reference.B.pixels) mean += p.sum() / 3;
-  mean /= static_cast<double>(std::max<std::size_t>(1, reference.B.pixels.size()));
-  const double scale = mean > 0 ? 0.18 / mean : 1.0;
+  const double scale = middleGreyScale(reference.B);
+  const double mean = 0.18 / scale;
   writeImages(a.output, "path-traced", reference.B, scale);
   writePfm(reference.error, a.output + "/path-traced-error.pfm");
   writeImages(a.output, "radiosity", radiosity, scale);

@@ -10,6 +10,7 @@ void addFormFactorsCommand(CLI::App& app);
 void addSolveCommand(CLI::App& app);
 void addIrradianceCommand(CLI::App& app);
 void addComparePtCommand(CLI::App& app);
+void addRenderCommand(CLI::App& app);
 void addMatrixCommand(CLI::App& app);
 void addFigureCommand(CLI::App& app);
 void addLessonCommand(CLI::App& app);

@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
   rt::cli::addSolveCommand(app);
   rt::cli::addIrradianceCommand(app);
   rt::cli::addComparePtCommand(app);
+  rt::cli::addRenderCommand(app);
   rt::cli::addMatrixCommand(app);
   rt::cli::addFigureCommand(app);
   rt::cli::addLessonCommand(app);

@@ -70,4 +70,11 @@ double rmsDifference(const RgbImage& a, const RgbImage& b) {
   return a.pixels.empty() ? 0.0 : std::sqrt(sum / (3.0 * static_cast<double>(a.pixels.size())));
 }
 
+double middleGreyScale(const RgbImage& image) {
+  double mean = 0;
+  for (const Rgb& p : image.pixels) mean += p.sum() / 3;
+  mean /= static_cast<double>(std::max<std::size_t>(1, image.pixels.size()));
+  return mean > 0 ? 0.18 / mean : 1.0;
+}
+
 }  // namespace rt

@@ -27,6 +27,9 @@ RgbImage readPfm(const std::string& path);
 // Binary PPM: each channel times `scale`, clamped to [0, 1], sRGB-encoded, 8 bits.
 void writePpm(const RgbImage& image, double scale, const std::string& path);
 
+// The exposure that maps the image's mean (over pixels and channels) to 18 % grey; 1 for a black image.
+double middleGreyScale(const RgbImage& image);
+
 // Root mean square over pixels and channels of a - b (same size).
 double rmsDifference(const RgbImage& a, const RgbImage& b);
 
