@@ -89,7 +89,7 @@ void measureMeshes(StageContext& c, ScalingData& data) {
   data.linksSlope = logLogSlope(n, links);
   data.formFactorSlope = logLogSlope(n, seconds);
   v["links-slope"] = data.linksSlope;
-  v["formfactor-slope"] = data.formFactorSlope;
+  v["time-slope.formfactors"] = data.formFactorSlope;
 
   // Where F stops fitting in this machine's memory, and the time F would take there, extrapolated from the
   // largest mesh along n^2 (every pair is computed).

@@ -31,7 +31,7 @@ TEST_F(Scaling, TheDenseMatrixHoldsEightBytesPerPairAndItsTimeGrowsLikeNSquared)
     EXPECT_GT(p.formFactorSeconds, 0) << n;
   }
   // "the time grows like n^2 too": every pair is sampled.
-  EXPECT_NEAR(*r.value("formfactor-slope"), 2.0, 0.35);
+  EXPECT_NEAR(*r.value("time-slope.formfactors"), 2.0, 0.35);
   // "fills all of it at n = ...": 8 n^2 of that n is the machine's memory.
   const double fit = *r.value("elements.fit");
   EXPECT_NEAR(8 * fit * fit / *r.value("memory"), 1.0, 1e-9);
