@@ -8,7 +8,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 17> kViews{{
+constexpr std::array<std::pair<View, const char*>, 21> kViews{{
     {View::Scene, "scene"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
@@ -26,6 +26,10 @@ constexpr std::array<std::pair<View, const char*>, 17> kViews{{
     {View::Noise, "noise"},
     {View::TwoPass, "two-pass"},
     {View::Walkthrough, "walkthrough"},
+    {View::Memory, "memory"},
+    {View::Cost, "cost"},
+    {View::Links, "links"},
+    {View::Clusters, "clusters"},
 }};
 
 }  // namespace
@@ -88,6 +92,12 @@ const std::vector<StageInfo>& stageTable() {
        "B with `solver`; path-traced (`paths`), radiosity and two-pass images of `image-size`; noise against "
        "paths; times",
        {V::Scene, V::Traced, V::Difference, V::Noise, V::TwoPass, V::Walkthrough}},
+      {Stage::Scaling,
+       "scaling",
+       "for each of `subdivisions`: bytes and time of F with `method`, links and bytes of "
+       "hierarchical-clustering; "
+       "local lines' standard error for each `sweep` (rays per element); the cluster tree at `cluster-depth`",
+       {V::Scene, V::Memory, V::Cost, V::Links, V::Noise, V::Clusters}},
   };
   return table;
 }

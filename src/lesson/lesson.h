@@ -31,6 +31,7 @@ enum class Stage {
   Refine,       // meshes that follow the light: adaptive, discontinuity or hierarchical (core/refine)
   Exercise,     // a homework exercise (src/homework) the reader answers: questions, Check, hint, solution
   PathTrace,    // the radiosity image against a path-traced one of the same equation, and the two-pass image
+  Scaling,      // the dense matrix's memory and time against n, clustering's links, local lines' noise
 };
 
 // The figures a step can ask for; the names match the viz layer's views.
@@ -52,6 +53,10 @@ enum class View {
   Noise,        // the path tracer's noise against its paths per pixel, log-log
   TwoPass,      // the two-pass image beside the path-traced one
   Walkthrough,  // the solution along the step's camera path, as numbered frames
+  Memory,       // bytes of the dense F against n, log-log, with this machine's memory
+  Cost,         // form-factor time against n, log-log
+  Links,        // clustering's links against the n^2 element pairs
+  Clusters,     // the cluster tree's boxes at one depth over the scene
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.
@@ -126,9 +131,10 @@ struct StepParameters {
   std::string from;          // the element or surface a hemicube/Nusselt/rays view is seen from
   std::string topic;         // exercise stage: the homework topic (src/homework/topic_table.h)
   // pathtrace stage: the images are small so that a step renders in seconds (the tracer is TBB-parallel)
-  int paths = 256;      // path-traced samples per pixel
-  int imageSize = 128;  // pixels along each side of the images
-  int gatherRays = 64;  // final-gather rays per pixel of the two-pass image
+  int paths = 256;       // path-traced samples per pixel
+  int imageSize = 128;   // pixels along each side of the images
+  int gatherRays = 64;   // final-gather rays per pixel of the two-pass image
+  int clusterDepth = 3;  // scaling stage: the depth of the cluster tree whose boxes are drawn
 };
 
 struct Step {

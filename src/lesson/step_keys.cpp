@@ -45,9 +45,10 @@ std::string number(double v) {
 std::vector<StepKey> makeTable() {
   const std::vector<Stage> computeF{Stage::FormFactors, Stage::Hemicube, Stage::Nusselt,   Stage::Rays,
                                     Stage::Exact,       Stage::Matrix,   Stage::Solve,     Stage::Compare,
-                                    Stage::Bounces,     Stage::Local,    Stage::Benchmark, Stage::PathTrace};
-  const std::vector<Stage> solving{Stage::Solve, Stage::Compare, Stage::Matrix,
-                                   Stage::Local, Stage::Exact,   Stage::PathTrace};
+                                    Stage::Bounces,     Stage::Local,    Stage::Benchmark, Stage::PathTrace,
+                                    Stage::Scaling};
+  const std::vector<Stage> solving{Stage::Solve, Stage::Compare,   Stage::Matrix, Stage::Local,
+                                   Stage::Exact, Stage::PathTrace, Stage::Scaling};
   const std::vector<Stage> seen{Stage::FormFactors, Stage::Hemicube, Stage::Nusselt, Stage::Rays,
                                 Stage::Exact};
   std::vector<StepKey> t;
@@ -135,16 +136,17 @@ std::vector<StepKey> makeTable() {
        .min = 1,
        .max = 64,
        .label = "Subdivisions",
-       .tooltip = "Several subdivision levels to compare.",
-       .stages = {Stage::Compare},
+       .tooltip = "Several subdivision levels to compare (scaling: the meshes whose cost is measured).",
+       .stages = {Stage::Compare, Stage::Scaling},
        .slot = &P::subdivisions});
   add({.name = "sweep",
        .type = KeyType::Ints,
        .min = 1,
        .max = 1000000,
        .label = "Sweep",
-       .tooltip = "The values of each method's accuracy knob (resolution or samples) a benchmark tries.",
-       .stages = {Stage::Benchmark},
+       .tooltip = "The values of each method's accuracy knob (resolution or samples) a benchmark tries; "
+                  "scaling: the rays per element local lines is run with.",
+       .stages = {Stage::Benchmark, Stage::Scaling},
        .slot = &P::sweep});
   add({.name = "solver",
        .type = KeyType::Choice,
@@ -295,6 +297,17 @@ std::vector<StepKey> makeTable() {
        .step = 16,
        .stages = {Stage::PathTrace},
        .slot = &P::gatherRays});
+  add({.name = "cluster-depth",
+       .type = KeyType::Int,
+       .min = 0,
+       .max = 30,
+       .defaultText = "3",
+       .label = "Cluster depth",
+       .tooltip = "Scaling stage: the depth of the cluster tree whose boxes are drawn (0: the root, one box "
+                  "round the scene; each level doubles the boxes).",
+       .control = true,
+       .stages = {Stage::Scaling},
+       .slot = &P::clusterDepth});
   add({.name = "light-scale",
        .type = KeyType::Double,
        .min = 0,

@@ -13,6 +13,7 @@
 #include "core/pipeline/pipeline.h"
 #include "core/scene.h"
 #include "homework/exercise.h"
+#include "lesson/scaling_data.h"
 #include "lesson/traced_pictures.h"
 
 namespace rt::lesson {
@@ -69,6 +70,9 @@ struct StepResult {
 
   // Pathtrace stage: the images, the noise sweep and the times.
   std::shared_ptr<const TracedPictures> pictures;
+
+  // Scaling stage: the dense method's cost and the clustering and local-lines solvers' against n and rays.
+  std::shared_ptr<const ScalingData> scaling;
 
   // Exercise stage: the question, its answers and worked solution (values: given.<name>, answer.<id>).
   std::optional<homework::Exercise> exercise;

@@ -190,6 +190,9 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
     case Stage::PathTrace:
       detail::computePathTrace(c);
       break;
+    case Stage::Scaling:
+      detail::computeScaling(c);
+      break;
   }
   if (result.B.rows() == static_cast<Eigen::Index>(result.mesh.size()))
     detail::addSurfaceValues(result, "B", result.B);

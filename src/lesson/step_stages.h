@@ -60,5 +60,6 @@ void computeExact(StageContext& c);
 void computeBenchmark(StageContext& c);
 void computeRefine(StageContext& c);
 void computePathTrace(StageContext& c);  // stage_pathtrace.cpp
+void computeScaling(StageContext& c);    // stage_scaling.cpp
 
 }  // namespace rt::lesson::detail

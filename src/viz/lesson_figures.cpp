@@ -7,6 +7,7 @@
 #include "viz/chart.h"
 #include "viz/exact_visibility.h"
 #include "viz/hemicube_view.h"
+#include "viz/lesson_scaling_figures.h"
 #include "viz/lesson_traced_figures.h"
 #include "viz/matrix_view.h"
 #include "viz/nusselt_view.h"
@@ -237,11 +238,19 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
       return "One solution, " + std::to_string(r.cameraPath.size()) + " views along the cameras " + route +
              " (the first frame; the others are numbered beside it)";
     }
+    case View::Noise:
+      // The scaling stage measures a solver's noise against its rays, the pathtrace stage the tracer's.
+      if (r.scaling) return detail::renderScalingView(view, step, r, s, path);
+      return detail::renderTracedView(view, step, r, s, path);
     case View::Traced:
     case View::Difference:
-    case View::Noise:
     case View::TwoPass:
       return detail::renderTracedView(view, step, r, s, path);
+    case View::Memory:
+    case View::Cost:
+    case View::Links:
+    case View::Clusters:
+      return detail::renderScalingView(view, step, r, s, path);
   }
   return "";
 }

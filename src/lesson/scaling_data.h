@@ -1,0 +1,47 @@
+// What a scaling step measures: how the dense method's memory and form-factor time grow with the number of
+// elements n, how many links hierarchical radiosity with clustering needs instead of the n^2 element
+// pairs, how local lines' noise falls with the rays, and the cluster hierarchy's boxes at one depth. The
+// viz layer draws them; the numbers are also the step's placeholders.
+#pragma once
+
+#include <vector>
+
+#include "core/vec.h"
+
+namespace rt::lesson {
+
+// One mesh of the step's `subdivisions`: the dense matrix's cost against the clustering solver's.
+struct ScalingPoint {
+  int subdivide = 0;
+  long elements = 0;
+  double denseBytes = 0;         // n^2 doubles: what storing F takes
+  double formFactorSeconds = 0;  // computing F with the step's method
+  long links = 0;                // hierarchical-clustering on the same mesh
+  long nodes = 0;
+  double clusterBytes = 0;  // tree and links, counted from the containers
+  double clusterSeconds = 0;
+};
+
+// Local lines on the step's mesh with one number of rays: the standard error it reports, relative to ||B||.
+struct SolverNoisePoint {
+  double raysPerElement = 0;  // all rays traced, over n
+  double standardError = 0;
+};
+
+struct ClusterBox {
+  Vec3 lower, upper;
+};
+
+struct ScalingData {
+  std::vector<ScalingPoint> points;
+  std::vector<SolverNoisePoint> noise;
+  double noiseSlope = 0;       // log-log slope of the standard error against the rays
+  double linksSlope = 0;       // log-log slope of the links against n
+  double formFactorSlope = 0;  // log-log slope of the form-factor time against n
+  double memoryBytes = 0;      // this machine's physical memory
+  double elementsThatFit = 0;  // the n whose dense F fills memoryBytes
+  int clusterDepth = 0;
+  std::vector<ClusterBox> boxes;  // the cluster tree's nodes at clusterDepth (leaves above it included)
+};
+
+}  // namespace rt::lesson

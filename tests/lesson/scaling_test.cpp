@@ -1,0 +1,103 @@
+// The scaling stage and the facts the lesson "When n² is too big" states about its numbers, checked on the
+// lesson's own steps: a dense F holds 8 n^2 bytes and its time grows about like n^2, clustering's links grow
+// slower than the n^2 pairs with links per element settling, local lines' noise falls like 1/sqrt(rays), and
+// the cluster boxes at a depth partition the elements.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "lesson/step_runner.h"
+#include "lesson_test_support.h"
+
+namespace rt::lesson {
+namespace {
+
+class Scaling : public ::testing::Test {
+ protected:
+  void SetUp() override { lesson_ = test::shippedLesson("when-n-squared-is-too-big"); }
+  Lesson lesson_;
+};
+
+TEST_F(Scaling, TheDenseMatrixHoldsEightBytesPerPairAndItsTimeGrowsLikeNSquared) {
+  StepRunner runner(test::repoFolders().scenes);
+  const Step& step = test::stepWithFigure(lesson_, "dense-cost");
+  const StepResult r = runner.run(lesson_, step);
+  EXPECT_NO_THROW(resolvedText(lesson_, step, r));
+  ASSERT_TRUE(r.scaling);
+  ASSERT_EQ(r.scaling->points.size(), step.parameters.subdivisions.size());
+  for (const ScalingPoint& p : r.scaling->points) {
+    const double n = static_cast<double>(p.elements);
+    EXPECT_EQ(p.denseBytes, 8 * n * n) << n;  // "8 n^2 bytes"
+    EXPECT_GT(p.formFactorSeconds, 0) << n;
+  }
+  // "the time grows like n^2 too": every pair is sampled.
+  EXPECT_NEAR(*r.value("time-slope.formfactors"), 2.0, 0.35);
+  // "fills all of it at n = ...": 8 n^2 of that n is the machine's memory.
+  const double fit = *r.value("elements.fit");
+  EXPECT_NEAR(8 * fit * fit / *r.value("memory"), 1.0, 1e-9);
+  EXPECT_GT(fit, static_cast<double>(r.scaling->points.back().elements)) << "the lesson's meshes fit";
+  EXPECT_GT(*r.value("minutes.formfactors.fit"), *r.value("seconds.formfactors[3]") / 60.0);
+}
+
+TEST_F(Scaling, LinksGrowSlowerThanPairsAndLinksPerElementSettle) {
+  StepRunner runner(test::repoFolders().scenes, RunOptions{.quick = true});
+  const Step& step = test::stepWithFigure(lesson_, "links");
+  const StepResult r = runner.run(lesson_, step);
+  EXPECT_NO_THROW(resolvedText(lesson_, step, r));
+  ASSERT_TRUE(r.scaling);
+  const auto& points = r.scaling->points;
+  ASSERT_EQ(points.size(), 4u);
+  for (const ScalingPoint& p : points) {
+    EXPECT_LT(p.links, p.elements * p.elements) << p.elements;
+    EXPECT_EQ(p.nodes, 2 * p.elements - 1) << p.elements;
+  }
+  // "grow about like n, while the pairs grow like n^2": the fitted slope well below 2.
+  EXPECT_LT(*r.value("links-slope"), 1.6);
+  // "The links per element settle": the two finest meshes within a fifth of each other.
+  EXPECT_NEAR(*r.value("links-per-element[3]") / *r.value("links-per-element[2]"), 1.0, 0.2);
+  // "... bytes at the finest mesh against ... for F": clustering takes less at the finest mesh.
+  EXPECT_LT(*r.value("bytes.clustering[3]"), *r.value("bytes.dense[3]"));
+}
+
+TEST_F(Scaling, ClusterBoxesAtADepthCoverEveryElementAndDoubleWithTheDepth) {
+  StepRunner runner(test::repoFolders().scenes, RunOptions{.quick = true});
+  Step step = test::stepWithFigure(lesson_, "links");
+  step.parameters.subdivisions = {2};  // the boxes are of the step's own mesh
+  for (int depth : {0, 1, 3}) {
+    step.parameters.clusterDepth = depth;
+    const StepResult r = runner.run(lesson_, step);
+    ASSERT_TRUE(r.scaling);
+    EXPECT_EQ(r.scaling->boxes.size(), std::size_t{1} << depth) << "each level doubles the boxes";
+    for (const Element& e : r.mesh.elements) {
+      bool inside = false;
+      for (const ClusterBox& b : r.scaling->boxes)
+        inside = inside || ((e.centroid.array() >= b.lower.array() - 1e-9).all() &&
+                            (e.centroid.array() <= b.upper.array() + 1e-9).all());
+      EXPECT_TRUE(inside) << "an element outside every box at depth " << depth;
+    }
+  }
+}
+
+TEST_F(Scaling, LocalLinesNoiseFallsAsOneOverRootRays) {
+  StepRunner runner(test::repoFolders().scenes);
+  const Step& step = test::stepWithFigure(lesson_, "lines-noise");
+  const StepResult r = runner.run(lesson_, step);
+  EXPECT_NO_THROW(resolvedText(lesson_, step, r));
+  ASSERT_TRUE(r.scaling);
+  EXPECT_TRUE(r.scaling->points.empty()) << "a step about noise does not measure meshes";
+  // "The fitted slope ... is -0.50"; sixty-four times the rays give about an eighth of the noise.
+  EXPECT_NEAR(*r.value("noise-slope"), -0.5, 0.08);
+  EXPECT_NEAR(*r.value("standard-error[3]") / *r.value("standard-error[0]"), 0.125, 0.04);
+  EXPECT_GT(*r.value("rays-per-element[3]"), *r.value("rays-per-element[0]"));
+  EXPECT_EQ(r.B.rows(), static_cast<Eigen::Index>(r.mesh.size())) << "local lines' solution is shown";
+}
+
+TEST_F(Scaling, AStepNeedsMeshesOrRays) {
+  StepRunner runner(test::repoFolders().scenes, RunOptions{.quick = true});
+  Step step = test::stepWithFigure(lesson_, "lines-noise");
+  step.parameters.sweep.clear();
+  EXPECT_THROW(runner.run(lesson_, step), InputError);
+}
+
+}  // namespace
+}  // namespace rt::lesson
