@@ -85,6 +85,8 @@ TEST(CameraSteps, LessonRenderWritesTheWalkthroughAsNumberedFrames) {
                                  &log),
             0)
       << log;
+  if (log.find("this build has no viz library") != std::string::npos)
+    GTEST_SKIP() << "the CLI was built without the viz library: the page is written, no frames drawn";
   EXPECT_TRUE(std::filesystem::exists(root + "/out/tour/tour.png")) << log;
   for (int f = 1; f <= 4; ++f)
     EXPECT_TRUE(std::filesystem::exists(root + "/out/tour/tour-000" + std::to_string(f) + ".png")) << f;
