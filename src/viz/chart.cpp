@@ -37,6 +37,21 @@ void styleAxis(vtkAxis* axis, const std::string& title, bool logScale, int fontS
 
 }  // namespace
 
+Series fittedPowerLaw(const Series& points, double slope, const std::string& name) {
+  double lx = 0, ly = 0;
+  const double count = static_cast<double>(points.x.size());
+  for (std::size_t k = 0; k < points.x.size(); ++k) {
+    lx += std::log(points.x[k]) / count;
+    ly += std::log(points.y[k]) / count;
+  }
+  Series fitted{name, {}, {}};
+  for (double x : {points.x.front(), points.x.back()}) {
+    fitted.x.push_back(x);
+    fitted.y.push_back(std::exp(ly + slope * (std::log(x) - lx)));
+  }
+  return fitted;
+}
+
 void writeLineChart(const std::vector<Series>& series, const ChartOptions& options, const std::string& path) {
   figureFormatOf(path);
   const double scale = options.dpi > 0 ? options.dpi / 96.0 : 1.0;

@@ -12,6 +12,10 @@ struct Series {
   std::vector<double> x, y;
 };
 
+// The straight line of log-log slope `slope` through the centre of mass (in log-log) of `points`, drawn over
+// their first and last x: a fitted power law for a chart. `points` must have two or more points.
+Series fittedPowerLaw(const Series& points, double slope, const std::string& name);
+
 struct ChartOptions {
   std::string title, xLabel, yLabel;
   bool logX = false, logY = false;

@@ -94,17 +94,8 @@ std::string renderScalingView(lesson::View view, const lesson::Step& step, const
         reported.y.push_back(p.standardError);
       }
       if (reported.x.size() < 2) throw std::runtime_error(path + ": fewer than two noise points");
-      double lx = 0, ly = 0;
-      const double count = static_cast<double>(reported.x.size());
-      for (std::size_t k = 0; k < reported.x.size(); ++k) {
-        lx += std::log(reported.x[k]) / count;
-        ly += std::log(reported.y[k]) / count;
-      }
-      Series fitted{"fit: slope " + formatted("%.2f", d.noiseSlope), {}, {}};
-      for (double x : {reported.x.front(), reported.x.back()}) {
-        fitted.x.push_back(x);
-        fitted.y.push_back(std::exp(ly + d.noiseSlope * (std::log(x) - lx)));
-      }
+      const Series fitted =
+          fittedPowerLaw(reported, d.noiseSlope, "fit: slope " + formatted("%.2f", d.noiseSlope));
       ChartOptions o{"Local lines: noise against rays",
                      "rays per element",
                      "standard error / ||B||",

@@ -71,8 +71,7 @@ std::string renderTracedView(lesson::View view, const lesson::Step& step, const 
              "path tracer's own standard error per pixel";
     }
     case lesson::View::Noise: {
-      Series measured{"measured (two seeds)", {}, {}}, reported{"reported standard error", {}, {}},
-          fitted{"fit: slope " + formatted("%.2f", t.slope), {}, {}};
+      Series measured{"measured (two seeds)", {}, {}}, reported{"reported standard error", {}, {}};
       for (const lesson::NoisePoint& p : t.noise) {
         measured.x.push_back(p.paths);
         measured.y.push_back(p.measured);
@@ -81,15 +80,7 @@ std::string renderTracedView(lesson::View view, const lesson::Step& step, const 
       }
       if (measured.x.empty()) throw std::runtime_error(path + ": no noise measured");
       // The fitted line through the measured points' centre of mass in log-log.
-      double lx = 0, ly = 0;
-      for (std::size_t k = 0; k < measured.x.size(); ++k) {
-        lx += std::log(measured.x[k]) / static_cast<double>(measured.x.size());
-        ly += std::log(measured.y[k]) / static_cast<double>(measured.y.size());
-      }
-      for (double x : {measured.x.front(), measured.x.back()}) {
-        fitted.x.push_back(x);
-        fitted.y.push_back(std::exp(ly + t.slope * (std::log(x) - lx)));
-      }
+      const Series fitted = fittedPowerLaw(measured, t.slope, "fit: slope " + formatted("%.2f", t.slope));
       ChartOptions o{"Path tracer's noise against paths per pixel",
                      "paths per pixel",
                      "RMS noise / mean",
