@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "viz/colour_map.h"
@@ -36,6 +37,12 @@ void styleAxis(vtkAxis* axis, const std::string& title, bool logScale, int fontS
 }
 
 }  // namespace
+
+std::string formatted(const char* format, double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
 
 Series fittedPowerLaw(const Series& points, double slope, const std::string& name) {
   double lx = 0, ly = 0;

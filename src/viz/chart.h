@@ -12,6 +12,9 @@ struct Series {
   std::vector<double> x, y;
 };
 
+// printf-style text of one number (a chart's legend or a figure's caption), e.g. formatted("%.2f", slope).
+std::string formatted(const char* format, double value);
+
 // The straight line of log-log slope `slope` through the centre of mass (in log-log) of `points`, drawn over
 // their first and last x: a fitted power law for a chart. `points` must have two or more points.
 Series fittedPowerLaw(const Series& points, double slope, const std::string& name);

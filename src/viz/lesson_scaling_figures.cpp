@@ -10,12 +10,6 @@
 namespace rt::viz::detail {
 namespace {
 
-std::string formatted(const char* format, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, format, value);
-  return text;
-}
-
 // A straight line in log-log through (x0, y0) with slope `power`, from x0 to x1.
 Series powerLine(const std::string& name, double x0, double y0, double x1, double power) {
   return {name, {x0, x1}, {y0, y0 * std::pow(x1 / x0, power)}};

@@ -11,12 +11,6 @@
 namespace rt::viz::detail {
 namespace {
 
-std::string formatted(const char* format, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, format, value);
-  return text;
-}
-
 ImagePanelsOptions pictureOptions(const lesson::Step& step, const StepFigureSettings& s,
                                   const std::string& title) {
   ImagePanelsOptions o;
