@@ -56,8 +56,8 @@ void clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& norm
 ShadowClipper::ShadowClipper(const SmallPolygon& source, const Vec3& sourceNormal,
                              const SmallPolygon& receiver, const Vec3& receiverNormal,
                              const std::vector<OccluderPolygon>& occluders,
-                             const std::vector<SolidPlanes>& solids)
-    : receiver_(receiver), sourceNormal_(sourceNormal), solids_(solids) {
+                             const std::vector<SolidPlanes>& solids, const std::vector<Vec3>* solidCentres)
+    : receiver_(receiver), sourceNormal_(sourceNormal), solids_(solids), solidCentres_(solidCentres) {
   const Vec3 cs = centreOf(source), cr = centreOf(receiver);
   double size = (cs - cr).norm();
   for (int k = 0; k < source.count; ++k)
@@ -133,7 +133,72 @@ void ShadowClipper::cull(const SourcePanel& panel, const std::vector<int>& in, s
     if (!outsideHull(prepared_[static_cast<std::size_t>(k)])) out.push_back(k);
 }
 
-double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders) const {
+bool ShadowClipper::crossings(const Vec3* panel, int count, const Vec3& normal, double offset) const {
+  crossings_.clear();
+  double sign = 0;
+  double heights[SmallPolygon::kCapacity];
+  for (int k = 0; k < receiver_.count; ++k) {
+    heights[k] = normal.dot(receiver_.v[static_cast<std::size_t>(k)]) - offset;
+    if (std::abs(heights[k]) <= eps_ || (sign != 0 && heights[k] * sign < 0)) return false;
+    sign = heights[k];
+  }
+  for (int p = 0; p < count; ++p) {
+    const double h = normal.dot(panel[p]) - offset;
+    if (!(h * sign < 0) || std::abs(h) <= eps_) return false;
+    for (int k = 0; k < receiver_.count; ++k) {
+      const Vec3& r = receiver_.v[static_cast<std::size_t>(k)];
+      crossings_.push_back(panel[p] + (r - panel[p]) * (h / (h - heights[k])));
+    }
+  }
+  return true;
+}
+
+bool ShadowClipper::hidesAll(const Vec3* panel, int count, const std::vector<int>& occluders) const {
+  int lastSolid = -1;
+  for (int index : occluders) {
+    const Occluder& o = prepared_[static_cast<std::size_t>(index)];
+    if (crossings(panel, count, o.normal, o.normal.dot(o.centre))) {
+      const int m = o.polygon.count;
+      bool inside = true;
+      for (std::size_t c = 0; c < crossings_.size() && inside; ++c)
+        for (int k = 0; k < m && inside; ++k) {
+          const Vec3& a = o.polygon.v[static_cast<std::size_t>(k)];
+          const Vec3 edge = o.polygon.v[static_cast<std::size_t>((k + 1) % m)] - a;
+          inside = edge.cross(crossings_[c] - a).dot(o.normal) > eps_ * edge.norm();
+        }
+      if (inside) return true;
+    }
+    // A block's faces may share the segments between them; its cross-sections through its centre, across
+    // the line of sight and parallel to each face, hold them all.
+    if (o.solid < 0 || o.solid == lastSolid || !solidCentres_) continue;
+    lastSolid = o.solid;
+    const SolidPlanes& solid = solids_[static_cast<std::size_t>(o.solid)];
+    const Vec3& centre = (*solidCentres_)[static_cast<std::size_t>(o.solid)];
+    Vec3 panelCentre = Vec3::Zero();
+    for (int p = 0; p < count; ++p) panelCentre += panel[p];
+    const Vec3 sight = (centreOf(receiver_) - panelCentre / count).normalized();
+    for (std::size_t plane = 0; plane <= solid.size(); ++plane) {
+      const Vec3 normal = plane == 0 ? sight : solid[plane - 1].first;
+      if (!crossings(panel, count, normal, normal.dot(centre))) continue;
+      bool inside = true;
+      for (std::size_t c = 0; c < crossings_.size() && inside; ++c)
+        for (const auto& [n, offset] : solid)
+          if (!(n.dot(crossings_[c]) - offset < -eps_)) {
+            inside = false;
+            break;
+          }
+      if (inside) return true;
+    }
+  }
+  return false;
+}
+
+double ShadowClipper::unoccluded(const Vec3& x) const {
+  return std::max(0.0, lambertContourSum(x, sourceNormal_, receiver_.v.data(), receiver_.count));
+}
+
+double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders, bool* whollyHidden) const {
+  if (whollyHidden) *whollyHidden = false;
   pieces_.resize(1);
   pieces_[0] = receiver_;
   double sum = 0;
@@ -189,6 +254,7 @@ double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders) c
     pieces_.swap(next_);
     if (pieces_.empty()) break;
   }
+  if (whollyHidden) *whollyHidden = pieces_.empty();
   return std::max(0.0, sum);
 }
 

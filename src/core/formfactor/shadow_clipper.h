@@ -50,16 +50,26 @@ class ShadowClipper {
  public:
   // source and receiver already horizon-clipped against each other. Keeps the occluders that may cut a
   // segment from the source to the receiver. `solids` outlives the clipper.
+  // `solidCentres`, a point inside each solid, lets hidesAll() use the solids' cross-sections.
   ShadowClipper(const SmallPolygon& source, const Vec3& sourceNormal, const SmallPolygon& receiver,
                 const Vec3& receiverNormal, const std::vector<OccluderPolygon>& occluders,
-                const std::vector<SolidPlanes>& solids);
+                const std::vector<SolidPlanes>& solids, const std::vector<Vec3>* solidCentres = nullptr);
 
   // Indices of the occluders kept (all of them may block).
   const std::vector<int>& occluders() const { return all_; }
   // Of `in`, those that may cut a segment from `panel` to the receiver, into `out`.
   void cull(const SourcePanel& panel, const std::vector<int>& in, std::vector<int>& out) const;
-  // F(dA_x -> the part of the receiver hidden by `occluders`) for x on the source.
-  double hidden(const Vec3& x, const std::vector<int>& occluders) const;
+  // True when one of `occluders`, or the solid one of them bounds, cuts every segment from the panel
+  // (`count` corners) to the receiver, with a margin: then the whole receiver is hidden from all of it.
+  // Every such segment crosses a plane that separates the two at a point in the convex hull of the
+  // crossings of the corner-to-corner segments, so those crossings lying inside a convex face (or a convex
+  // solid's cross-section) is enough.
+  bool hidesAll(const Vec3* panel, int count, const std::vector<int>& occluders) const;
+  // F(dA_x -> the part of the receiver hidden by `occluders`) for x on the source; `whollyHidden`, where
+  // given, tells whether nothing of the receiver is left in view.
+  double hidden(const Vec3& x, const std::vector<int>& occluders, bool* whollyHidden = nullptr) const;
+  // F(dA_x -> the whole receiver).
+  double unoccluded(const Vec3& x) const;
 
  private:
   struct Occluder {
@@ -71,11 +81,16 @@ class ShadowClipper {
   // Outward face planes (unit normal, offset) of the convex hull of the points a and b.
   void hullPlanes(const Vec3* a, int na, const Vec3* b, int nb) const;
   bool outsideHull(const Occluder& o) const;
+  // The crossings of the plane (unit normal, offset) by the corner-to-corner segments, into crossings_;
+  // false unless the panel is strictly on the back and the receiver strictly on the front or vice versa.
+  bool crossings(const Vec3* panel, int count, const Vec3& normal, double offset) const;
 
   SmallPolygon receiver_;
   Vec3 sourceNormal_;
   double eps_ = 0;  // a length: 1e-10 of the pair's size
   const std::vector<SolidPlanes>& solids_;
+  const std::vector<Vec3>* solidCentres_;
+  mutable std::vector<Vec3> crossings_;
   std::vector<Occluder> prepared_;
   std::vector<int> all_;
   mutable std::vector<std::pair<Vec3, double>> planes_;

@@ -1,0 +1,114 @@
+// ShadowClipper's proof that a receiver is wholly hidden (hidesAll), by one face or by a block whose faces
+// share the segments between them, against its per-point clipping: where hidesAll says yes, every point of
+// the source sees nothing of the receiver; where the shadow is partial it says no.
+#include "core/formfactor/shadow_clipper.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace rt {
+namespace {
+
+SmallPolygon polygon(std::initializer_list<Vec3> corners) {
+  SmallPolygon p;
+  for (const Vec3& c : corners) p.v[static_cast<std::size_t>(p.count++)] = c;
+  return p;
+}
+
+// The six faces of an axis-aligned box, counter-clockwise seen from outside, and its outward planes.
+struct Box {
+  std::vector<std::vector<Vec3>> faces;
+  SolidPlanes planes;
+  Vec3 centre;
+};
+
+Box box(const Vec3& lo, const Vec3& hi) {
+  Box b;
+  b.centre = 0.5 * (lo + hi);
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = 0; side < 2; ++side) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      Vec3 normal = Vec3::Zero();
+      normal[axis] = side ? 1 : -1;
+      std::vector<Vec3> face;
+      for (const auto& [a, c] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+        Vec3 corner;
+        corner[axis] = side ? hi[axis] : lo[axis];
+        corner[u] = a ? hi[u] : lo[u];
+        corner[v] = c ? hi[v] : lo[v];
+        face.push_back(corner);
+      }
+      if ((face[1] - face[0]).cross(face[2] - face[1]).dot(normal) < 0)
+        std::reverse(face.begin(), face.end());
+      b.faces.push_back(face);
+      b.planes.push_back({normal, normal.dot(face[0])});
+    }
+  return b;
+}
+
+const SmallPolygon kSource = polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});  // faces +z
+const Vec3 kUp{0, 0, 1}, kDown{0, 0, -1};
+
+void expectEveryPointHidden(const ShadowClipper& clipper) {
+  for (double s : {0.0, 0.3, 1.0})
+    for (double t : {0.0, 0.6, 1.0}) {
+      const Vec3 x{s, t, 0};
+      bool wholly = false;
+      EXPECT_NEAR(clipper.hidden(x, clipper.occluders(), &wholly), clipper.unoccluded(x), 1e-12);
+      EXPECT_TRUE(wholly) << s << ", " << t;
+    }
+}
+
+TEST(ShadowClipper, AWideFaceBetweenParallelSquaresHidesAll) {
+  const SmallPolygon receiver = polygon({{0, 0, 2}, {0, 1, 2}, {1, 1, 2}, {1, 0, 2}});  // faces -z
+  const std::vector<Vec3> plate{{-1, -1, 1}, {-1, 2, 1}, {2, 2, 1}, {2, -1, 1}};        // faces -z
+  const std::vector<SolidPlanes> none;
+  const ShadowClipper clipper(kSource, kUp, receiver, kDown, {{&plate, -1}}, none);
+  ASSERT_EQ(clipper.occluders().size(), 1u);
+  EXPECT_TRUE(clipper.hidesAll(kSource.v.data(), kSource.count, clipper.occluders()));
+  expectEveryPointHidden(clipper);
+}
+
+TEST(ShadowClipper, ASmallFaceHidesOnlyPart) {
+  const SmallPolygon receiver = polygon({{0, 0, 2}, {0, 1, 2}, {1, 1, 2}, {1, 0, 2}});
+  const std::vector<Vec3> plate{{0.4, 0.4, 1}, {0.4, 0.6, 1}, {0.6, 0.6, 1}, {0.6, 0.4, 1}};
+  const std::vector<SolidPlanes> none;
+  const ShadowClipper clipper(kSource, kUp, receiver, kDown, {{&plate, -1}}, none);
+  EXPECT_FALSE(clipper.hidesAll(kSource.v.data(), kSource.count, clipper.occluders()));
+  const Vec3 centre{0.5, 0.5, 0};
+  bool wholly = true;
+  const double hidden = clipper.hidden(centre, clipper.occluders(), &wholly);
+  EXPECT_FALSE(wholly);
+  EXPECT_GT(hidden, 0.0);
+  EXPECT_LT(hidden, clipper.unoccluded(centre));
+}
+
+// From the floor square to a ceiling square off to the side, the segments enter a block through its bottom
+// or its near side and leave through its far side or its top: no one face meets them all, the block does.
+TEST(ShadowClipper, ABlockHidesAllWhereNoOneOfItsFacesDoes) {
+  const SmallPolygon receiver = polygon({{3, 0, 3}, {3, 1, 3}, {4, 1, 3}, {4, 0, 3}});  // faces -z
+  const Box block = box({1.2, -1, 0.5}, {2.8, 2, 2.5});
+  std::vector<OccluderPolygon> faces;
+  for (const auto& face : block.faces) faces.push_back({&face, 0});
+  const std::vector<SolidPlanes> solids{block.planes};
+  const std::vector<Vec3> centres{block.centre};
+
+  const ShadowClipper withoutCentres(kSource, kUp, receiver, kDown, faces, solids);
+  EXPECT_FALSE(withoutCentres.hidesAll(kSource.v.data(), kSource.count, withoutCentres.occluders()));
+  const ShadowClipper clipper(kSource, kUp, receiver, kDown, faces, solids, &centres);
+  EXPECT_TRUE(clipper.hidesAll(kSource.v.data(), kSource.count, clipper.occluders()));
+  expectEveryPointHidden(clipper);
+
+  // Lowered below the segments from the source's far edge, the block hides part only.
+  const Box low = box({1.2, -1, 0.5}, {2.8, 2, 1.0});
+  std::vector<OccluderPolygon> lowFaces;
+  for (const auto& face : low.faces) lowFaces.push_back({&face, 0});
+  const std::vector<SolidPlanes> lowSolids{low.planes};
+  const std::vector<Vec3> lowCentres{low.centre};
+  const ShadowClipper partial(kSource, kUp, receiver, kDown, lowFaces, lowSolids, &lowCentres);
+  EXPECT_FALSE(partial.hidesAll(kSource.v.data(), kSource.count, partial.occluders()));
+}
+
+}  // namespace
+}  // namespace rt
