@@ -21,6 +21,46 @@ double areaOf(const SmallPolygon& p) {
   return 0.5 * sum.norm();
 }
 
+// Both parts of `in` at once: `front` as clipToFront(normal) gives it, `back` as clipToFront(-normal).
+// In one pass, as the shadow cut of each piece by each side plane of a cone needs both.
+void splitByPlane(const SmallPolygon& in, const Vec3& origin, const Vec3& normal, double eps,
+                  SmallPolygon& front, SmallPolygon& back) {
+  front.count = back.count = 0;
+  const double length = normal.norm();
+  if (in.count < 3 || !(length > 0)) return;
+  double side[SmallPolygon::kCapacity];
+  bool anyBehind = false, anyFront = false;
+  const double margin = eps * length;
+  for (int k = 0; k < in.count; ++k) {
+    double d = normal.dot(in.v[static_cast<std::size_t>(k)] - origin);
+    if (std::abs(d) <= margin) d = 0;
+    side[k] = d;
+    anyBehind |= d < 0;
+    anyFront |= d > 0;
+  }
+  if (!anyBehind || !anyFront) {
+    if (anyFront) front = in;
+    if (anyBehind) back = in;
+    return;
+  }
+  for (int k = 0; k < in.count && front.count + 2 <= SmallPolygon::kCapacity &&
+                  back.count + 2 <= SmallPolygon::kCapacity;
+       ++k) {
+    const int next = (k + 1) % in.count;
+    const double dp = side[k], dq = side[next];
+    const Vec3& p = in.v[static_cast<std::size_t>(k)];
+    if (dp >= 0) front.v[static_cast<std::size_t>(front.count++)] = p;
+    if (dp <= 0) back.v[static_cast<std::size_t>(back.count++)] = p;
+    if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0)) {
+      const Vec3 cut = p + (in.v[static_cast<std::size_t>(next)] - p) * (dp / (dp - dq));
+      front.v[static_cast<std::size_t>(front.count++)] = cut;
+      back.v[static_cast<std::size_t>(back.count++)] = cut;
+    }
+  }
+  if (front.count < 3) front.count = 0;
+  if (back.count < 3) back.count = 0;
+}
+
 }  // namespace
 
 void clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& normal, double eps,
@@ -88,26 +128,28 @@ ShadowClipper::ShadowClipper(const SmallPolygon& source, const Vec3& sourceNorma
 void ShadowClipper::hullPlanes(const Vec3* a, int na, const Vec3* b, int nb) const {
   planes_.clear();
   // Faces of the hull of two convex polygons other than their own planes hold an edge of one and a vertex
-  // of the other.
+  // of the other. The sides are decided on the unnormalised normal (scaling eps by its length) and only a
+  // face kept is normalised: most candidates have points on both sides, found within two or three.
   auto tryPlane = [&](const Vec3& p, const Vec3& q, const Vec3& r) {
-    Vec3 n = (q - p).cross(r - p);
-    const double length = n.norm();
-    if (!(length > 0)) return;
-    n /= length;
+    const Vec3 n = (q - p).cross(r - p);
+    const double length2 = n.squaredNorm();
+    if (!(length2 > 0)) return;
+    const double margin = eps_ * std::sqrt(length2);
     bool above = false, below = false;
-    for (int k = 0; k < na && !(above && below); ++k) {
+    for (int k = 0; k < na; ++k) {
       const double d = n.dot(a[k] - p);
-      above |= d > eps_;
-      below |= d < -eps_;
-    }
-    for (int k = 0; k < nb && !(above && below); ++k) {
-      const double d = n.dot(b[k] - p);
-      above |= d > eps_;
-      below |= d < -eps_;
+      above |= d > margin;
+      below |= d < -margin;
     }
     if (above && below) return;
-    if (above) n = -n;  // outward: every hull point on or below
-    planes_.push_back({n, n.dot(p)});
+    for (int k = 0; k < nb; ++k) {
+      const double d = n.dot(b[k] - p);
+      above |= d > margin;
+      below |= d < -margin;
+    }
+    if (above && below) return;
+    const Vec3 unit = (above ? -n : n) / std::sqrt(length2);  // outward: every hull point on or below
+    planes_.push_back({unit, unit.dot(p)});
   };
   for (int e = 0; e < na; ++e)
     for (int k = 0; k < nb; ++k) tryPlane(a[e], a[(e + 1) % na], b[k]);
@@ -202,7 +244,7 @@ double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders, b
   pieces_.resize(1);
   pieces_[0] = receiver_;
   double sum = 0;
-  SmallPolygon inside, part;
+  SmallPolygon inside, part, outside;
   std::array<Vec3, SmallPolygon::kCapacity> cone;
   outside_.assign(solids_.size(), -1);
   for (int index : occluders) {
@@ -244,9 +286,8 @@ double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders, b
       }
       inside = piece;
       for (int k = 0; k < m && inside.count > 0; ++k) {
-        clipToFront(inside.v.data(), inside.count, x, -cone[static_cast<std::size_t>(k)], eps_, part);
-        if (part.count > 0) next_.push_back(part);
-        clipToFront(inside.v.data(), inside.count, x, cone[static_cast<std::size_t>(k)], eps_, part);
+        splitByPlane(inside, x, cone[static_cast<std::size_t>(k)], eps_, part, outside);
+        if (outside.count > 0) next_.push_back(outside);
         inside = part;
       }
       if (inside.count > 0) sum += lambertContourSum(x, sourceNormal_, inside.v.data(), inside.count);
