@@ -130,7 +130,7 @@ class HierarchySolve {
 
  private:
   // All links of the k-th receiver: what each source sends towards it, collected as a scalar irradiance on
-  // an element and in directional bins on a cluster. Each receiver is written by one task only.
+  // an element and per normal class on a cluster. Each receiver is written by one task only.
   void gather(const LinkTable& table, std::size_t k) {
     const int receiver = table.receivers[k];
     const bool element = leaf_[std::size_t(receiver)] != 0;
