@@ -225,5 +225,29 @@ TEST(ClusteringDirections, ATiltedClassRadiatesAndReceivesItsCosine) {
   }
 }
 
+// A tilted normal with less than 1 % of the scene's area gets no class: it is spread over the axis classes
+// with weights summing to 1, so its power over all directions is kept.
+TEST(ClusteringDirections, ASmallTiltedPatchIsSpreadOverTheAxes) {
+  const Scene scene = parseSceneJson(R"({
+    "materials": [{"name": "grey", "reflectance": [0.5, 0.5, 0.5]}],
+    "surfaces": [
+      {"name": "floor", "material": "grey", "polygons": [[[0, 0, 0], [0, 0, 10], [10, 0, 10], [10, 0, 0]]]},
+      {"name": "chip", "material": "grey", "polygons": [[[0, 1, 0], [0.3, 1.4, 0], [0.3, 1.4, 0.2]]]}]
+  })");
+  MeshOptions options;
+  options.mode = MeshOptions::Mode::None;
+  const Mesh mesh = buildMesh(scene, options);
+  const ClusterDirections directions(mesh);
+  ASSERT_EQ(directions.classes(), 6);
+  EXPECT_EQ(directions.classOf(0), 2);  // +y
+  EXPECT_EQ(directions.classOf(1), -1);
+  std::vector<double> D(3 * 6, 0.0);
+  const double power[3] = {1, 1, 1};
+  directions.spread(1, power, D.data());
+  double total = 0;
+  for (int c = 0; c < 6; ++c) total += D[std::size_t(3 * c)];
+  EXPECT_NEAR(total, 1.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace rt
