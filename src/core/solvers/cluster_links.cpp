@@ -130,7 +130,7 @@ class Oracle {
       }
       return pointToPolygonFormFactor(r.centroid, normalOf(r.element), cs.at, cs.count);
     }
-    // A source cluster's intensity comes from its directional bins at solve time, so only the distance and
+    // A source cluster's intensity comes from its normal classes at solve time, so only the distance and
     // the receiver's cosine belong here.
     const Vec3 u = d / distance;
     const double source =
@@ -141,7 +141,7 @@ class Oracle {
 
   // The fraction of a few segments between random points of the two nodes that nothing blocks. Elements
   // are drawn by area (the draws stratified), and only pairs of points whose elements face each other count:
-  // the directional bins already leave out the elements of a cluster that face away, so a segment to the
+  // the normal classes already leave out the elements of a cluster that face away, so a segment to the
   // back of a partition or of a plinth, blocked by its own front, must not count as shadow. A pair that
   // faces away is drawn again, a few times at most; when none faces, the nodes exchange nothing.
   double visibleFraction(Pair p, long& rays) const {

@@ -14,14 +14,10 @@
 //
 // What a link stores is the geometric part of the transfer, K ~ V x cos+_R / d^2 (x A_S cos_S / pi for a
 // source element), and the direction u from the receiver's centroid to the source's: clusters are
-// orientation-aware through six directional bins (+-x, +-y, +-z; Sillion 1995 uses a directional
-// distribution of the same kind). A source cluster radiates, towards w, (1/pi) sum over axes of
-// D[a][sign w_a] |w_a|, where D[a][s] = sum of B_e A_e f_a,s(n_e) over its elements, with the weights
-// f_a,s(n) = max(0, s n_a) / sum |n_a|: exact for elements whose normals lie along an axis, and conserving
-// the energy (over all directions) otherwise. A receiver cluster collects the normal irradiance E in the
-// same bins (E max(0, s u_a)), and pushes them down; an element below picks sum of f_a,s(n) x bin[a][s],
-// which is E max(0, n . u) when n is along an axis. An element that
-// receives directly uses its own cosine. Element pairs closer than twice their radii get the exact
+// orientation-aware through normal classes (cluster_directions.h; Sillion 1995 uses a directional
+// distribution of the same kind), which turn the direction into what a source cluster radiates towards the
+// receiver and what each element of a receiver cluster gets. An element that receives directly uses its
+// own cosine. Element pairs closer than twice their radii get the exact
 // unoccluded polygon-to-polygon form factor, others the centroid's point-to-polygon one. The visible
 // fraction V comes from a few rays between random points (area-weighted elements of a cluster, uniform
 // points on them); a link that no ray passes is dropped.

@@ -4,13 +4,13 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cmath>
 #include <numbers>
 #include <vector>
 
 #include "core/formfactor/ray_scene.h"
+#include "core/solvers/cluster_directions.h"
 #include "core/solvers/cluster_links.h"
 #include "core/solvers/cluster_tree.h"
 #include "core/solvers/solver_support.h"
@@ -41,19 +41,11 @@ struct LinkTable {
   }
 };
 
-// Six directional bins per channel: index (2 axis + (sign < 0)) x 3 + channel.
-using Bins = Eigen::Matrix<double, Eigen::Dynamic, 18, Eigen::RowMajor>;
-using BinRow = Eigen::Matrix<double, 1, 18>;
-
-// The weights of the six bins for a unit normal: max(0, s n_a) / sum |n_a|. Along an axis this is exact;
-// for a tilted normal the division keeps the total over all directions that of the cosine (pi), where the
-// plain max(0, s n_a) would give up to sqrt(3) times the energy (a 45-degree roof 1.41 times).
-std::array<double, 6> facing(const Vec3& n) {
-  const double sum = n.cwiseAbs().sum();
-  const double w = sum > 0 ? 1.0 / sum : 0.0;
-  return {w * std::max(0.0, n.x()),  w * std::max(0.0, -n.x()), w * std::max(0.0, n.y()),
-          w * std::max(0.0, -n.y()), w * std::max(0.0, n.z()),  w * std::max(0.0, -n.z())};
-}
+// Per node, 3 channels for each normal class (cluster_directions.h), class-major; at most 36 columns, so a
+// row on the stack needs no allocation.
+using Bins = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using BinRow =
+    Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, 3 * ClusterDirections::kMaxClasses>;
 
 // The state of one solve on the tree: per node its radiosity (area-weighted mean), its directional power
 // D, and the irradiance it gathered (scalar on an element, in bins on a cluster).
@@ -62,14 +54,13 @@ class HierarchySolve {
   HierarchySolve(const RadiositySystem& system, const ClusterTree& tree)
       : system_(system),
         tree_(tree),
+        directions_(*system.mesh),
+        columns_(3 * directions_.classes()),
         B_(tree.size(), 3),
         H_(tree.size(), 3),
-        D_(tree.size(), 18),
-        bins_(tree.size(), 18),
-        below_(tree.size(), 18) {
-    facing_.resize(system.size());
-    for (std::size_t e = 0; e < facing_.size(); ++e)
-      facing_[e] = facing(system.mesh->elements[e].normal.normalized());
+        D_(tree.size(), columns_),
+        bins_(tree.size(), columns_),
+        below_(tree.size(), columns_) {
     leaf_.resize(tree.size());
     for (std::size_t k = 0; k < tree.size(); ++k) leaf_[k] = tree.nodes()[k].leaf();
   }
@@ -82,9 +73,9 @@ class HierarchySolve {
       const auto K = Eigen::Index(k);
       if (node.leaf()) {
         B_.row(K) = elements.row(node.element);
-        const auto& f = facing_[std::size_t(node.element)];
-        for (int bin = 0; bin < 6; ++bin)
-          D_.block<1, 3>(K, 3 * bin) = elements.row(node.element) * (node.area * f[std::size_t(bin)]);
+        D_.row(K).setZero();
+        const Row power = elements.row(node.element) * node.area;
+        directions_.spread(node.element, power.data(), D_.row(K).data());
       } else {
         const ClusterNode& l = nodes[std::size_t(node.left)];
         const ClusterNode& r = nodes[std::size_t(node.right)];
@@ -112,9 +103,9 @@ class HierarchySolve {
       const ClusterNode& node = nodes[k];
       const auto K = Eigen::Index(k);
       if (node.leaf()) {
-        const auto& f = facing_[std::size_t(node.element)];
-        Row irradiance = H_.row(K);
-        for (int bin = 0; bin < 6; ++bin) irradiance += f[std::size_t(bin)] * below_.block<1, 3>(K, 3 * bin);
+        Row picked;
+        directions_.pick(node.element, below_.row(K).data(), picked.data());
+        const Row irradiance = H_.row(K) + picked;
         elements.row(node.element) = system_.emission.row(node.element) +
                                      system_.reflectance.row(node.element).cwiseProduct(irradiance);
         continue;
@@ -134,41 +125,33 @@ class HierarchySolve {
   std::size_t bytes() const {
     return sizeof(double) *
                static_cast<std::size_t>(B_.size() + H_.size() + D_.size() + bins_.size() + below_.size()) +
-           facing_.capacity() * sizeof(facing_[0]) + leaf_.capacity();
+           directions_.bytes() + leaf_.capacity();
   }
 
  private:
   // All links of the k-th receiver: what each source sends towards it, collected as a scalar irradiance on
-  // an element and in directional bins on a cluster. Each receiver is written by one task only.
+  // an element and per normal class on a cluster. Each receiver is written by one task only.
   void gather(const LinkTable& table, std::size_t k) {
     const int receiver = table.receivers[k];
     const bool element = leaf_[std::size_t(receiver)] != 0;
     Row scalar = Row::Zero();
-    BinRow bins = BinRow::Zero();
+    BinRow bins = BinRow::Zero(columns_);
     for (std::size_t l = table.starts[k]; l < table.starts[k + 1]; ++l) {
       const ClusterLink& link = table.links[l];
-      const double u[3] = {link.direction[0], link.direction[1], link.direction[2]};
+      const Vec3 u(link.direction[0], link.direction[1], link.direction[2]);
       Row sent;
       if (leaf_[std::size_t(link.source)]) {
         sent = B_.row(link.source);  // K holds the source's area and cosine
       } else {
-        // Intensity x pi towards -u from the source's bins.
-        sent = Row::Zero();
-        for (int a = 0; a < 3; ++a) {
-          const int bin = 2 * a + (-u[a] < 0 ? 1 : 0);
-          sent += std::abs(u[a]) * D_.block<1, 3>(link.source, 3 * bin);
-        }
+        // Intensity x pi towards -u from the source's classes.
+        directions_.radiate(D_.row(link.source).data(), -u, sent.data());
         sent /= std::numbers::pi;
       }
       const Row E = double(link.K) * sent;
-      if (element) {
+      if (element)
         scalar += E;
-      } else {
-        for (int a = 0; a < 3; ++a) {
-          const int bin = 2 * a + (u[a] < 0 ? 1 : 0);
-          bins.block<1, 3>(0, 3 * bin) += std::abs(u[a]) * E;
-        }
-      }
+      else
+        directions_.receive(E.data(), u, bins.data());
     }
     H_.row(receiver) = scalar;
     bins_.row(receiver) = bins;
@@ -176,9 +159,10 @@ class HierarchySolve {
 
   const RadiositySystem& system_;
   const ClusterTree& tree_;
+  const ClusterDirections directions_;
+  const Eigen::Index columns_;
   RgbField B_, H_;
   Bins D_, bins_, below_;
-  std::vector<std::array<double, 6>> facing_;
   std::vector<char> leaf_;
 };
 

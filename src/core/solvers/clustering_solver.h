@@ -5,11 +5,10 @@
 // whose count grows about like n at a fixed link tolerance.
 //
 // Solving gathers along the links (every node gathers irradiance from its sources' current radiosities),
-// then push-pulls: a node's irradiance is added to all the elements below it (a cluster receives
-// isotropically: the link's estimate already holds the quarter of the normal irradiance an element of any
-// orientation gets on average), each element's radiosity is E + rho x its irradiance, and a cluster's
-// radiosity is the area-weighted mean of its children's. Jacobi sweeps until the relative change is at
-// most options.tolerance.
+// then push-pulls: a node's irradiance, kept per normal class on a cluster (cluster_directions.h), is
+// added to all the elements below it, each taking its own class's; each element's radiosity is E + rho x
+// its irradiance, and a cluster's radiosity is the area-weighted mean of its children's. Jacobi sweeps
+// until the relative change is at most options.tolerance.
 //
 // Two refinement rounds: the first with threshold clusterTolerance x the scene's mean radiosity, the
 // brightness guessed as E + rho x the ambient term (Cohen et al. 1988); the second with the first's
