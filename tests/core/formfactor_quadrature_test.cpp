@@ -104,6 +104,30 @@ TEST(QuadratureMethod, OccludedRoomConvergesAndCloses) {
   for (int i = 9; i < 18; ++i) EXPECT_NEAR(F7.row(i).sum(), 1.0, 3e-5) << i;
 }
 
+// A floor element and a ceiling element (the 2,400-wall grid room's 355 and 723) whose segments the tall
+// Cornell block cuts near its corner only: the shadow grazes the receiver from a sliver of the source, and
+// the panel's rule and its children's both saw almost none of it (4.33566e-4, 1.04e-5 too much, at every
+// tolerance from 1e-5 to 1e-7). Reference: the exact method at 1e-9, 4.231160e-4 (4 M rays per pair:
+// 4.2301e-4).
+TEST(QuadratureMethod, FindsAShadowThatGrazesTheReceiverFromASliverOfTheSource) {
+  Scene s = test::emptyScene();
+  test::addQuad(s, {472.6, 0, 447.36}, {500.4, 0, 447.36}, {500.4, 0, 419.4}, {472.6, 0, 419.4});
+  test::addQuad(s, {444.8, 548.8, 83.88}, {472.6, 548.8, 83.88}, {472.6, 548.8, 111.84},
+                {444.8, 548.8, 111.84});
+  const double x[4] = {423, 265, 314, 472}, z[4] = {247, 296, 456, 406};
+  test::addQuad(s, {x[0], 330, z[0]}, {x[1], 330, z[1]}, {x[2], 330, z[2]}, {x[3], 330, z[3]});  // top
+  for (int k = 0; k < 4; ++k) {
+    const int n = (k + 1) % 4;
+    test::addQuad(s, {x[k], 0, z[k]}, {x[n], 0, z[n]}, {x[n], 330, z[n]}, {x[k], 330, z[k]});
+  }
+  test::addQuad(s, {x[3], 0, z[3]}, {x[2], 0, z[2]}, {x[1], 0, z[1]}, {x[0], 0, z[0]});  // bottom
+  const Mesh mesh = test::meshOf(s, 1);
+  for (double tolerance : {1e-5, 1e-6}) {
+    const FormFactorMatrix F = runMethod("quadrature", mesh, withTolerance(tolerance));
+    EXPECT_NEAR(F(0, 1), 4.231160e-4, tolerance) << tolerance;
+  }
+}
+
 // Cost is set by the tolerance: measured as kernel evaluations, so that the test does not depend on the
 // machine or its load.
 TEST(QuadratureMethod, LooseToleranceIsMuchCheaper) {

@@ -42,6 +42,11 @@ constexpr double kNearSizes = 1.0;  // closer than this many source sizes: exact
 constexpr int kMaxUnoccludedDepth = 6;
 constexpr int kMaxHiddenDepth = 10;
 constexpr long kMaxHiddenPoints = 60000;  // per pair
+// Panels probed for grazing shadows (ShadowClipper::probeShadow): the top ones and their children. Once a
+// probe has started the refinement, the rules' comparison carries it on. Measured on the 612-wall grid
+// room at 1e-5: largest floor-row error against the exact method 1.19e-5 unprobed, 8.0e-6 at depth 0,
+// 5.9e-6 at depth 1 and at every depth, which costs 1.25 x the work of depth 1.
+constexpr int kMaxProbedDepth = 1;
 
 // Per pair, on one thread.
 struct PairWork {
@@ -214,6 +219,17 @@ class HiddenIntegral {
       work_.points += item.panel.count;
       work_.clipped += item.panel.count;
       item.error = std::max(item.error, corners / item.panel.count * item.panel.area());
+    }
+    // A shadow that grazes the receiver from a sliver of the panel only (a block's top corner cutting a
+    // floor-to-ceiling pair) is seen by few sample points or none, by the panel's rule and its children's
+    // alike. Probed where the occluders and the receiver line up: a probe that sees more than twice what
+    // the samples give the panel on average means the samples missed it.
+    if (mixed && item.depth <= kMaxProbedDepth) {
+      long probes = 0;
+      const double probed = clipper_.probeShadow(item.panel, item.occluders, probes);
+      work_.points += probes;
+      work_.clipped += probes;
+      item.error = std::max(item.error, 0.5 * probed * item.panel.area() - item.value);
     }
     // The converse: every point saw the receiver wholly hidden, but a corner may look past the occluder's
     // edge (a sliver of a wall seen past a block's corner from the end of a wall element only).

@@ -235,6 +235,55 @@ bool ShadowClipper::hidesAll(const Vec3* panel, int count, const std::vector<int
   return false;
 }
 
+double ShadowClipper::probeShadow(const SourcePanel& panel, const std::vector<int>& occluders,
+                                  long& points) const {
+  const Vec3& origin = panel.v[0];
+  double best = 0;
+  SmallPolygon projected, clipped;
+  // Clips `projected` to the panel (the planes through its edges along the source's normal) and probes
+  // the centre of what is left.
+  auto probe = [&]() {
+    for (int k = 0; k < panel.count && projected.count >= 3; ++k) {
+      const Vec3& a = panel.v[static_cast<std::size_t>(k)];
+      const Vec3 edge = panel.v[static_cast<std::size_t>((k + 1) % panel.count)] - a;
+      clipToFront(projected.v.data(), projected.count, a, sourceNormal_.cross(edge), eps_, clipped);
+      projected = clipped;
+    }
+    if (projected.count < 3) return;
+    best = std::max(best, hidden(centreOf(projected), occluders));
+    ++points;
+  };
+  double receiverHeight[SmallPolygon::kCapacity];
+  for (int r = 0; r < receiver_.count; ++r)
+    receiverHeight[r] = sourceNormal_.dot(receiver_.v[static_cast<std::size_t>(r)] - origin);
+  // The point of the source plane on the line from r through o, when o lies between the plane and r (o
+  // itself when it stands on the plane).
+  auto through = [&](int r, const Vec3& o, double oHeight) {
+    const double rHeight = receiverHeight[r];
+    if (!(oHeight >= -eps_ && rHeight - oHeight > eps_)) return;
+    const Vec3& rv = receiver_.v[static_cast<std::size_t>(r)];
+    projected.v[static_cast<std::size_t>(projected.count++)] =
+        rv + (o - rv) * (rHeight / (rHeight - oHeight));
+  };
+  for (int index : occluders) {
+    const SmallPolygon& o = prepared_[static_cast<std::size_t>(index)].polygon;
+    double oHeight[SmallPolygon::kCapacity];
+    for (int k = 0; k < o.count; ++k)
+      oHeight[k] = sourceNormal_.dot(o.v[static_cast<std::size_t>(k)] - origin);
+    for (int r = 0; r < receiver_.count; ++r) {
+      projected.count = 0;
+      for (int k = 0; k < o.count; ++k) through(r, o.v[static_cast<std::size_t>(k)], oHeight[k]);
+      probe();
+    }
+    for (int k = 0; k < o.count; ++k) {
+      projected.count = 0;
+      for (int r = 0; r < receiver_.count; ++r) through(r, o.v[static_cast<std::size_t>(k)], oHeight[k]);
+      probe();
+    }
+  }
+  return best;
+}
+
 double ShadowClipper::unoccluded(const Vec3& x) const {
   return std::max(0.0, lambertContourSum(x, sourceNormal_, receiver_.v.data(), receiver_.count));
 }

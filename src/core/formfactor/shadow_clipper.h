@@ -68,6 +68,14 @@ class ShadowClipper {
   // F(dA_x -> the part of the receiver hidden by `occluders`) for x on the source; `whollyHidden`, where
   // given, tells whether nothing of the receiver is left in view.
   double hidden(const Vec3& x, const std::vector<int>& occluders, bool* whollyHidden = nullptr) const;
+  // Where sample points of a panel saw no shadow although an occluder passed the hull test: the largest
+  // hidden(x) over probe points x that aim at a shadow. From a point of the panel inside the projection of
+  // an occluder from a receiver corner, that corner is hidden; from one inside the projection of the
+  // receiver through an occluder corner, that corner's shadow falls on the receiver. Each projection is
+  // clipped to the panel and probed at its centre, so a shadow that grazes the receiver from a sliver of the
+  // source only (a block's top corner cutting a floor-to-ceiling pair) is found however thin it is. `points`
+  // counts the evaluations.
+  double probeShadow(const SourcePanel& panel, const std::vector<int>& occluders, long& points) const;
   // F(dA_x -> the whole receiver).
   double unoccluded(const Vec3& x) const;
 
