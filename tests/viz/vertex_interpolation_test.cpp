@@ -1,6 +1,8 @@
 // Smooth per-vertex values: interior averages, boundary extrapolation, regions, T-vertices.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/polygon.h"
 #include "viz/vertex_interpolation.h"
 #include "viz/viz_test_support.h"
@@ -123,6 +125,27 @@ TEST(VertexInterpolation, TVertexTakesTheValueAlongTheLongEdge) {
   };
   const double bottom = valueAt({1, 0, 0}), topValue = valueAt({1, 1, 0}), middle = valueAt({1, 0.5, 0});
   EXPECT_NEAR(middle, 0.5 * (bottom + topValue), 1e-12);
+}
+
+TEST(VertexInterpolation, AKeptStructureGivesTheSameValuesForEveryField) {
+  // The app finds the structure once per mesh and applies it to every iteration of the replay.
+  const Mesh mesh = buildMesh(vizt::openRoom(), [] {
+    MeshOptions o;
+    o.mode = MeshOptions::Mode::Count;
+    o.count = 5;
+    return o;
+  }());
+  const SmoothInterpolation kept(mesh);
+  EXPECT_EQ(kept.elements(), mesh.size());
+  for (int field = 0; field < 3; ++field) {
+    RgbField B(static_cast<Eigen::Index>(mesh.size()), 3);
+    for (Eigen::Index e = 0; e < B.rows(); ++e)
+      B.row(e) << 1 + std::sin(0.3 * e + field), 0.5 + 0.01 * e, field == 2 ? -0.2 * (e % 3) : 0.7;
+    const CornerField direct = smoothCornerValues(mesh, B);
+    const CornerField applied = kept.apply(B);
+    EXPECT_EQ(applied.firstCorner, direct.firstCorner);
+    EXPECT_LT((applied.values - direct.values).cwiseAbs().maxCoeff(), 1e-12);
+  }
 }
 
 }  // namespace
