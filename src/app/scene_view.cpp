@@ -85,8 +85,11 @@ void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera
   mesh_ = mesh;
   highlighted_.clear();
   if (!mesh_) {
+    // Nothing shown holds nothing: at a million elements the cells and colours are some 90 MB.
     smoothing_ = nullptr;
     picker_ = nullptr;
+    polyData_ = nullptr;
+    mapper_->SetInputData(nullptr);
     actor_->VisibilityOff();
     highlightActor_->VisibilityOff();
     if (emitterOutline_) renderer()->RemoveActor(emitterOutline_);
