@@ -19,6 +19,7 @@
 #include <QFileInfo>
 #include <QLabel>
 #include <QPushButton>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
@@ -180,6 +181,10 @@ TEST(LargeSceneView, TheWindowPicksStepsAndRecoloursWithoutRebuildingOrSolving) 
   EXPECT_EQ(result->mesh->size(), 5400u);
   EXPECT_EQ(result->solverName, "local-lines");
   ASSERT_GE(result->history.size(), 2u);
+  // The budget chosen for the scene, 1000 rays per element, shows as such (not as "automatic").
+  auto* rays = window->parameterPanel()->findChild<QSpinBox*>("control-rays-per-iteration");
+  ASSERT_NE(rays, nullptr);
+  EXPECT_EQ(rays->value(), 5400000);
   SceneView* view = window->primaryView();
   view->grabFramebuffer();
   EXPECT_EQ(view->displayedPolyData()->GetNumberOfCells(), 5400);
