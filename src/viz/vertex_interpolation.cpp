@@ -257,7 +257,13 @@ SmoothInterpolation::SmoothInterpolation(const Mesh& mesh) {
           for (Eigen::Index k = 0; k < A.rows(); ++k)
             A.row(k) = (mesh.elements[neighbours[k]].centroid - mesh.elements[e].centroid).transpose();
           // Minimum-norm solution: no gradient along the normal, and none across a strip one element wide.
-          pinvCache[e] = A.completeOrthogonalDecomposition().pseudoInverse();
+          // A strip's centroids are collinear only up to the file's rounding (1e-6 of a 5 cm element in the
+          // museum): with Eigen's default threshold that direction counts, and its gradient extrapolates
+          // to 1e12. Directions below a thousandth of the largest are dropped instead.
+          Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(A.rows(), A.cols());
+          cod.setThreshold(1e-3);
+          cod.compute(A);
+          pinvCache[e] = cod.pseudoInverse();
         }
       }
       terms_[t].firstWeight = static_cast<int>(weights_.size());
