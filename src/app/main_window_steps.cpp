@@ -24,6 +24,7 @@
 #include "app/parameter_history.h"
 #include "app/parameter_panel.h"
 #include "app/residual_chart.h"
+#include "app/scene_settings.h"
 #include "app/scene_view.h"
 #include "app/wording.h"
 #include "core/formfactor/formfactor_method.h"
@@ -192,8 +193,7 @@ bool MainWindow::openScene(const QString& path) {
   lesson_ = step_ = -1;
   parameters_ = lesson::StepParameters{};
   parameters_.method = defaultMethod();
-  parameters_.solver = chooseSolver(scene_.patches.size() * 16);
-  parameters_.subdivide = 4;
+  chooseSceneSolve(scene_.patches.size(), parameters_);
   applySessionParameters();
   history_->clear();
   deferred_ = false;
@@ -212,9 +212,16 @@ bool MainWindow::openScene(const QString& path) {
 void MainWindow::applyParameters(const lesson::StepParameters& parameters) {
   if (mode_ == Mode::None) return;
   history_->recordChange(parameters_, parameters);
+  const bool recolourOnly =
+      mode_ == Mode::Scene && result_ && !busy() && changesOnlyDisplay(parameters_, parameters);
   parameters_ = parameters;
   saveSession();
-  requestComputation();
+  // A scene's solution does not depend on how it is shown: the views recolour it (a lesson step's figures
+  // and text may, so a step computes again).
+  if (recolourOnly)
+    applyStepDisplay(nullptr);
+  else
+    requestComputation();
 }
 
 void MainWindow::requestComputation() {

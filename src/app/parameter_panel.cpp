@@ -12,6 +12,7 @@
 #include <QTimer>
 #include <algorithm>
 #include <climits>
+#include <cmath>
 
 #include "core/formfactor/formfactor_method.h"
 #include "core/input_error.h"
@@ -239,7 +240,9 @@ void ParameterPanel::showValue(const Row& row) {
   const std::string value = lesson::stepValueText(parameters_, key, key.name).value_or(key.defaultText);
   const QString text = QString::fromStdString(value);
   if (auto* spin = qobject_cast<QSpinBox*>(row.editor)) {
-    spin->setValue(text.toInt());
+    // Through a double: values from a million up are written in exponent form ("1.6e+07"), which toInt()
+    // reads as 0, the "automatic" of the ray budgets.
+    spin->setValue(clampToInt(std::round(text.toDouble())));
   } else if (auto* spin = qobject_cast<QDoubleSpinBox*>(row.editor)) {
     spin->setValue(text.toDouble());
   } else if (auto* box = qobject_cast<QCheckBox*>(row.editor)) {

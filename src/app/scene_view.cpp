@@ -5,19 +5,24 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellPicker.h>
+#include <vtkCommand.h>
+#include <vtkGenericRenderWindowInteractor.h>
 #include <vtkIntArray.h>
+#include <vtkInteractorObserver.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
+#include <vtkStaticCellLocator.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 
 #include <algorithm>
 #include <cstring>
 
+#include "viz/element_polydata.h"
 #include "viz/vtk_render.h"
 #include "viz/vtk_views.h"
 
@@ -25,6 +30,14 @@ namespace rt::app {
 
 SceneView::SceneView(QWidget* parent) : VtkWidget(parent) {
   renderer()->SetBackground(viz::kBackground[0], viz::kBackground[1], viz::kBackground[2]);
+  // Edges smoothed by FXAA, as in the exported figures, except while the reader drags the camera: in a
+  // software renderer it costs a third of a frame, and a moving view does not show its stairs.
+  renderer()->UseFXAAOn();
+  vtkInteractorObserver* style = interactor()->GetInteractorStyle();
+  styleObservers_[0] =
+      style->AddObserver(vtkCommand::StartInteractionEvent, this, &SceneView::onCameraInteraction);
+  styleObservers_[1] =
+      style->AddObserver(vtkCommand::EndInteractionEvent, this, &SceneView::onCameraInteraction);
   mapper_ = vtkSmartPointer<vtkPolyDataMapper>::New();
   mapper_->SetScalarModeToUsePointData();
   mapper_->SetColorModeToDirectScalars();
@@ -58,12 +71,25 @@ SceneView::SceneView(QWidget* parent) : VtkWidget(parent) {
   });
 }
 
-SceneView::~SceneView() = default;
+SceneView::~SceneView() {
+  for (unsigned long tag : styleObservers_) interactor()->GetInteractorStyle()->RemoveObserver(tag);
+}
+
+void SceneView::onCameraInteraction(vtkObject*, unsigned long event, void*) {
+  const bool still = event == vtkCommand::EndInteractionEvent;
+  renderer()->SetUseFXAA(still);
+  if (still) requestRender();
+}
 
 void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera) {
   mesh_ = mesh;
   highlighted_.clear();
   if (!mesh_) {
+    // Nothing shown holds nothing: at a million elements the cells and colours are some 90 MB.
+    smoothing_ = nullptr;
+    picker_ = nullptr;
+    polyData_ = nullptr;
+    mapper_->SetInputData(nullptr);
     actor_->VisibilityOff();
     highlightActor_->VisibilityOff();
     if (emitterOutline_) renderer()->RemoveActor(emitterOutline_);
@@ -72,7 +98,7 @@ void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera
     return;
   }
   if (data_.B.rows() != static_cast<Eigen::Index>(mesh_->size())) data_.B = mesh_->emission;
-  repaint3d();
+  rebuildGeometry();
   actor_->VisibilityOn();
   rebuildHighlight();
   if (resetCamera) applyCamera(camera);
@@ -143,34 +169,58 @@ void SceneView::setScalarField(const Eigen::VectorXd& values, const std::string&
   requestRender();
 }
 
-void SceneView::repaint3d() {
+viz::ScenePaint SceneView::paint() {
   // The viz layer's paint: the same exposure, tone map and gamma as the exported figures.
-  viz::ScenePaint paint;
   try {
-    paint = viz::paintScene(*mesh_, data_, options_);
+    // The smooth scheme's structure is the mesh's: found at the first smooth paint, kept for the next.
+    if (options_.image.smooth && !smoothing_) smoothing_ = std::make_unique<viz::SmoothInterpolation>(*mesh_);
+    return viz::paintScene(*mesh_, data_, options_, smoothing_.get());
   } catch (const std::exception&) {
-    paint = viz::ScenePaint{};  // data that does not fit: plain grey
+    return viz::ScenePaint{};  // data that does not fit: plain grey
   }
-  polyData_ = viz::makeElementPolyData(*mesh_, paint);
+}
+
+void SceneView::rebuildGeometry() {
+  smoothing_ = nullptr;
+  const viz::ScenePaint painted = paint();
+  polyData_ = viz::makeElementPolyData(*mesh_, painted);
+  ++geometryBuilds_;
+  mapper_->SetInputData(polyData_);
+  picker_ = nullptr;  // its cell locator was built on the old cells
   if (emitterOutline_) renderer()->RemoveActor(emitterOutline_);
   emitterOutline_ = nullptr;
-  if (options_.colouring == viz::SceneColouring::Reflectance) {
+  showColouring(painted);
+  rebuildHighlight();
+}
+
+void SceneView::repaint3d() {
+  const viz::ScenePaint painted = paint();
+  viz::updateElementColours(*polyData_, painted);
+  ++colourUpdates_;
+  showColouring(painted);
+}
+
+void SceneView::showColouring(const viz::ScenePaint& painted) {
+  // The light outline of the material view depends on the mesh alone: it stays while the colouring does.
+  const bool outline = options_.colouring == viz::SceneColouring::Reflectance;
+  if (outline && !emitterOutline_) {
     emitterOutline_ = viz::makeEmitterOutlineActor(*mesh_, 2.5 * devicePixelRatioF());
     if (emitterOutline_) renderer()->AddActor(emitterOutline_);
+  } else if (!outline && emitterOutline_) {
+    renderer()->RemoveActor(emitterOutline_);
+    emitterOutline_ = nullptr;
   }
   if (colourBar_) renderer()->RemoveViewProp(colourBar_);
   colourBar_ = nullptr;
-  if (paint.colourBar) {
+  if (painted.colourBar) {
     // The exported figures' bar (viz), in the right-hand strip of the view.
-    colourBar_ = viz::makeColourBar(paint.legend.map, paint.legend.min, paint.legend.max,
-                                    paint.legend.logScale, paint.legend.title, 14);
+    colourBar_ = viz::makeColourBar(painted.legend.map, painted.legend.min, painted.legend.max,
+                                    painted.legend.logScale, painted.legend.title, 14);
     colourBar_->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     colourBar_->SetPosition(0.86, 0.12);
     colourBar_->SetPosition2(0.13, 0.76);
     renderer()->AddViewProp(colourBar_);
   }
-  mapper_->SetInputData(polyData_);
-  rebuildHighlight();
 }
 
 Camera SceneView::currentCamera() const {
@@ -271,16 +321,29 @@ void SceneView::syncCameraFrom(const SceneView& other) {
   requestRender();
 }
 
+vtkPolyData* SceneView::displayedPolyData() const {
+  return polyData_;
+}
+
 int SceneView::pickElement(QPoint position) {
   if (!mesh_ || !polyData_) return -1;
-  auto picker = vtkSmartPointer<vtkCellPicker>::New();
-  picker->SetTolerance(0.0005);
+  if (!picker_) {
+    // Without a locator the picker intersects the ray with every cell: a second at a million elements.
+    // The locator is built at the first pick of a mesh (about as long as one of those linear picks) and
+    // answers every later one in microseconds.
+    auto locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+    locator->SetDataSet(polyData_);
+    locator->BuildLocator();
+    picker_ = vtkSmartPointer<vtkCellPicker>::New();
+    picker_->SetTolerance(0.0005);
+    picker_->AddLocator(locator);
+  }
   const double ratio = devicePixelRatioF();
   const double x = position.x() * ratio;
   const double y = (height() - 1 - position.y()) * ratio;
-  if (!picker->Pick(x, y, 0, renderer())) return -1;
-  if (picker->GetActor() != actor_.Get()) return -1;
-  const vtkIdType cell = picker->GetCellId();
+  if (!picker_->Pick(x, y, 0, renderer())) return -1;
+  if (picker_->GetActor() != actor_.Get()) return -1;
+  const vtkIdType cell = picker_->GetCellId();
   auto* ids = vtkIntArray::SafeDownCast(polyData_->GetCellData()->GetArray("element"));
   if (cell < 0 || !ids || cell >= ids->GetNumberOfTuples()) return -1;
   return ids->GetValue(cell);

@@ -3,6 +3,7 @@
 // they share a camera through syncCameraFrom().
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "app/vtk_widget.h"
@@ -10,6 +11,8 @@
 #include "viz/scene_view.h"
 
 class vtkActor;
+class vtkObject;
+class vtkCellPicker;
 class vtkPolyData;
 class vtkPolyDataMapper;
 class vtkScalarBarActor;
@@ -56,6 +59,12 @@ class SceneView : public VtkWidget {
   bool hasMesh() const { return mesh_ != nullptr; }
   // The element drawn at widget position `position`, or -1.
   int pickElement(QPoint position);
+  // How often the view built its polydata (once per mesh) and rewrote only its colours (every iteration,
+  // colouring or tone map since): the replay and the display keys must never rebuild the geometry.
+  int geometryBuilds() const { return geometryBuilds_; }
+  int colourUpdates() const { return colourUpdates_; }
+  // The cells drawn (one per element).
+  vtkPolyData* displayedPolyData() const;
 
  signals:
   void elementPicked(int element);
@@ -64,12 +73,19 @@ class SceneView : public VtkWidget {
   void resizeEvent(QResizeEvent* event) override;
 
  private:
+  // FXAA off while the camera is dragged, on again for the still frame.
+  void onCameraInteraction(vtkObject* caller, unsigned long event, void* data);
   void rebuildHighlight();
   // The caption's font shrinks (down to a floor) so that it fits a narrow pane, as in compare mode.
   void fitCaption();
 
   const Mesh* mesh_ = nullptr;
+  viz::ScenePaint paint();
+  // A new mesh: new cells, coloured. repaint3d() then only rewrites the colours of the same cells.
+  void rebuildGeometry();
   void repaint3d();
+  // The colour bar and the light outline that go with the colouring.
+  void showColouring(const viz::ScenePaint& painted);
   void applyLighting();
   void fitViewAngle();
   viz::SceneViewData data_;
@@ -77,6 +93,11 @@ class SceneView : public VtkWidget {
   vtkSmartPointer<vtkPolyData> polyData_;
   vtkSmartPointer<vtkPolyDataMapper> mapper_;
   vtkSmartPointer<vtkActor> actor_;
+  std::unique_ptr<viz::SmoothInterpolation> smoothing_;  // of mesh_, once a smooth view asked for it
+  vtkSmartPointer<vtkCellPicker> picker_;  // with a cell locator over polyData_, built at the first pick
+  unsigned long styleObservers_[2] = {0, 0};
+  int geometryBuilds_ = 0;
+  int colourUpdates_ = 0;
   vtkSmartPointer<vtkActor> highlightActor_;
   vtkSmartPointer<vtkTextActor> caption_;
   bool materialView_ = false;

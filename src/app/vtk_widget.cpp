@@ -55,6 +55,9 @@ VtkWidget::VtkWidget(QWidget* parent) : QOpenGLWidget(parent) {
   setMinimumSize(160, 120);
 
   renderWindow_ = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  // No multisampling (VTK asks for 4 samples by default): in a software renderer it costs a third of
+  // every frame; the scene view smooths its edges with FXAA instead, as the exported figures do.
+  renderWindow_->SetMultiSamples(0);
   renderer_ = vtkSmartPointer<vtkRenderer>::New();
   renderWindow_->AddRenderer(renderer_);
   // Nothing may render until Qt has created the GL context (initializeGL).
@@ -65,7 +68,11 @@ VtkWidget::VtkWidget(QWidget* parent) : QOpenGLWidget(parent) {
   auto style = vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New();
   interactor_->SetInteractorStyle(style);
   interactor_->Initialize();
-  interactor_->EnableRenderOff();  // re-enabled once the context exists
+  // The interactor never renders itself: its style asks for a frame (RenderEvent) at every step of a drag,
+  // and rendering it there, outside paintGL, would be followed by the render of the paint it triggers. A
+  // paint is requested instead, which renders once (Qt merges the requests of a burst of mouse moves).
+  interactor_->EnableRenderOff();
+  interactorObserver_ = interactor_->AddObserver(vtkCommand::RenderEvent, this, &VtkWidget::requestRender);
 
   observerTags_[0] =
       renderWindow_->AddObserver(vtkCommand::WindowMakeCurrentEvent, this, &VtkWidget::onRenderWindowEvent);
@@ -83,6 +90,7 @@ VtkWidget::~VtkWidget() {
     doneCurrent();
   }
   for (unsigned long tag : observerTags_) renderWindow_->RemoveObserver(tag);
+  interactor_->RemoveObserver(interactorObserver_);
 }
 
 vtkGenericOpenGLRenderWindow* VtkWidget::renderWindow() const {
@@ -136,7 +144,6 @@ void VtkWidget::initializeGL() {
   const int h = static_cast<int>(std::lround(height() * ratio));
   renderWindow_->SetSize(w, h);
   interactor_->UpdateSize(w, h);
-  interactor_->EnableRenderOn();
   initialized_ = true;
   renderPending_ = true;
 }
@@ -160,8 +167,10 @@ void VtkWidget::paintGL() {
   state->Reset();
   state->Push();
   state->vtkglDepthFunc(GL_LEQUAL);  // Qt leaves GL_LESS; VTK expects GL_LEQUAL
-  // Always render: Qt may have discarded the framebuffer (resize, grab) and scenes here are small.
-  renderWindow_->Render();
+  // VTK draws into a framebuffer of its own, which Qt never discards: a paint that Qt asks for (an expose,
+  // a grab) copies the last frame again, and only a changed scene is rendered, a frame at a million elements
+  // costing a good part of a second in a software renderer.
+  if (renderPending_) renderWindow_->Render();
   renderPending_ = false;
   state->Pop();
 
@@ -183,7 +192,6 @@ void VtkWidget::paintGL() {
 void VtkWidget::releaseGraphicsResources() {
   if (!initialized_) return;
   initialized_ = false;
-  interactor_->EnableRenderOff();
   renderWindow_->Finalize();
   renderWindow_->SetReadyForRendering(false);
 }

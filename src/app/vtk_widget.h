@@ -62,6 +62,7 @@ class VtkWidget : public QOpenGLWidget {
   vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor_;
   vtkSmartPointer<vtkRenderer> renderer_;
   unsigned long observerTags_[3] = {0, 0, 0};
+  unsigned long interactorObserver_ = 0;
   bool renderPending_ = true;
   bool initialized_ = false;
   bool inPaint_ = false;  // frames VTK finishes inside paintGL need no further update()

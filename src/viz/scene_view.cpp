@@ -15,10 +15,6 @@ void requireRows(const RgbField& field, const Mesh& mesh, const char* what) {
                                 std::to_string(mesh.size()) + " elements");
 }
 
-CornerField cornersOf(const Mesh& mesh, const RgbField& perElement, bool smooth) {
-  return smooth ? smoothCornerValues(mesh, perElement) : flatCornerValues(mesh, perElement);
-}
-
 // Resolves the legend's limits from the finite (and, for log scales, positive) values.
 ScalarLegend resolveLegend(ScalarLegend legend, const Eigen::VectorXd& values) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -130,11 +126,28 @@ ErrorMeasure errorMeasureFromName(const std::string& name) {
   throw std::invalid_argument("unknown error measure '" + name + "' (relative, absolute, brightest)");
 }
 
-ScenePaint paintScene(const Mesh& mesh, const SceneViewData& data, const SceneViewOptions& options) {
+ScenePaint paintScene(const Mesh& mesh, const SceneViewData& data, const SceneViewOptions& options,
+                      const SmoothInterpolation* smoothing) {
   ScenePaint paint;
   paint.highlightElement = options.highlightElement;
   const bool smooth = options.image.smooth;
-  auto fromCorners = [&](const CornerField& corners, auto&& toColour) {
+  // Flat views convert each element's value once and repeat the colour at its corners.
+  auto fromElements = [&](const RgbField& perElement, auto&& toColour) {
+    paint.firstCorner.assign(mesh.size() + 1, 0);
+    for (std::size_t e = 0; e < mesh.size(); ++e)
+      paint.firstCorner[e + 1] = paint.firstCorner[e] + static_cast<int>(mesh.elements[e].vertices.size());
+    paint.colours.resize(static_cast<std::size_t>(paint.firstCorner.back()));
+    for (std::size_t e = 0; e < mesh.size(); ++e) {
+      const Rgb8 colour = toColour(Rgb(perElement.row(static_cast<Eigen::Index>(e)).transpose().array()));
+      std::fill(paint.colours.begin() + paint.firstCorner[e],
+                paint.colours.begin() + paint.firstCorner[e + 1], colour);
+    }
+  };
+  auto fromCorners = [&](const RgbField& perElement, bool smoothed, auto&& toColour) {
+    if (!smoothed) return fromElements(perElement, toColour);
+    const CornerField corners = smoothing && smoothing->elements() == mesh.size()
+                                    ? smoothing->apply(perElement)
+                                    : smoothCornerValues(mesh, perElement);
     paint.firstCorner = corners.firstCorner;
     paint.colours.resize(static_cast<std::size_t>(corners.values.rows()));
     for (Eigen::Index k = 0; k < corners.values.rows(); ++k)
@@ -146,24 +159,21 @@ ScenePaint paintScene(const Mesh& mesh, const SceneViewData& data, const SceneVi
     case SceneColouring::Radiosity: {
       requireRows(data.B, mesh, "the radiosity");
       const DisplaySettings display = displaySettingsFor(options.image, data.B, &mesh.emission);
-      fromCorners(cornersOf(mesh, data.B, smooth), [&](const Rgb& v) { return displayColour(v, display); });
+      fromCorners(data.B, smooth, [&](const Rgb& v) { return displayColour(v, display); });
       return paint;
     }
     case SceneColouring::Emission: {
       const DisplaySettings display = displaySettingsFor(options.image, mesh.emission);
-      fromCorners(flatCornerValues(mesh, mesh.emission),
-                  [&](const Rgb& v) { return displayColour(v, display); });
+      fromElements(mesh.emission, [&](const Rgb& v) { return displayColour(v, display); });
       return paint;
     }
     case SceneColouring::Reflectance:
-      fromCorners(flatCornerValues(mesh, mesh.reflectance),
-                  [&](const Rgb& v) { return albedoColour(v, options.image.srgbGamma); });
+      fromElements(mesh.reflectance, [&](const Rgb& v) { return albedoColour(v, options.image.srgbGamma); });
       return paint;
     case SceneColouring::ElementId: {
       RgbField ids(static_cast<Eigen::Index>(mesh.size()), 3);
       for (Eigen::Index e = 0; e < ids.rows(); ++e) ids.row(e).setConstant(static_cast<double>(e));
-      fromCorners(flatCornerValues(mesh, ids),
-                  [](const Rgb& v) { return categoryColour(static_cast<int>(v[0])); });
+      fromElements(ids, [](const Rgb& v) { return categoryColour(static_cast<int>(v[0])); });
       return paint;
     }
     case SceneColouring::UnshotPower:
@@ -189,7 +199,7 @@ ScenePaint paintScene(const Mesh& mesh, const SceneViewData& data, const SceneVi
   paint.legend = resolveLegend(legend, scalar);
   paint.colourBar = options.colourBar;
   RgbField broadcast = scalar.replicate(1, 3);
-  fromCorners(cornersOf(mesh, broadcast, smooth), [&](const Rgb& v) {
+  fromCorners(broadcast, smooth, [&](const Rgb& v) {
     return sampleColourMap(paint.legend.map, normalised(v[0], paint.legend));
   });
   return paint;

@@ -13,6 +13,7 @@
 #include "viz/colour_map.h"
 #include "viz/figure_output.h"
 #include "viz/scene_image.h"
+#include "viz/vertex_interpolation.h"
 
 namespace rt::viz {
 
@@ -69,7 +70,10 @@ struct ScenePaint {
   ScalarLegend legend;  // resolved: finite min and max
   int highlightElement = -1;
 };
-ScenePaint paintScene(const Mesh& mesh, const SceneViewData& data, const SceneViewOptions& options);
+// `smoothing` (optional): the smooth scheme's structure of this mesh, found once by the caller (the app's
+// view keeps it while it replays iterations); without it smooth views find it on every call.
+ScenePaint paintScene(const Mesh& mesh, const SceneViewData& data, const SceneViewOptions& options,
+                      const SmoothInterpolation* smoothing = nullptr);
 
 // Scalar fields for the colourings (one value per element).
 Eigen::VectorXd unshotPower(const Mesh& mesh,

@@ -3,8 +3,10 @@
 #include <Eigen/QR>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <map>
+#include <cstdint>
+#include <limits>
 #include <numeric>
 #include <utility>
 
@@ -47,9 +49,42 @@ double cornerAngle(const Mesh& mesh, const Element& e, std::size_t k) {
   return std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
-struct TVertex {
-  int a = -1, b = -1;  // endpoints of the long edge
-  double t = 0;        // position along it
+// Open edges (used by one element of their region) binned into a uniform grid along their length, for the
+// T-vertex search: a vertex lying on an edge is in a cell the edge passes or in one next to it.
+class EdgeGrid {
+ public:
+  EdgeGrid(const Mesh& mesh, const std::vector<std::array<int, 3>>& edges, double cell) : cell_(cell) {
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      const Vec3& a = mesh.vertices[edges[i][1]];
+      const Vec3& b = mesh.vertices[edges[i][2]];
+      const int steps = 1 + static_cast<int>(std::ceil(4 * (b - a).norm() / cell_));
+      for (int k = 0; k <= steps; ++k) entries_.push_back({keyOf(a + (b - a) * (double(k) / steps)), int(i)});
+    }
+    std::sort(entries_.begin(), entries_.end());
+    entries_.erase(std::unique(entries_.begin(), entries_.end()), entries_.end());
+  }
+  // Edges binned in the 27 cells around p (with repeats).
+  template <typename Visit>
+  void near(const Vec3& p, Visit&& visit) const {
+    const Eigen::Vector3d c = (p / cell_).array().floor();
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const std::uint64_t key = pack(c + Eigen::Vector3d(dx, dy, dz));
+          auto it =
+              std::lower_bound(entries_.begin(), entries_.end(), std::pair<std::uint64_t, int>{key, -1});
+          for (; it != entries_.end() && it->first == key; ++it) visit(it->second);
+        }
+  }
+
+ private:
+  std::uint64_t keyOf(const Vec3& p) const { return pack((p / cell_).array().floor()); }
+  static std::uint64_t pack(const Eigen::Vector3d& c) {
+    auto part = [](double v) { return static_cast<std::uint64_t>(static_cast<std::int64_t>(v) & 0x1fffff); };
+    return part(c.x()) | part(c.y()) << 21 | part(c.z()) << 42;
+  }
+  double cell_;
+  std::vector<std::pair<std::uint64_t, int>> entries_;
 };
 
 }  // namespace
@@ -64,10 +99,14 @@ std::vector<int> smoothRegions(const Mesh& mesh) {
       for (std::size_t j = 0; j < i; ++j)
         if (sameSmoothSurface(mesh, around[i], around[j], tolerance))
           parent[findRoot(parent, around[i])] = findRoot(parent, around[j]);
-  std::vector<int> label(static_cast<std::size_t>(n), -1);
-  std::map<int, int> relabel;
-  for (int e = 0; e < n; ++e)
-    label[e] = relabel.emplace(findRoot(parent, e), static_cast<int>(relabel.size())).first->second;
+  // Labels in the order of each region's first element.
+  std::vector<int> label(static_cast<std::size_t>(n), -1), labelOfRoot(static_cast<std::size_t>(n), -1);
+  int next = 0;
+  for (int e = 0; e < n; ++e) {
+    int& l = labelOfRoot[findRoot(parent, e)];
+    if (l < 0) l = next++;
+    label[e] = l;
+  }
   return label;
 }
 
@@ -84,103 +123,192 @@ CornerField flatCornerValues(const Mesh& mesh, const RgbField& perElement) {
 }
 
 CornerField smoothCornerValues(const Mesh& mesh, const RgbField& perElement) {
-  CornerField field = flatCornerValues(mesh, perElement);
+  return SmoothInterpolation(mesh).apply(perElement);
+}
+
+SmoothInterpolation::SmoothInterpolation(const Mesh& mesh) {
+  const int n = static_cast<int>(mesh.size());
   const std::vector<int> region = smoothRegions(mesh);
   const double tolerance = 1e-6 * sceneScale(mesh);
+  firstCorner_.assign(mesh.size() + 1, 0);
+  for (int e = 0; e < n; ++e)
+    firstCorner_[e + 1] = firstCorner_[e] + static_cast<int>(mesh.elements[e].vertices.size());
 
-  // Per (region, vertex): angle covered by the region's elements and the elements cornered there.
-  using Key = std::pair<int, int>;  // region, vertex
-  std::map<Key, double> angle;
-  std::map<Key, std::vector<int>> cornered;
-  std::map<std::pair<int, std::pair<int, int>>, int> edgeUse;  // region, sorted edge -> count
-  for (std::size_t e = 0; e < mesh.size(); ++e) {
-    const Element& el = mesh.elements[e];
-    const std::size_t m = el.vertices.size();
-    for (std::size_t k = 0; k < m; ++k) {
-      const Key key{region[e], el.vertices[k]};
-      angle[key] += cornerAngle(mesh, el, k);
-      cornered[key].push_back(static_cast<int>(e));
-      const int a = el.vertices[k], b = el.vertices[(k + 1) % m];
-      ++edgeUse[{region[e], {std::min(a, b), std::max(a, b)}}];
-    }
-  }
-  // T-vertices: a vertex of the region that lies strictly inside a boundary edge of the same region. Both
-  // only occur on edges used once, so only those are searched.
-  std::map<Key, TVertex> tVertices;
-  std::map<int, std::vector<std::pair<int, int>>> openEdges;
-  for (const auto& [key, count] : edgeUse)
-    if (count == 1) openEdges[key.first].push_back(key.second);
-  for (auto& [key, covered] : angle) {
-    if (covered > 2 * kPi - 1e-6) continue;
-    const Vec3& p = mesh.vertices[key.second];
-    for (const auto& [a, b] : openEdges[key.first]) {
-      if (a == key.second || b == key.second) continue;
-      const Vec3 ab = mesh.vertices[b] - mesh.vertices[a];
-      const double t = ab.dot(p - mesh.vertices[a]) / ab.squaredNorm();
-      if (t <= 1e-9 || t >= 1 - 1e-9) continue;
-      if ((mesh.vertices[a] + t * ab - p).norm() > tolerance) continue;
-      tVertices[key] = {a, b, t};
-      covered += kPi;  // the larger element covers the other half-plane
-      break;
-    }
-  }
-  auto interior = [&](const Key& key) { return angle[key] > 2 * kPi - 1e-6; };
-
-  // Interior vertices: plain average of the elements around them.
-  std::map<Key, Rgb> value;
-  for (const auto& [key, elements] : cornered) {
-    if (!interior(key)) continue;
-    Rgb sum = Rgb::Zero();
-    for (int e : elements) sum += perElement.row(e).transpose().array();
-    value[key] = sum / static_cast<double>(elements.size());
-  }
-  // Boundary vertices: extrapolated through each element around them, B_e + g_e . (v - c_e), with g_e the
-  // least-squares gradient from the centroids of e's neighbours in the region. On a regular grid this is the
-  // classic 2 B_e - B_interior of the book; in general it is exact for a linear field on any mesh.
-  std::map<int, Eigen::Matrix3Xd> gradient;  // element -> 3 x 3 (one column per channel)
-  auto gradientOf = [&](int e) -> const Eigen::Matrix3Xd& {
-    auto found = gradient.find(e);
-    if (found != gradient.end()) return found->second;
-    std::vector<int> neighbours;
-    for (int v : mesh.elements[e].vertices)
-      for (int other : mesh.vertexElements[v])
-        if (other != e && region[other] == region[e] &&
-            std::find(neighbours.begin(), neighbours.end(), other) == neighbours.end())
-          neighbours.push_back(other);
-    Eigen::Matrix3Xd g = Eigen::Matrix3Xd::Zero(3, 3);
-    if (!neighbours.empty()) {
-      Eigen::MatrixXd A(static_cast<Eigen::Index>(neighbours.size()), 3), b(A.rows(), 3);
-      for (Eigen::Index k = 0; k < A.rows(); ++k) {
-        A.row(k) = (mesh.elements[neighbours[k]].centroid - mesh.elements[e].centroid).transpose();
-        b.row(k) = perElement.row(neighbours[k]) - perElement.row(e);
+  // Slots: one per (region, vertex) that has a corner there, found through a short list per vertex.
+  std::vector<int> slotRegion, slotVertex, slotNext, vertexFirstSlot(mesh.vertices.size(), -1);
+  cornerSlot_.resize(static_cast<std::size_t>(firstCorner_.back()));
+  for (int e = 0; e < n; ++e)
+    for (std::size_t k = 0; k < mesh.elements[e].vertices.size(); ++k) {
+      const int v = mesh.elements[e].vertices[k];
+      int s = vertexFirstSlot[v];
+      while (s >= 0 && slotRegion[s] != region[e]) s = slotNext[s];
+      if (s < 0) {
+        s = static_cast<int>(slotRegion.size());
+        slotRegion.push_back(region[e]);
+        slotVertex.push_back(v);
+        slotNext.push_back(vertexFirstSlot[v]);
+        vertexFirstSlot[v] = s;
       }
-      // Minimum-norm solution: no gradient along the normal, and none across a strip one element wide.
-      g = A.completeOrthogonalDecomposition().solve(b);
+      cornerSlot_[firstCorner_[e] + k] = s;
     }
-    return gradient.emplace(e, g).first->second;
+  const std::size_t slots = slotRegion.size();
+  auto slotOf = [&](int r, int v) {
+    int s = vertexFirstSlot[v];
+    while (s >= 0 && slotRegion[s] != r) s = slotNext[s];
+    return s;
   };
-  for (const auto& [key, elements] : cornered) {
-    if (interior(key)) continue;
+
+  // Per slot: the angle its region's elements cover, and those elements (in element order).
+  std::vector<double> angle(slots, 0.0);
+  firstTerm_.assign(slots + 1, 0);
+  for (int c : cornerSlot_) ++firstTerm_[c + 1];
+  for (std::size_t s = 0; s < slots; ++s) firstTerm_[s + 1] += firstTerm_[s];
+  terms_.resize(cornerSlot_.size());
+  {
+    std::vector<int> fill(firstTerm_.begin(), firstTerm_.end() - 1);
+    for (int e = 0; e < n; ++e)
+      for (std::size_t k = 0; k < mesh.elements[e].vertices.size(); ++k) {
+        const int s = cornerSlot_[firstCorner_[e] + k];
+        angle[s] += cornerAngle(mesh, mesh.elements[e], k);
+        terms_[fill[s]++].element = e;
+      }
+  }
+  auto slotElements = [&](int s) {
+    return std::pair(terms_.begin() + firstTerm_[s], terms_.begin() + firstTerm_[s + 1]);
+  };
+
+  // Open edges: used by one element of their region (the elements cornered at one end are all candidates).
+  std::vector<std::array<int, 3>> open;  // region, low vertex, high vertex
+  double openLength = 0;
+  for (int e = 0; e < n; ++e) {
+    const auto& vs = mesh.elements[e].vertices;
+    for (std::size_t k = 0; k < vs.size(); ++k) {
+      const int a = vs[k], b = vs[(k + 1) % vs.size()];
+      int uses = 0;
+      const auto [first, last] = slotElements(slotOf(region[e], a));
+      for (auto t = first; t != last; ++t) {
+        const auto& ws = mesh.elements[t->element].vertices;
+        for (std::size_t j = 0; j < ws.size(); ++j) {
+          const int c = ws[j], d = ws[(j + 1) % ws.size()];
+          uses += (c == a && d == b) || (c == b && d == a);
+        }
+      }
+      if (uses != 1) continue;
+      open.push_back({region[e], std::min(a, b), std::max(a, b)});
+      openLength += (mesh.vertices[b] - mesh.vertices[a]).norm();
+    }
+  }
+  // T-vertices: a boundary vertex of the region strictly inside an open edge of the same region; of
+  // several, the edge with the lowest vertex indices.
+  if (!open.empty()) {
+    const EdgeGrid grid(mesh, open, std::max(openLength / static_cast<double>(open.size()), 1e3 * tolerance));
+    for (std::size_t s = 0; s < slots; ++s) {
+      if (angle[s] > 2 * kPi - 1e-6) continue;
+      const int v = slotVertex[s];
+      const Vec3& p = mesh.vertices[v];
+      int best = -1;
+      double bestT = 0;
+      grid.near(p, [&](int i) {
+        const auto& [r, a, b] = open[static_cast<std::size_t>(i)];
+        if (r != slotRegion[s] || a == v || b == v) return;
+        if (best >= 0 && std::pair(a, b) >= std::pair(open[best][1], open[best][2])) return;
+        const Vec3 ab = mesh.vertices[b] - mesh.vertices[a];
+        const double t = ab.dot(p - mesh.vertices[a]) / ab.squaredNorm();
+        if (t <= 1e-9 || t >= 1 - 1e-9) return;
+        if ((mesh.vertices[a] + t * ab - p).norm() > tolerance) return;
+        best = i;
+        bestT = t;
+      });
+      if (best < 0) continue;
+      const auto& [r, a, b] = open[static_cast<std::size_t>(best)];
+      tVertices_.push_back({static_cast<int>(s), slotOf(r, a), slotOf(r, b), bestT});
+      angle[s] += kPi;  // the larger element covers the other half-plane
+    }
+    std::sort(tVertices_.begin(), tVertices_.end(), [&](const TVertex& x, const TVertex& y) {
+      return std::pair(slotRegion[x.slot], slotVertex[x.slot]) <
+             std::pair(slotRegion[y.slot], slotVertex[y.slot]);
+    });
+  }
+
+  // Boundary slots extrapolate through each element around them, B_e + g_e . (v - c_e), with g_e the
+  // least-squares gradient from the centroids of e's neighbours in the region. On a regular grid this is the
+  // classic 2 B_e - B_interior of the book; in general it is exact for a linear field on any mesh. g_e is
+  // linear in the neighbours' differences, so each extrapolation is a weighted sum of them: the weights,
+  // offset^T pinv(A), are all that is kept.
+  extrapolated_.assign(slots, 0);
+  std::vector<std::vector<int>> neighbourCache(mesh.size());
+  std::vector<Eigen::Matrix3Xd> pinvCache(mesh.size());
+  std::vector<char> cached(mesh.size(), 0);
+  for (std::size_t s = 0; s < slots; ++s) {
+    if (angle[s] > 2 * kPi - 1e-6) continue;
+    extrapolated_[s] = 1;
+    for (int t = firstTerm_[s]; t < firstTerm_[s + 1]; ++t) {
+      const int e = terms_[t].element;
+      if (!cached[e]) {
+        cached[e] = 1;
+        std::vector<int>& neighbours = neighbourCache[e];
+        for (int v : mesh.elements[e].vertices)
+          for (int other : mesh.vertexElements[v])
+            if (other != e && region[other] == region[e] &&
+                std::find(neighbours.begin(), neighbours.end(), other) == neighbours.end())
+              neighbours.push_back(other);
+        if (!neighbours.empty()) {
+          Eigen::MatrixXd A(static_cast<Eigen::Index>(neighbours.size()), 3);
+          for (Eigen::Index k = 0; k < A.rows(); ++k)
+            A.row(k) = (mesh.elements[neighbours[k]].centroid - mesh.elements[e].centroid).transpose();
+          // Minimum-norm solution: no gradient along the normal, and none across a strip one element wide.
+          // A strip's centroids are collinear only up to the file's rounding (1e-6 of a 5 cm element in the
+          // museum): with Eigen's default threshold that direction counts, and its gradient extrapolates
+          // to 1e12. Directions below a thousandth of the largest are dropped instead.
+          Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(A.rows(), A.cols());
+          cod.setThreshold(1e-3);
+          cod.compute(A);
+          pinvCache[e] = cod.pseudoInverse();
+        }
+      }
+      terms_[t].firstWeight = static_cast<int>(weights_.size());
+      const Vec3 offset = mesh.vertices[slotVertex[s]] - mesh.elements[e].centroid;
+      const std::vector<int>& neighbours = neighbourCache[e];
+      if (!neighbours.empty()) {
+        const Eigen::VectorXd w = pinvCache[e].transpose() * offset;
+        for (std::size_t k = 0; k < neighbours.size(); ++k) {
+          neighbours_.push_back(neighbours[k]);
+          weights_.push_back(w[static_cast<Eigen::Index>(k)]);
+        }
+      }
+      terms_[t].lastWeight = static_cast<int>(weights_.size());
+    }
+  }
+}
+
+CornerField SmoothInterpolation::apply(const RgbField& perElement) const {
+  const std::size_t slots = extrapolated_.size();
+  std::vector<Rgb> value(slots);
+  for (std::size_t s = 0; s < slots; ++s) {
     Rgb sum = Rgb::Zero();
-    for (int e : elements) {
-      const Vec3 offset = mesh.vertices[key.second] - mesh.elements[e].centroid;
-      const Rgb extrapolated =
-          perElement.row(e).transpose().array() + (gradientOf(e).transpose() * offset).array();
+    for (int t = firstTerm_[s]; t < firstTerm_[s + 1]; ++t) {
+      const Term& term = terms_[t];
+      const Rgb own = perElement.row(term.element).transpose().array();
+      if (!extrapolated_[s]) {
+        sum += own;
+        continue;
+      }
+      Rgb extrapolated = own;
+      for (int k = term.firstWeight; k < term.lastWeight; ++k)
+        extrapolated += weights_[k] * (perElement.row(neighbours_[k]).transpose().array() - own);
       sum += extrapolated.max(0.0);
     }
-    value[key] = sum / static_cast<double>(elements.size());
+    value[s] = sum / static_cast<double>(firstTerm_[s + 1] - firstTerm_[s]);
   }
   // T-vertices last: along the long edge (twice, for T-vertices whose edge ends at another T-vertex).
   for (int pass = 0; pass < 2; ++pass)
-    for (const auto& [key, tv] : tVertices)
-      value[key] = (1 - tv.t) * value[{key.first, tv.a}] + tv.t * value[{key.first, tv.b}];
+    for (const TVertex& tv : tVertices_) value[tv.slot] = (1 - tv.t) * value[tv.a] + tv.t * value[tv.b];
 
-  for (std::size_t e = 0; e < mesh.size(); ++e) {
-    const Element& el = mesh.elements[e];
-    for (std::size_t k = 0; k < el.vertices.size(); ++k)
-      field.values.row(field.firstCorner[e] + static_cast<int>(k)) =
-          value[{region[e], el.vertices[k]}].transpose();
-  }
+  CornerField field;
+  field.firstCorner = firstCorner_;
+  field.values.resize(static_cast<Eigen::Index>(cornerSlot_.size()), 3);
+  for (std::size_t c = 0; c < cornerSlot_.size(); ++c)
+    field.values.row(static_cast<Eigen::Index>(c)) = value[cornerSlot_[c]].transpose();
   return field;
 }
 

@@ -3,9 +3,6 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
-#include <vtkCellData.h>
-#include <vtkIntArray.h>
-#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -14,12 +11,12 @@
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
-#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
 #include <map>
 #include <utility>
 
+#include "viz/element_polydata.h"
 #include "viz/vtk_render.h"
 
 namespace rt::viz {
@@ -92,35 +89,6 @@ vtkSmartPointer<vtkActor> makeEmitterOutlineActor(const Mesh& mesh, double lineW
   actor->GetProperty()->LightingOff();
   actor->GetProperty()->SetLineWidth(static_cast<float>(lineWidth));
   return actor;
-}
-
-vtkSmartPointer<vtkPolyData> makeElementPolyData(const Mesh& mesh, const ScenePaint& paint) {
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  auto polygons = vtkSmartPointer<vtkCellArray>::New();
-  auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  colours->SetName("colour");
-  colours->SetNumberOfComponents(3);
-  auto ids = vtkSmartPointer<vtkIntArray>::New();
-  ids->SetName("element");
-  const bool painted = paint.firstCorner.size() == mesh.size() + 1;
-  for (std::size_t e = 0; e < mesh.size(); ++e) {
-    const Element& element = mesh.elements[e];
-    polygons->InsertNextCell(static_cast<vtkIdType>(element.vertices.size()));
-    for (std::size_t k = 0; k < element.vertices.size(); ++k) {
-      const Vec3& p = mesh.vertices[element.vertices[k]];
-      polygons->InsertCellPoint(points->InsertNextPoint(p.x(), p.y(), p.z()));
-      const Rgb8 c = painted ? paint.colours[paint.firstCorner[e] + k] : Rgb8{200, 200, 200};
-      colours->InsertNextTypedTuple(c.data());
-    }
-    ids->InsertNextValue(static_cast<int>(e));
-  }
-  auto data = vtkSmartPointer<vtkPolyData>::New();
-  data->SetPoints(points);
-  data->SetPolys(polygons);
-  data->GetPointData()->SetScalars(colours);
-  data->GetCellData()->AddArray(ids);
-  return data;
 }
 
 vtkSmartPointer<vtkRenderer> makeSceneRenderer(const Mesh& mesh, const Camera& camera,

@@ -6,6 +6,7 @@
 #include <vtkSmartPointer.h>
 
 #include "viz/drawing.h"
+#include "viz/element_polydata.h"
 #include "viz/scene_view.h"
 
 class vtkActor;
@@ -14,10 +15,6 @@ class vtkRenderer;
 class vtkRenderWindow;
 
 namespace rt::viz {
-
-// One polygon per element (points repeated per element so that corners can differ in colour), cell data
-// "element" (the element index), point data "colour" (RGB, unsigned char) from the paint.
-vtkSmartPointer<vtkPolyData> makeElementPolyData(const Mesh& mesh, const ScenePaint& paint);
 
 // The scene renderer: elements (no lighting: the colour is the displayed radiosity), optional mesh edges,
 // highlight, caption, camera. `viewport` is xmin, ymin, xmax, ymax in normalised window coordinates.
