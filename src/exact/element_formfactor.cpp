@@ -115,10 +115,10 @@ ExactOptions exactOptionsFor(double tolerance) {
 }
 
 EntryResult elementFormFactor(const Mesh& mesh, int source, int receiver, const ExactOptions& options,
-                              std::vector<CubaturePoint>* points) {
+                              std::vector<CubaturePoint>* points, const ElementIndex* index) {
   if (source == receiver)
     return EntryResult{0, 0, false, false, 0, 0, 0, true};  // planar elements do not see themselves
-  return integratePair(mesh, setUpPair(mesh, source, receiver), options, points);
+  return integratePair(mesh, setUpPair(mesh, source, receiver, true, index), options, points);
 }
 
 double pointFormFactor(const Mesh& mesh, int source, const Vec3& x, int receiver, Booleans booleans) {

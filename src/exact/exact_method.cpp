@@ -10,6 +10,7 @@
 #include <mutex>
 
 #include "exact/exact_reference.h"
+#include "exact/shaft.h"
 
 namespace rt::exact {
 namespace {
@@ -50,6 +51,7 @@ ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& options, Prog
   const std::string stage = "exact form factors";
   progress.report(0.0, stage);
 
+  const ElementIndex index(mesh);
   auto row = [&](Eigen::Index i) {
     if (cancelled.load() || progress.cancelled()) {
       cancelled = true;
@@ -57,7 +59,8 @@ ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& options, Prog
     }
     const double ai = mesh.elements[i].area;
     for (Eigen::Index j = i + 1; j < n; ++j) {
-      const EntryResult e = elementFormFactor(mesh, static_cast<int>(i), static_cast<int>(j), options);
+      const EntryResult e =
+          elementFormFactor(mesh, static_cast<int>(i), static_cast<int>(j), options, nullptr, &index);
       if (!e.facing) {
         ++facing;
         continue;

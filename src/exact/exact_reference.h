@@ -117,8 +117,10 @@ struct EntryResult {
   bool analytic = false;  // unoccluded, from the analytic contour integral: no cubature, no estimate (0)
 };
 
+class ElementIndex;  // exact/shaft.h: the mesh's polygons and a box tree over them, for whole matrices
 EntryResult elementFormFactor(const Mesh& mesh, int source, int receiver, const ExactOptions& options = {},
-                              std::vector<CubaturePoint>* points = nullptr);
+                              std::vector<CubaturePoint>* points = nullptr,
+                              const ElementIndex* index = nullptr);
 // The integrand of F_ij at one point x of the source: F(dA at x -> visible part of the receiver), with the
 // given way of cutting out the occluders the filter cannot decide (both ways must agree to rounding; the
 // tests check it).

@@ -42,12 +42,35 @@ void addHullPlanes(const Polygon& a, const Polygon& b, double eps, std::vector<P
 
 }  // namespace
 
-PairGeometry setUpPair(const Mesh& mesh, int source, int receiver, bool cullOccluders) {
+ElementIndex::ElementIndex(const Mesh& mesh) {
+  polygons_.reserve(mesh.size());
+  boxes_.reserve(mesh.size());
+  for (std::size_t e = 0; e < mesh.size(); ++e) {
+    polygons_.push_back(mesh.polygon(static_cast<int>(e)));
+    boxes_.push_back(boundsOf(polygons_.back()));
+  }
+  tree_ = BoxTree(boxes_);
+}
+
+void ElementIndex::overlapping(const Eigen::AlignedBox3d& box, std::vector<int>& out) const {
+  out.clear();
+  // The tree's overlap is strict by eps on every axis; a negative eps makes touching boxes count, as
+  // AlignedBox3d::intersects does.
+  const double slack = 1e-9 * std::max(box.diagonal().norm(), 1e-300);
+  tree_.anyOverlapping(box, -slack, [&](int k) {
+    if (box.intersects(boxes_[static_cast<std::size_t>(k)])) out.push_back(k);
+    return false;
+  });
+  std::sort(out.begin(), out.end());
+}
+
+PairGeometry setUpPair(const Mesh& mesh, int source, int receiver, bool cullOccluders,
+                       const ElementIndex* index) {
   PairGeometry pair;
   pair.source = source;
   pair.receiver = receiver;
-  pair.sourcePolygon = mesh.polygon(source);
-  pair.receiverPolygon = mesh.polygon(receiver);
+  pair.sourcePolygon = index ? index->polygon(source) : mesh.polygon(source);
+  pair.receiverPolygon = index ? index->polygon(receiver) : mesh.polygon(receiver);
   pair.sourceNormal = mesh.elements[source].normal.normalized();
   pair.receiverNormal = mesh.elements[receiver].normal.normalized();
   Eigen::AlignedBox3d box = boundsOf(pair.sourcePolygon);
@@ -75,11 +98,18 @@ PairGeometry setUpPair(const Mesh& mesh, int source, int receiver, bool cullOccl
   addHullPlanes(pair.sourcePolygon, pair.receiverPolygon, eps, planes);
   addHullPlanes(pair.receiverPolygon, pair.sourcePolygon, eps, planes);
   const Eigen::AlignedBox3d shaftBox(box.min() - Vec3::Constant(eps), box.max() + Vec3::Constant(eps));
-  for (std::size_t k = 0; k < mesh.elements.size(); ++k) {
-    const int element = static_cast<int>(k);
+  std::vector<int> inBox;
+  if (index) {
+    index->overlapping(shaftBox, inBox);
+  } else {
+    for (std::size_t k = 0; k < mesh.elements.size(); ++k) inBox.push_back(static_cast<int>(k));
+  }
+  Polygon built;
+  for (const int element : inBox) {
     if (element == source || element == receiver) continue;
-    const Polygon polygon = mesh.polygon(element);
-    if (!shaftBox.intersects(boundsOf(polygon))) continue;
+    if (!index) built = mesh.polygon(element);
+    const Polygon& polygon = index ? index->polygon(element) : built;
+    if (!shaftBox.intersects(index ? index->box(element) : boundsOf(polygon))) continue;
     // Behind or in either element's plane: no ray between the fronts passes there.
     if (distanceRange(polygon, si, pair.sourceNormal).second <= eps) continue;
     if (distanceRange(polygon, rj, pair.receiverNormal).second <= eps) continue;

@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "core/formfactor/box_tree.h"
 #include "core/mesh.h"
 
 namespace rt::exact {
@@ -26,6 +27,25 @@ struct PairGeometry {
 // Relative tolerance of the double-precision culling and classification tests.
 inline constexpr double kGeometricEpsilon = 1e-11;
 
-PairGeometry setUpPair(const Mesh& mesh, int source, int receiver, bool cullOccluders = true);
+// Every element's polygon and box, and a box tree over them, built once per mesh: a pair's shaft then
+// looks only at the elements whose boxes meet its own, instead of building and testing every element's
+// polygon for every pair (n^3 work for a matrix, a fifth of the exact method's time at 612 elements).
+class ElementIndex {
+ public:
+  explicit ElementIndex(const Mesh& mesh);
+  const Polygon& polygon(int element) const { return polygons_[static_cast<std::size_t>(element)]; }
+  const Eigen::AlignedBox3d& box(int element) const { return boxes_[static_cast<std::size_t>(element)]; }
+  // The elements whose boxes meet `box` (touching counts), in increasing order, into `out`.
+  void overlapping(const Eigen::AlignedBox3d& box, std::vector<int>& out) const;
+
+ private:
+  std::vector<Polygon> polygons_;
+  std::vector<Eigen::AlignedBox3d> boxes_;
+  BoxTree tree_;
+};
+
+// `index`, when given, must be of `mesh`; the result is the same with or without it.
+PairGeometry setUpPair(const Mesh& mesh, int source, int receiver, bool cullOccluders = true,
+                       const ElementIndex* index = nullptr);
 
 }  // namespace rt::exact
