@@ -49,6 +49,12 @@ TEST(Occlusion, FullOccluderGivesExactlyZero) {
   EXPECT_TRUE(entry.occluded);
   EXPECT_EQ(entry.value, 0.0);
   EXPECT_EQ(entry.errorEstimate, 0.0);
+  EXPECT_EQ(entry.evaluations, 0);  // proven wholly hidden from the corners: no cubature at all
+  // A plate that leaves a sliver of the ceiling in view from one corner of the floor is not proven hidden.
+  const Mesh sliver = test::meshFromPolygons({kFloor, kCeiling, rectangleAtHeight(-1, 0.99, -1, 2, 0.5)});
+  const EntryResult partial = elementFormFactor(sliver, 0, 1, splitOptions());
+  EXPECT_GT(partial.evaluations, 0);
+  EXPECT_GT(partial.value, 0.0);
   const VisibleRegion region = visibleRegion(mesh, 0, Vec3(0.3, 0.6, 0), 1);
   EXPECT_TRUE(region.facing);
   EXPECT_TRUE(region.visible.empty());
