@@ -41,11 +41,12 @@ struct Sweep {
   std::vector<int> values;
 };
 
-// The swept value sets the knob the method declares (FormFactorMethod::knob()).
+// The swept value sets the knob the method declares (FormFactorMethod::knob()); a tolerance as its digits.
 FormFactorOptions optionsFor(const std::string& method, int value, std::uint64_t seed) {
   FormFactorOptions o;
   o.seed = seed;
-  return accuracyKnobOf(method).applied(o, value);
+  const AccuracyKnob knob = accuracyKnobOf(method);
+  return knob.applied(o, knob.fromSweep(value));
 }
 
 // Least-squares slope of log(y) against log(x) (points with y > 0 only).
@@ -105,7 +106,8 @@ void run(const BenchArguments& a) {
                                {"raycast", "samples/pair", {1, 4, 16, 64, 256, 1024}},
                                {"montecarlo", "rays/element", {64, 256, 1024, 4096, 16384, 65536}},
                                {"nusselt", "segments/arc", {4, 8, 16, 32, 64}},
-                               {"hybrid", "rays per 1 % F", {1, 4, 16, 64, 256}}};
+                               {"hybrid", "rays per 1 % F", {1, 4, 16, 64, 256}},
+                               {"quadrature", "digits (tolerance 10^-d)", {2, 3, 4, 5, 6}}};
   if (occludable) sweeps.push_back({"analytic-visibility", "rays/pair", {1, 4, 16, 64, 256}});
 
   std::vector<Row> rows;

@@ -144,8 +144,9 @@ std::vector<StepKey> makeTable() {
        .min = 1,
        .max = 1000000,
        .label = "Sweep",
-       .tooltip = "The values of each method's accuracy knob (resolution or samples) a benchmark tries; "
-                  "scaling: the rays per element local lines is run with.",
+       .tooltip =
+           "The values of each method's accuracy knob a benchmark tries (a resolution or a count; for "
+           "a tolerance, the digits d of 10^-d); scaling: the rays per element local lines is run with.",
        .stages = {Stage::Benchmark, Stage::Scaling},
        .slot = &P::sweep});
   add({.name = "solver",

@@ -37,7 +37,10 @@ FormFactorOptions formFactorOptionsFor(const StepParameters& p, const std::strin
   if (p.resolution) o.hemicubeResolution = *p.resolution;
   if (p.samples) o.samples = *p.samples;
   if (p.seed) o.seed = *p.seed;
-  if (sweepValue > 0) o = accuracyKnobOf(method).applied(o, sweepValue);
+  if (sweepValue > 0) {
+    const AccuracyKnob knob = accuracyKnobOf(method);
+    o = knob.applied(o, knob.fromSweep(static_cast<int>(sweepValue)));
+  }
   return o;
 }
 

@@ -1,5 +1,6 @@
 #include "core/formfactor/formfactor_method.h"
 
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <mutex>
@@ -124,6 +125,10 @@ FormFactorOptions AccuracyKnob::applied(FormFactorOptions options, double value)
       break;
   }
   return options;
+}
+
+double AccuracyKnob::fromSweep(int v) const {
+  return field == Field::Tolerance ? std::pow(10.0, -v) : static_cast<double>(v);
 }
 
 double AccuracyKnob::valueIn(const FormFactorOptions& options) const {

@@ -55,6 +55,10 @@ struct AccuracyKnob {
 
   // `options` with the knob set to `value` (unchanged for a method without a knob).
   FormFactorOptions applied(FormFactorOptions options, double value) const;
+  // The knob's value for a point of a sweep (a lesson's `sweep`, `bench formfactors`): a resolution or a
+  // count as it is; a tolerance 10^-v, v the digits asked for, so that sweeps stay whole numbers that grow
+  // with the effort for every method.
+  double fromSweep(int v) const;
   // The knob's current value in `options` (0 for a method without a knob).
   double valueIn(const FormFactorOptions& options) const;
 };
