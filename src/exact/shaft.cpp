@@ -52,18 +52,6 @@ ElementIndex::ElementIndex(const Mesh& mesh) {
   tree_ = BoxTree(boxes_);
 }
 
-void ElementIndex::overlapping(const Eigen::AlignedBox3d& box, std::vector<int>& out) const {
-  out.clear();
-  // The tree's overlap is strict by eps on every axis; a negative eps makes touching boxes count, as
-  // AlignedBox3d::intersects does.
-  const double slack = 1e-9 * std::max(box.diagonal().norm(), 1e-300);
-  tree_.anyOverlapping(box, -slack, [&](int k) {
-    if (box.intersects(boxes_[static_cast<std::size_t>(k)])) out.push_back(k);
-    return false;
-  });
-  std::sort(out.begin(), out.end());
-}
-
 PairGeometry setUpPair(const Mesh& mesh, int source, int receiver, bool cullOccluders,
                        const ElementIndex* index) {
   PairGeometry pair;
@@ -98,33 +86,31 @@ PairGeometry setUpPair(const Mesh& mesh, int source, int receiver, bool cullOccl
   addHullPlanes(pair.sourcePolygon, pair.receiverPolygon, eps, planes);
   addHullPlanes(pair.receiverPolygon, pair.sourcePolygon, eps, planes);
   const Eigen::AlignedBox3d shaftBox(box.min() - Vec3::Constant(eps), box.max() + Vec3::Constant(eps));
-  std::vector<int> inBox;
-  if (index) {
-    index->overlapping(shaftBox, inBox);
-  } else {
-    for (std::size_t k = 0; k < mesh.elements.size(); ++k) inBox.push_back(static_cast<int>(k));
-  }
-  Polygon built;
-  for (const int element : inBox) {
-    if (element == source || element == receiver) continue;
-    if (!index) built = mesh.polygon(element);
-    const Polygon& polygon = index ? index->polygon(element) : built;
-    if (!shaftBox.intersects(index ? index->box(element) : boundsOf(polygon))) continue;
+  // The tests in order of cost; `polygon` is the element's.
+  auto mayBlock = [&](int element, const Polygon& polygon) {
+    if (element == source || element == receiver) return false;
     // Behind or in either element's plane: no ray between the fronts passes there.
-    if (distanceRange(polygon, si, pair.sourceNormal).second <= eps) continue;
-    if (distanceRange(polygon, rj, pair.receiverNormal).second <= eps) continue;
-    bool outside = false;
+    if (distanceRange(polygon, si, pair.sourceNormal).second <= eps) return false;
+    if (distanceRange(polygon, rj, pair.receiverNormal).second <= eps) return false;
     for (const Plane& plane : planes) {
       double lo = plane.distance(polygon.front());
       for (const Vec3& v : polygon) lo = std::min(lo, plane.distance(v));
-      if (lo >= -eps) {
-        outside = true;
-        break;
-      }
+      if (lo >= -eps) return false;
     }
-    if (outside) continue;
+    return true;
+  };
+  if (index) {
+    index->overlapping(shaftBox, pair.occluders,
+                       [&](int element) { return mayBlock(element, index->polygon(element)); });
+    for (int element : pair.occluders) pair.occluderPolygons.push_back(index->polygon(element));
+    return pair;
+  }
+  for (std::size_t k = 0; k < mesh.elements.size(); ++k) {
+    const int element = static_cast<int>(k);
+    Polygon polygon = mesh.polygon(element);
+    if (!shaftBox.intersects(boundsOf(polygon)) || !mayBlock(element, polygon)) continue;
     pair.occluders.push_back(element);
-    pair.occluderPolygons.push_back(polygon);
+    pair.occluderPolygons.push_back(std::move(polygon));
   }
   return pair;
 }

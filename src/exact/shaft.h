@@ -6,6 +6,7 @@
 // no light), with a tiny relative tolerance.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "core/formfactor/box_tree.h"
@@ -35,8 +36,20 @@ class ElementIndex {
   explicit ElementIndex(const Mesh& mesh);
   const Polygon& polygon(int element) const { return polygons_[static_cast<std::size_t>(element)]; }
   const Eigen::AlignedBox3d& box(int element) const { return boxes_[static_cast<std::size_t>(element)]; }
-  // The elements whose boxes meet `box` (touching counts), in increasing order, into `out`.
-  void overlapping(const Eigen::AlignedBox3d& box, std::vector<int>& out) const;
+  // The elements whose boxes meet `box` (touching counts) and that `keep` accepts, in increasing order, into
+  // `out`. Filtering before sorting: most boxes a shaft meets hold elements it then drops.
+  template <class Keep>
+  void overlapping(const Eigen::AlignedBox3d& box, std::vector<int>& out, Keep&& keep) const {
+    out.clear();
+    // The tree's overlap is strict by eps on every axis; a negative eps makes touching boxes count, as
+    // AlignedBox3d::intersects does.
+    const double slack = 1e-9 * std::max(box.diagonal().norm(), 1e-300);
+    tree_.anyOverlapping(box, -slack, [&](int k) {
+      if (box.intersects(boxes_[static_cast<std::size_t>(k)]) && keep(k)) out.push_back(k);
+      return false;
+    });
+    std::sort(out.begin(), out.end());
+  }
 
  private:
   std::vector<Polygon> polygons_;
