@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/formfactor/analytic.h"
+#include "core/formfactor/shadow_clipper.h"
 #include "core/polygon.h"
 #include "exact/adaptive_cubature.h"
 #include "exact/exact_kernel.h"
@@ -54,13 +55,11 @@ bool near(const PairGeometry& pair) {
 }
 
 // True when one occluder, a convex polygon, cuts every segment from the integration domain to the receiver
-// with a margin: then nothing of the receiver is seen from anywhere on the source and F_ij = 0 exactly. Every
-// such segment crosses the occluder's plane (the domain strictly on one side, the receiver on the other) at a
-// point of the convex hull of the corner-to-corner segments' crossings, so those lying inside the polygon is
-// enough. (The cubature would find the same zero, after splitting the source along every visibility event.)
+// with a margin (polygonCutsEverySegment, the quadrature method's proof): then nothing of the receiver is
+// seen from anywhere on the source and F_ij = 0 exactly. (The cubature would find the same zero, after
+// splitting the source along every visibility event.)
 bool whollyHidden(const PairGeometry& pair) {
   const double eps = 100 * kGeometricEpsilon * pair.scale;
-  std::vector<Vec3> crossings;
   for (const Polygon& o : pair.occluderPolygons) {
     const Vec3 normal = newellNormal(o);
     const double length = normal.norm();
@@ -71,28 +70,11 @@ bool whollyHidden(const PairGeometry& pair) {
       convex =
           (o[(k + 1) % o.size()] - o[k]).cross(o[(k + 2) % o.size()] - o[(k + 1) % o.size()]).dot(n) >= 0;
     if (!convex) continue;
-    const double offset = n.dot(o[0]);
-    auto height = [&](const Vec3& p) { return n.dot(p) - offset; };
-    const double side = height(pair.receiverPolygon[0]);
-    bool separated = std::abs(side) > eps;
-    for (const Vec3& r : pair.receiverPolygon)
-      separated = separated && height(r) * side > 0 && std::abs(height(r)) > eps;
-    for (const Vec3& s : pair.integrationDomain)
-      separated = separated && height(s) * side < 0 && std::abs(height(s)) > eps;
-    if (!separated) continue;
-    crossings.clear();
-    for (const Vec3& s : pair.integrationDomain)
-      for (const Vec3& r : pair.receiverPolygon) {
-        const double hs = height(s), hr = height(r);
-        crossings.push_back(s + (r - s) * (hs / (hs - hr)));
-      }
-    bool inside = true;
-    for (std::size_t c = 0; c < crossings.size() && inside; ++c)
-      for (std::size_t k = 0; k < o.size() && inside; ++k) {
-        const Vec3 edge = o[(k + 1) % o.size()] - o[k];
-        inside = edge.cross(crossings[c] - o[k]).dot(n) > eps * edge.norm();
-      }
-    if (inside) return true;
+    if (polygonCutsEverySegment(pair.integrationDomain.data(),
+                                static_cast<int>(pair.integrationDomain.size()), pair.receiverPolygon.data(),
+                                static_cast<int>(pair.receiverPolygon.size()), o.data(),
+                                static_cast<int>(o.size()), n, n.dot(o[0]), eps))
+      return true;
   }
   return false;
 }

@@ -93,6 +93,27 @@ void clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& norm
   if (out.count < 3) out.count = 0;
 }
 
+bool polygonCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
+                             const Vec3* polygon, int count, const Vec3& normal, double offset, double eps) {
+  if (fromCount < 1 || toCount < 1 || count < 3) return false;
+  auto height = [&](const Vec3& p) { return normal.dot(p) - offset; };
+  const double side = height(to[0]);
+  for (int k = 0; k < toCount; ++k)
+    if (!(height(to[k]) * side > 0 && std::abs(height(to[k])) > eps)) return false;
+  for (int k = 0; k < fromCount; ++k)
+    if (!(height(from[k]) * side < 0 && std::abs(height(from[k])) > eps)) return false;
+  for (int f = 0; f < fromCount; ++f)
+    for (int t = 0; t < toCount; ++t) {
+      const double hf = height(from[f]), ht = height(to[t]);
+      const Vec3 crossing = from[f] + (to[t] - from[f]) * (hf / (hf - ht));
+      for (int k = 0; k < count; ++k) {
+        const Vec3 edge = polygon[(k + 1) % count] - polygon[k];
+        if (!(edge.cross(crossing - polygon[k]).dot(normal) > eps * edge.norm())) return false;
+      }
+    }
+  return true;
+}
+
 ShadowClipper::ShadowClipper(const SmallPolygon& source, const Vec3& sourceNormal,
                              const SmallPolygon& receiver, const Vec3& receiverNormal,
                              const std::vector<OccluderPolygon>& occluders,
@@ -199,17 +220,9 @@ bool ShadowClipper::hidesAll(const Vec3* panel, int count, const std::vector<int
   int lastSolid = -1;
   for (int index : occluders) {
     const Occluder& o = prepared_[static_cast<std::size_t>(index)];
-    if (crossings(panel, count, o.normal, o.normal.dot(o.centre))) {
-      const int m = o.polygon.count;
-      bool inside = true;
-      for (std::size_t c = 0; c < crossings_.size() && inside; ++c)
-        for (int k = 0; k < m && inside; ++k) {
-          const Vec3& a = o.polygon.v[static_cast<std::size_t>(k)];
-          const Vec3 edge = o.polygon.v[static_cast<std::size_t>((k + 1) % m)] - a;
-          inside = edge.cross(crossings_[c] - a).dot(o.normal) > eps_ * edge.norm();
-        }
-      if (inside) return true;
-    }
+    if (polygonCutsEverySegment(panel, count, receiver_.v.data(), receiver_.count, o.polygon.v.data(),
+                                o.polygon.count, o.normal, o.normal.dot(o.centre), eps_))
+      return true;
     // A block's faces may share the segments between them; its cross-sections through its centre, across
     // the line of sight and parallel to each face, hold them all.
     if (o.solid < 0 || o.solid == lastSolid || !solidCentres_) continue;

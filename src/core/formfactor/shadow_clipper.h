@@ -35,6 +35,14 @@ struct SmallPolygon {
 void clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& normal, double eps,
                  SmallPolygon& out);
 
+// True when the convex polygon (counter-clockwise about its unit `normal`, its plane normal . p = offset)
+// cuts every segment from the convex polygon `from` to the convex polygon `to` with a margin `eps` (a
+// length): the two lie strictly on opposite sides of its plane and every corner-to-corner segment crosses it
+// strictly inside. Every segment crosses the plane at a point of the convex hull of those crossings, so that
+// is enough.
+bool polygonCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
+                             const Vec3* polygon, int count, const Vec3& normal, double offset, double eps);
+
 // A closed convex solid (a block with its bottom): the outward planes of its faces (unit normal, offset).
 using SolidPlanes = std::vector<std::pair<Vec3, double>>;
 
