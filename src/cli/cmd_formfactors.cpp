@@ -110,10 +110,12 @@ void addFormFactorsCommand(CLI::App& app) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command
-      ->add_option("--tolerance", arguments->options.tolerance,
-                   "exact: relative tolerance of every entry (the cubature refines until its error estimate "
-                   "is below it; occluded pairs take much longer at small values); quadrature: absolute "
-                   "error allowed in every entry (1e-3 is far cheaper than 1e-6)")
+      ->add_option(
+          "--tolerance,--ff-tolerance", arguments->options.tolerance,
+          "exact: relative tolerance of every entry (the cubature refines until its error estimate "
+          "is below it; occluded pairs take much longer at small values); quadrature: absolute "
+          "error allowed in every entry (1e-3 is far cheaper than 1e-6); 0, the default: the method's own "
+          "(quadrature 1e-5, exact 1e-9)")
       ->check(CLI::Range(1e-14, 0.5))
       ->capture_default_str();
   command->add_option(

@@ -204,11 +204,13 @@ void addSolveCommand(CLI::App& app) {
   auto* command =
       app.add_subcommand("solve", "Solve the radiosity system of a scene; write B.csv and/or an image");
   command->add_option("scene", a->scene, "Scene file (.json or .obj)")->required()->check(CLI::ExistingFile);
-  addSettingOption(*command, "solver", a->s.solver)
+  // The settings every solving command shares (method, solver, tolerances, seeds, knobs, mesh, --verbose),
+  // then what solve adds to them.
+  a->s.add(*command);
+  command->get_option("--solver")
       ->default_str(
           "by size: direct below 3,000 elements, local-lines above (gauss-seidel when --method is given)");
-  auto* formFactors =
-      addSettingOption(*command, "method", a->s.method)->default_str(defaultFormFactorMethod());
+  auto* formFactors = command->get_option("--method");
   // It used to name the solver: a solver's name is still taken (with a note), anything else is checked below.
   formFactors->get_validator(kTableCheck)->active(false);
   // The old spelling of the form-factor method, kept apart: old command lines put the solver in --method.
@@ -221,19 +223,11 @@ void addSolveCommand(CLI::App& app) {
           },
           "Deprecated spelling of --method")
       ->group("");
-  addSettingOption(*command, "tolerance", a->s.tolerance);
-  addDeprecatedAlias(*command, "--max-iterations",
-                     addSettingOption(*command, "iterations", a->s.maxIterations));
-  addSettingOption(*command, "seed", a->s.seed);
-  addSettingOption(*command, "rays-per-iteration", a->s.raysPerIteration);
-  addSettingOption(*command, "cluster-tolerance", a->s.clusterTolerance);
-  addSettingOption(*command, "resolution", a->s.resolution);
-  addSettingOption(*command, "samples", a->s.samples);
+  addDeprecatedAlias(*command, "--max-iterations", command->get_option("--iterations"));
   command->add_flag("--ambient", a->s.ambient, "progressive: show B plus the ambient term");
   command->add_flag("--no-matrix", a->noMatrix,
                     "southwell/progressive: compute each shooter's row of F when it shoots (--formfactors "
                     "hemicube, the default here, or raycast) instead of storing the n x n matrix");
-  a->s.mesh.add(*command);
   a->camera.add(*command);
   command->add_option("--output", a->output,
                       "Write B per element as CSV (element,patch,surface,area,B_r,B_g,B_b,x,y,z,nx,ny,nz: "
@@ -264,7 +258,6 @@ void addSolveCommand(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--rays", a->refine.visibilitySamples, "--mesh: visibility rays per pair or link")
       ->capture_default_str();
-  command->add_flag("--verbose", a->s.verbose, "One line per iteration instead of a progress line");
   command->callback([a, formFactors] {
     a->formFactorsGiven = formFactors->count() > 0;
     // `solve --method` used to name the solver: a solver's name there still works, with a note.

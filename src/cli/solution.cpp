@@ -18,6 +18,7 @@ void SolutionArguments::add(CLI::App& command) {
   addSettingOption(command, "cluster-tolerance", clusterTolerance);
   addSettingOption(command, "resolution", resolution);
   addSettingOption(command, "samples", samples);
+  addSettingOption(command, "ff-tolerance", formFactorTolerance);
   mesh.add(command);
   command.add_flag("--verbose", verbose, "One line per iteration instead of a progress line");
 }
@@ -26,6 +27,7 @@ FormFactorOptions SolutionArguments::formFactorOptions() const {
   FormFactorOptions options;
   options.hemicubeResolution = resolution;
   options.samples = samples;
+  options.tolerance = formFactorTolerance;
   options.seed = seed;
   return options;
 }

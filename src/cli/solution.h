@@ -23,6 +23,7 @@ struct SolutionArguments {
   double clusterTolerance = 0;  // hierarchical-clustering; 0 = automatic
   int resolution = 128;
   int samples = 16;
+  double formFactorTolerance = 0;  // the method's own
   bool ambient = false;
   bool verbose = false;
   // Neither a solver nor a form-factor method was named: choose both by the mesh's size and say why

@@ -20,7 +20,7 @@ class ExactMethod : public FormFactorMethod {
   std::string name() const override { return "exact"; }
   AccuracyKnob knob() const override {
     return {AccuracyKnob::Field::Tolerance,
-            "tolerance",
+            "ff-tolerance",
             "requested relative tolerance of each form factor",
             1e-12,
             0.1,

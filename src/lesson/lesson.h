@@ -101,6 +101,7 @@ struct StepParameters {
   std::string reference;                       // exact / benchmark: the method errors are measured against
   std::optional<int> resolution;               // hemicube resolution
   std::optional<int> samples;                  // raycast / montecarlo samples
+  std::optional<double> formFactorTolerance;   // quadrature / exact: the form factors' tolerance
   std::optional<std::uint64_t> seed;
   std::optional<int> subdivide;   // N x N per patch
   std::optional<double> maxEdge;  // or: split until no edge is longer than this

@@ -103,6 +103,20 @@ std::vector<StepKey> makeTable() {
        .control = true,
        .stages = computeF,
        .slot = &P::samples});
+  // Not "tolerance": that is the solver's, and a solve names both.
+  add({.name = "ff-tolerance",
+       .type = KeyType::Double,
+       .min = 0,
+       .max = 0.5,
+       .defaultText = "0",
+       .label = "Form-factor tolerance",
+       .tooltip = "The tolerance methods' accuracy knob: quadrature, the absolute error allowed in each form "
+                  "factor; exact, the relative tolerance of each. Smaller costs more (1e-3 is far cheaper "
+                  "than 1e-6). 0 is the method's own: quadrature 1e-5, exact 1e-9.",
+       .control = true,
+       .logScale = true,
+       .stages = computeF,
+       .slot = &P::formFactorTolerance});
   add({.name = "seed",
        .type = KeyType::Int,
        .min = 0,

@@ -36,6 +36,7 @@ FormFactorOptions formFactorOptionsFor(const StepParameters& p, const std::strin
   FormFactorOptions o;
   if (p.resolution) o.hemicubeResolution = *p.resolution;
   if (p.samples) o.samples = *p.samples;
+  if (p.formFactorTolerance) o.tolerance = *p.formFactorTolerance;
   if (p.seed) o.seed = *p.seed;
   if (sweepValue > 0) {
     const AccuracyKnob knob = accuracyKnobOf(method);

@@ -107,6 +107,10 @@ TEST(OnePipeline, ASweepSetsTheKnobTheMethodReads) {
   EXPECT_EQ(rt::lesson::formFactorOptionsFor(p, "nusselt", 32).samples, 32);
   EXPECT_EQ(rt::lesson::formFactorOptionsFor(p, "hemicube", 32).hemicubeResolution, 32);
   EXPECT_EQ(rt::lesson::formFactorOptionsFor(p, "raycast", 32).samples, 32);
+  rt::lesson::StepParameters q;
+  q.formFactorTolerance = 1e-3;
+  EXPECT_EQ(rt::lesson::formFactorOptionsFor(q, "quadrature", 0).tolerance, 1e-3);
+  EXPECT_EQ(rt::lesson::formFactorOptionsFor(p, "quadrature", 0).tolerance, 0.0);  // the method's own
   EXPECT_DOUBLE_EQ(rt::accuracyKnobOf("exact").applied({}, 1e-4).tolerance,
                    rt::accuracyKnobOf("exact").field == rt::AccuracyKnob::Field::Tolerance ? 1e-4 : 1e-9);
 }

@@ -107,6 +107,20 @@ TEST(SolveMethods, DirectIsChosenForASmallSceneWhenNoMethodIsNamed) {
   EXPECT_NE(log.find("solve (direct): success after 1 iteration,"), std::string::npos) << log;
 }
 
+// The form factors' tolerance has its own option: --tolerance is the solver's. Unset, the quadrature method
+// runs at its own default, not at the exact method's 1e-9.
+TEST(SolveMethods, FormFactorToleranceReachesTheQuadratureMethod) {
+  std::string log;
+  ASSERT_EQ(
+      runCommand(furnace("--subdivide 2 --method quadrature --ff-tolerance 1e-3 --tolerance 1e-9"), &log), 0)
+      << log;
+  EXPECT_NE(log.find("absolute tolerance 0.001"), std::string::npos) << log;
+  ASSERT_EQ(runCommand(furnace("--subdivide 2 --method quadrature"), &log), 0) << log;
+  EXPECT_NE(log.find("absolute tolerance 1e-05"), std::string::npos) << log;
+  EXPECT_NE(runCommand(furnace("--subdivide 2 --method quadrature --ff-tolerance 2"), &log), 0);
+  EXPECT_NE(log.find("--ff-tolerance"), std::string::npos) << log;
+}
+
 TEST(SolveMethods, UnknownNameListsTheKnownOnesBeforeAnyWork) {
   std::string log;
   EXPECT_NE(runCommand(furnace("--solver conjugate-gradient"), &log), 0);

@@ -39,7 +39,21 @@ TEST(QuadratureMethod, IsRegisteredWithAToleranceKnob) {
   EXPECT_NE(std::find(names.begin(), names.end(), "quadrature"), names.end());
   const AccuracyKnob knob = accuracyKnobOf("quadrature");
   EXPECT_EQ(knob.field, AccuracyKnob::Field::Tolerance);
-  EXPECT_EQ(knob.name, "tolerance");
+  EXPECT_EQ(knob.name, "ff-tolerance");
+}
+
+// A tolerance of 0 (FormFactorOptions' default) is the method's own, 1e-5: not the exact method's 1e-9,
+// which made a solve that named the method without a tolerance take minutes.
+TEST(QuadratureMethod, NoToleranceGivenMeansTheKnobsDefault) {
+  const Mesh mesh = test::meshOf(test::roomWithBlock(), 3);
+  FormFactorStats unset, own, tight;
+  const FormFactorMatrix F = runMethod("quadrature", mesh, withTolerance(0), &unset);
+  const FormFactorMatrix G = runMethod("quadrature", mesh, withTolerance(1e-5), &own);
+  runMethod("quadrature", mesh, withTolerance(1e-7), &tight);
+  EXPECT_EQ(accuracyKnobOf("quadrature").defaultValue, 1e-5);
+  EXPECT_EQ(unset.kernelEvaluations, own.kernelEvaluations);
+  EXPECT_EQ(maxAbsDifference(F, G), 0.0);
+  EXPECT_LT(own.kernelEvaluations, tight.kernelEvaluations);
 }
 
 TEST(QuadratureMethod, UnoccludedEntriesWithinTheTolerance) {

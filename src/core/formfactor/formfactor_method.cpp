@@ -60,7 +60,11 @@ void addWarnings(const std::string& method, const FormFactorMatrix& F, FormFacto
 
 FormFactorMatrix FormFactorMethod::compute(const Mesh& mesh, const FormFactorOptions& options,
                                            Progress& progress, FormFactorStats& stats) const {
-  FormFactorMatrix F = computeMatrix(mesh, options, progress, stats);
+  const AccuracyKnob own = knob();
+  FormFactorOptions resolved = options;
+  if (resolved.tolerance <= 0 && own.field == AccuracyKnob::Field::Tolerance)
+    resolved.tolerance = own.defaultValue;
+  FormFactorMatrix F = computeMatrix(mesh, resolved, progress, stats);
   addWarnings(name(), F, stats);
   return F;
 }

@@ -18,8 +18,11 @@ struct FormFactorOptions {
   int hemicubeResolution = 128;  // pixels along the top face's edge
   int samples = 16;              // raycast: sample pairs per element pair; montecarlo: rays per element
   std::uint64_t seed = 1;        // stochastic methods are deterministic for a seed
-  double tolerance = 1e-9;       // exact: requested relative tolerance; quadrature: absolute error per entry
-  int threads = 0;               // 0 = all cores
+  // exact: requested relative tolerance; quadrature: absolute error per entry; 0: the method's own default
+  // (its knob's defaultValue), so that a solve that names the method without a tolerance costs what the
+  // method says it costs.
+  double tolerance = 0;
+  int threads = 0;  // 0 = all cores
 };
 
 // What a run did and skipped; printed as one line by the CLI.
@@ -49,7 +52,7 @@ struct FormFactorStats {
 struct AccuracyKnob {
   enum class Field { None, Resolution, Samples, Tolerance };
   Field field = Field::None;
-  std::string name;     // the step key and CLI option: "resolution", "samples", "tolerance"; empty for none
+  std::string name;  // the step key and CLI option: "resolution", "samples", "ff-tolerance"; empty for none
   std::string meaning;  // what the number counts, for tooltips and docs
   double min = 0, max = 0, defaultValue = 0;
 

@@ -262,7 +262,7 @@ class QuadratureMethod : public FormFactorMethod {
   std::string name() const override { return "quadrature"; }
   AccuracyKnob knob() const override {
     return {AccuracyKnob::Field::Tolerance,
-            "tolerance",
+            "ff-tolerance",
             "absolute error allowed in each form factor",
             1e-9,
             0.1,
