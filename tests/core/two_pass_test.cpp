@@ -112,5 +112,54 @@ TEST(TwoPass, AgreesWithThePathTracerAroundABlock) {
   }
 }
 
+// On a mesh of 0.5-unit elements the floor's direct light varies by a factor of two across one element; the
+// secondary gather takes it at the points its rays reach, so the coarse mesh only enters the light that has
+// bounced twice, and the answer stays within two percent of the path tracer.
+TEST(TwoPass, ACoarseSolutionStillGivesThePathTracersAnswer) {
+  const Scene scene = test::roomWithBlock();
+  const TracingScene tracing(scene);
+  const PipelineOutput solved = solve(scene, 2);
+  const TwoPass twoPass(tracing, *solved.mesh, solved.solve.B, solved.F.get());
+  std::vector<SurfacePoint> points;
+  for (double x : {0.1, 0.5, 0.9}) points.push_back({{x, 0.9, 0}, Vec3::UnitZ()});
+  points.push_back({{0.02, 0.5, 0.5}, Vec3::UnitX()});  // a wall
+  const auto estimates = twoPass.estimate(points, TwoPassOptions{});
+  PathTraceOptions reference;
+  reference.samples = 32768;
+  const auto traced = PathTracer(scene).estimate(points, reference);
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    const double sigma = std::hypot(estimates[p].HError(0), traced[p].HError(0));
+    EXPECT_LE(std::abs(estimates[p].H(0) - traced[p].H(0)), 4 * sigma + 0.02 * traced[p].H(0))
+        << "point " << p << ": two-pass " << estimates[p].H(0) << " +- " << estimates[p].HError(0)
+        << ", path traced " << traced[p].H(0) << " +- " << traced[p].HError(0);
+  }
+}
+
+// Padding: each further dimension of a batch is a jittered grid of its own, its strata in a shuffled order,
+// so that every stratum holds exactly one sample and the dimensions do not line up.
+TEST(PaddedStrata, EveryDimensionFillsEachStratumOnce) {
+  PairRandom random(7, 1, 2);
+  constexpr int kSamples = 64;  // an 8 x 8 grid
+  const PaddedStrata strata(kSamples, 3, random);
+  int sameCell = 0;
+  for (int d = 0; d < 3; ++d) {
+    std::vector<int> hits(kSamples, 0);
+    for (int k = 0; k < kSamples; ++k) {
+      const Vec2 uv = strata.sample(d, k, random);
+      const int cell = static_cast<int>(uv.y() * 8) * 8 + static_cast<int>(uv.x() * 8);
+      ++hits[static_cast<std::size_t>(cell)];
+      if (d == 1) {
+        const Vec2 first = strata.sample(0, k, random);
+        sameCell += static_cast<int>(first.y() * 8) * 8 + static_cast<int>(first.x() * 8) == cell;
+      }
+    }
+    for (int h : hits) EXPECT_EQ(h, 1) << "dimension " << d;
+  }
+  EXPECT_LT(sameCell, 8);                           // shuffled, not the same order in every dimension
+  const Vec2 beyond = strata.sample(3, 0, random);  // an unpadded dimension: plain uniform
+  EXPECT_GE(beyond.x(), 0.0);
+  EXPECT_LT(beyond.x(), 1.0);
+}
+
 }  // namespace
 }  // namespace rt

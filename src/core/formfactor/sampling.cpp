@@ -47,6 +47,18 @@ void shuffledStrata(int n, PairRandom& random, std::vector<int>& order) {
               order[static_cast<std::size_t>(random.next() % static_cast<std::uint64_t>(k + 1))]);
 }
 
+PaddedStrata::PaddedStrata(int n, int dimensions, PairRandom& random)
+    : grid_(n), orders_(static_cast<std::size_t>(std::max(0, dimensions))) {
+  for (auto& order : orders_) shuffledStrata(n, random, order);
+}
+
+Vec2 PaddedStrata::sample(int dimension, int k, PairRandom& random) const {
+  if (dimension < 0 || dimension >= static_cast<int>(orders_.size()) ||
+      k >= static_cast<int>(orders_[static_cast<std::size_t>(dimension)].size()))
+    return {random.uniform(), random.uniform()};
+  return grid_.sample(orders_[static_cast<std::size_t>(dimension)][static_cast<std::size_t>(k)], random);
+}
+
 PolygonSampler::PolygonSampler(const Vec3* polygon, int count)
     : polygon_(polygon), triangles_(std::clamp(count - 2, 1, 16)) {
   if (triangles_ == 1) return;

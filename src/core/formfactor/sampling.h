@@ -41,6 +41,20 @@ class StrataGrid {
 // strata of two jittered grids without lining them up.
 void shuffledStrata(int n, PairRandom& random, std::vector<int>& order);
 
+// Stratified samples for the further dimensions of a batch of n paths (pbrt's "padding"): dimension d of
+// path k is drawn from stratum order_d[k] of its own jittered grid of n, each order a random permutation.
+// Every dimension is then stratified over the batch, and no two line up; a dimension past the last padded one
+// is plain uniform (unbiased either way).
+class PaddedStrata {
+ public:
+  PaddedStrata(int n, int dimensions, PairRandom& random);
+  Vec2 sample(int dimension, int k, PairRandom& random) const;
+
+ private:
+  StrataGrid grid_;
+  std::vector<std::vector<int>> orders_;
+};
+
 // Maps (u, v) in [0,1]^2 to a uniformly distributed point on a convex polygon (fan triangles chosen by area
 // with u, then the square-to-triangle map), preserving stratification.
 Vec3 pointOnPolygon(const Vec3* polygon, int count, double u, double v);

@@ -70,7 +70,7 @@ TwoPass::TwoPass(const TracingScene& tracing, const Mesh& solution, const RgbFie
   }
 }
 
-Rgb TwoPass::directSample(const Vec3& point, const Vec3& normal, int element, PairRandom& random) const {
+Rgb TwoPass::directSample(const Vec3& point, const Vec3& normal, int element, const Vec2& light) const {
   Rgb H = Rgb::Zero();
   const int patch = element >= 0 ? tracing_.patchOf(element) : -1;
   for (const Emitter& emitter : tracing_.emitters()) {
@@ -79,7 +79,7 @@ Rgb TwoPass::directSample(const Vec3& point, const Vec3& normal, int element, Pa
     if (unoccluded <= 0) continue;
     double hidden = 0;
     if (shaft_.mayBeOccluded(point, normal, patch, emitter.element)) {
-      const Vec3 y = pointOnPolygon(emitter.polygon, random.uniform(), random.uniform());
+      const Vec3 y = pointOnPolygon(emitter.polygon, light.x(), light.y());
       const double kernel = pointToPointKernel(point, normal, y, emitter.normal);
       if (kernel > 0 && !tracing_.rays().visible(point, y, element, emitter.element))
         hidden = kernel * emitter.area;
@@ -167,9 +167,14 @@ Rgb TwoPass::gather(const SurfacePoint& point, int element, const TwoPassOptions
   const int batches = std::clamp(options.batches, 1, std::max(1, options.gatherRays));
   const int perBatch = std::max(1, options.gatherRays / batches);
   const StrataGrid grid(perBatch);
+  // The hit's light sample and each secondary ray's direction and light sample are stratified over the batch
+  // too (padding), up to kPaddedRays secondary rays; they are most of the noise left at a few rays per hit.
+  constexpr int kPaddedRays = 8;
+  const int padded = 1 + 2 * std::min(options.nearRays, kPaddedRays);
   RgbMean mean;
   for (int b = 0; b < batches; ++b) {
     PairRandom random(options.seed, index, 0xffffff00u + static_cast<std::uint64_t>(b));
+    const PaddedStrata strata(perBatch, padded, random);
     Rgb sum = Rgb::Zero();
     for (int k = 0; k < perBatch; ++k) {
       const Vec2 uv = grid.sample(k, random);
@@ -184,13 +189,15 @@ Rgb TwoPass::gather(const SurfacePoint& point, int element, const TwoPassOptions
       }
       const Element& hitElement = solution_.elements[static_cast<std::size_t>(hit.element)];
       const Vec3 y = origin + hit.distance * direction;
-      const Rgb direct = directSample(y, hitElement.normal, tracing_.elementOf(hitElement.patch), random);
+      const Rgb direct = directSample(y, hitElement.normal, tracing_.elementOf(hitElement.patch),
+                                      strata.sample(0, k, random));
       // A hit closer than a few element sizes sees the element's flat indirect light at a large solid angle,
       // where it is worst (a block's lowest elements seen from the floor beside it): gather that part anew at
       // the hit point, from the solution one bounce further on.
       const bool near = hit.distance < options.nearFactor * std::sqrt(hitElement.area);
-      const Rgb indirect = near ? secondaryGather(y, hitElement.normal, hit.element, options.nearRays, random)
-                                : Rgb(indirect_.row(row).transpose().array());
+      const Rgb indirect =
+          near ? secondaryGather(y, hitElement.normal, hit.element, options.nearRays, strata, k, random)
+               : Rgb(indirect_.row(row).transpose().array());
       sum += solution_.reflectance.row(row).transpose().array() * (direct + indirect);
     }
     mean.add(sum / perBatch);
@@ -200,15 +207,25 @@ Rgb TwoPass::gather(const SurfacePoint& point, int element, const TwoPassOptions
 }
 
 Rgb TwoPass::secondaryGather(const Vec3& point, const Vec3& normal, int element, int rays,
-                             PairRandom& random) const {
+                             const PaddedStrata& strata, int path, PairRandom& random) const {
   Rgb sum = Rgb::Zero();
   for (int k = 0; k < rays; ++k) {
-    const Vec3 direction = cosineDirection(normal, random.uniform(), random.uniform());
+    const Vec2 uv = strata.sample(1 + 2 * k, path, random);
+    const Vec3 direction = cosineDirection(normal, uv.x(), uv.y());
     const RayHit hit = solutionRays_->firstHit(point, direction, element);
     if (hit.element < 0 || !hit.frontSide) continue;
     const auto row = static_cast<Eigen::Index>(hit.element);
-    sum += (B_.row(row) - solution_.emission.row(row)).transpose().array() /
-           receiving_[static_cast<std::size_t>(hit.element)];
+    const double receiving = receiving_[static_cast<std::size_t>(hit.element)];
+    if (indirect_.rows() == 0) {
+      sum += (B_.row(row) - solution_.emission.row(row)).transpose().array() / receiving;
+      continue;
+    }
+    const Element& hitElement = solution_.elements[static_cast<std::size_t>(hit.element)];
+    const Vec3 y = point + hit.distance * direction;
+    const Rgb direct = directSample(y, hitElement.normal, tracing_.elementOf(hitElement.patch),
+                                    strata.sample(2 + 2 * k, path, random));
+    sum += solution_.reflectance.row(row).transpose().array() *
+           (direct + Rgb(indirect_.row(row).transpose().array()) / receiving);
   }
   return sum / std::max(1, rays);
 }

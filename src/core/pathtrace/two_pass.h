@@ -12,8 +12,9 @@
 // rest. The direct part is then taken at the hit point itself (Lambert's formula, less a shadow ray's
 // estimate of the hidden part where something may block), so that a shadow or the light's falloff across a
 // coarse element does not smear into the gathered light. A gather hit close to the point (within a few
-// element sizes) sees its element's flat indirect light at a large solid angle, so it gathers that part anew
-// from the solution, one bounce further on (docs/pathtrace.md).
+// element sizes; every hit by default) sees its element's flat indirect light at a large solid angle, so it
+// gathers that part anew, one bounce further on, with the direct light again taken where those rays land
+// (docs/pathtrace.md).
 #pragma once
 
 #include <cstdint>
@@ -23,6 +24,7 @@
 
 #include "core/formfactor/formfactor_matrix.h"
 #include "core/formfactor/ray_scene.h"
+#include "core/formfactor/sampling.h"
 #include "core/formfactor/shaft_culling.h"
 #include "core/io/rgb_image.h"
 #include "core/pathtrace/estimate.h"
@@ -39,8 +41,10 @@ struct TwoPassOptions {
   // later, where the mesh's error is spread over the hit point's hemisphere, and the answer is unbiased with
   // respect to the mesh to well within its noise (the closed Cornell box's floor: 95 % of the values within
   // 3 sigma of the long path-traced reference, against 83 % when only hits within 2 element sizes do so).
+  // Three rays: most of the noise left is the secondary gather's (the direct light at its hit points varies
+  // most), and three balances it against the gather's own at the least cost (docs/benchmarks.md).
   double nearFactor = std::numeric_limits<double>::infinity();
-  int nearRays = 2;
+  int nearRays = 3;
   std::uint64_t seed = 1;
 };
 
@@ -75,15 +79,19 @@ class TwoPass {
  private:
   Rgb gather(const SurfacePoint& point, int element, const TwoPassOptions& options, std::uint64_t index,
              Rgb& error) const;
-  // The indirect irradiance at a point of solution element `element`: cosine rays taking B - E where they
-  // hit.
-  Rgb secondaryGather(const Vec3& point, const Vec3& normal, int element, int rays, PairRandom& random) const;
+  // The indirect irradiance at a point of solution element `element`: cosine rays from the batch's padded
+  // strata (those of path `path`) taking, where they hit, the direct light at the hit point and the element's
+  // indirect light (B - E without form factors).
+  Rgb secondaryGather(const Vec3& point, const Vec3& normal, int element, int rays,
+                      const PaddedStrata& strata, int path, PairRandom& random) const;
   // F(dA at the point -> the part of emitter element `emitter` that the patches in `blockers` hide), exactly:
   // the emitter is cut by the cones from the point over each blocker's polygons (ShadowClipper).
   double hiddenExactly(const Vec3& point, const Vec3& normal, int emitter,
                        const std::vector<int>& blockers) const;
-  // One-sample unbiased estimate of the emitters' direct irradiance at a point of tracing element `element`.
-  Rgb directSample(const Vec3& point, const Vec3& normal, int element, PairRandom& random) const;
+  // One-sample unbiased estimate of the emitters' direct irradiance at a point of tracing element `element`:
+  // Lambert's formula, less a shadow ray to the emitters' point `light` (in [0,1]^2) where something may
+  // block.
+  Rgb directSample(const Vec3& point, const Vec3& normal, int element, const Vec2& light) const;
 
   const TracingScene& tracing_;
   const Mesh& solution_;
