@@ -127,6 +127,35 @@ TEST(IrradianceCommand, ErrorEstimateCoversTheErrorAgainstALongPathTracedRun) {
   EXPECT_LT(withinNoise, 0.7 * values);  // the mesh error is what the standard errors alone miss
 }
 
+// On a coarse solution (elements of 200 mm, 161 in all) the floor's error against the stored reference is
+// mostly the solution's flat direct light, read where the secondary gather's rays land: taken at those points
+// instead (Lambert's formula and a shadow ray), the RMS falls from 1.7 % to 1.1 %.
+TEST(IrradianceCommand, CoarseSolutionsGainFromTheDirectLightAtTheSecondaryHits) {
+  const std::string dir = scratchDir("irradiance-coarse");
+  std::string log;
+  ASSERT_EQ(runCommand(cliPath() + " irradiance " + sourcePath("scenes/cornell-box-closed.json") +
+                           " --points " + sourcePath("tests/data/pathtrace/cornell-closed-floor-points.csv") +
+                           " --max-edge 200 --split-at-contacts --no-mesh-error --output " + dir + "/H.csv",
+                       &log),
+            0)
+      << log;
+  const auto a = readCsv(dir + "/H.csv");
+  const auto b = readCsv(sourcePath("tests/data/pathtrace/cornell-closed-floor-reference.csv"));
+  ASSERT_EQ(a.size(), b.size());
+  double squares = 0;
+  int values = 0;
+  for (const char* channel : {"r", "g", "b"}) {
+    const std::string H = std::string("H_") + channel;
+    const int value = column(a[0], H), reference = column(b[0], H);
+    for (std::size_t r = 1; r < a.size(); ++r) {
+      const double truth = std::stod(b[r][static_cast<std::size_t>(reference)]);
+      squares += std::pow((std::stod(a[r][static_cast<std::size_t>(value)]) - truth) / truth, 2);
+      ++values;
+    }
+  }
+  EXPECT_LT(std::sqrt(squares / values), 0.0135);
+}
+
 struct BadPoints {
   const char* text;
   const char* where;    // file:line the message must name
