@@ -18,6 +18,9 @@
 #include <vtkStaticCellLocator.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <QElapsedTimer>
+#include <QTimer>
+#include <QWheelEvent>
 
 #include <algorithm>
 #include <cstring>
@@ -51,6 +54,22 @@ SceneView::SceneView(QWidget* parent) : VtkWidget(parent) {
   actor_->VisibilityOff();
   renderer()->AddActor(actor_);
 
+  // The stand-in of a large mesh: drawn instead of actor_ while the camera moves, never picked.
+  auto standInMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  standInMapper->SetScalarModeToUsePointData();
+  standInMapper->SetColorModeToDirectScalars();
+  standInActor_ = vtkSmartPointer<vtkActor>::New();
+  standInActor_->SetMapper(standInMapper);
+  standInActor_->PickableOff();
+  standInActor_->VisibilityOff();
+  renderer()->AddActor(standInActor_);
+  settle_ = new QTimer(this);
+  settle_->setSingleShot(true);
+  settle_->setInterval(kSettleMilliseconds);
+  connect(settle_, &QTimer::timeout, this, [this] {
+    if (!dragging_) endMotion();
+  });
+
   highlightActor_ = vtkSmartPointer<vtkActor>::New();
   highlightActor_->GetProperty()->SetRepresentationToWireframe();
   highlightActor_->GetProperty()->SetColor(1.0, 0.85, 0.0);
@@ -76,12 +95,53 @@ SceneView::~SceneView() {
 }
 
 void SceneView::onCameraInteraction(vtkObject*, unsigned long event, void*) {
-  const bool still = event == vtkCommand::EndInteractionEvent;
-  renderer()->SetUseFXAA(still);
-  if (still) requestRender();
+  dragging_ = event == vtkCommand::StartInteractionEvent;
+  if (dragging_)
+    beginMotion();
+  else if (!settle_->isActive())  // a wheel step's motion lasts until the wheel rests
+    endMotion();
+}
+
+void SceneView::beginMotion() {
+  if (inMotion_) return;
+  inMotion_ = true;
+  // FXAA costs a third of a frame in a software renderer, and a moving view does not show its stairs.
+  renderer()->UseFXAAOff();
+  if (!standInData_) return;
+  // The mesh's look (lighting of the material view, culling), but neither its edges (the stand-in's
+  // triangles are not the elements) nor flat shading (its colours are means over clusters, best blended).
+  vtkProperty* property = standInActor_->GetProperty();
+  property->DeepCopy(actor_->GetProperty());
+  property->EdgeVisibilityOff();
+  property->SetInterpolationToGouraud();
+  standInActor_->VisibilityOn();
+  actor_->VisibilityOff();
+}
+
+void SceneView::endMotion() {
+  settle_->stop();
+  if (!inMotion_) return;
+  inMotion_ = false;
+  renderer()->UseFXAAOn();
+  standInActor_->VisibilityOff();
+  actor_->SetVisibility(mesh_ != nullptr);
+  requestRender();
+}
+
+void SceneView::noteCameraMotion() {
+  settle_->start();
+  beginMotion();
+}
+
+void SceneView::wheelEvent(QWheelEvent* event) {
+  // Started before the step, so that the style's EndInteractionEvent of the step leaves the motion on.
+  settle_->start();
+  VtkWidget::wheelEvent(event);
+  beginMotion();
 }
 
 void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera) {
+  endMotion();  // a new mesh starts still, drawn in full
   mesh_ = mesh;
   highlighted_.clear();
   if (!mesh_) {
@@ -91,6 +151,7 @@ void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera
     polyData_ = nullptr;
     mapper_->SetInputData(nullptr);
     actor_->VisibilityOff();
+    dropStandIn();
     highlightActor_->VisibilityOff();
     if (emitterOutline_) renderer()->RemoveActor(emitterOutline_);
     emitterOutline_ = nullptr;
@@ -186,6 +247,8 @@ void SceneView::rebuildGeometry() {
   polyData_ = viz::makeElementPolyData(*mesh_, painted);
   ++geometryBuilds_;
   mapper_->SetInputData(polyData_);
+  dropStandIn();
+  if (viz::wantsStandIn(*mesh_)) buildStandIn(painted);
   picker_ = nullptr;  // its cell locator was built on the old cells
   if (emitterOutline_) renderer()->RemoveActor(emitterOutline_);
   emitterOutline_ = nullptr;
@@ -196,8 +259,26 @@ void SceneView::rebuildGeometry() {
 void SceneView::repaint3d() {
   const viz::ScenePaint painted = paint();
   viz::updateElementColours(*polyData_, painted);
+  // The stand-in's colours are the clusters' means of the same corners: no geometry is built again.
+  if (standIn_) standIn_->recolour(*standInData_, painted);
   ++colourUpdates_;
   showColouring(painted);
+}
+
+void SceneView::buildStandIn(const viz::ScenePaint& painted) {
+  QElapsedTimer timer;
+  timer.start();
+  standIn_ = std::make_unique<viz::StandInMesh>(*mesh_);
+  standInData_ = standIn_->makePolyData(painted);
+  standInActor_->GetMapper()->SetInputDataObject(standInData_);
+  standInMilliseconds_ = static_cast<double>(timer.nsecsElapsed()) / 1e6;
+}
+
+void SceneView::dropStandIn() {
+  standIn_ = nullptr;
+  standInData_ = nullptr;
+  standInActor_->GetMapper()->SetInputDataObject(nullptr);
+  standInActor_->VisibilityOff();
 }
 
 void SceneView::showColouring(const viz::ScenePaint& painted) {
@@ -315,6 +396,11 @@ void SceneView::rebuildHighlight() {
 }
 
 void SceneView::syncCameraFrom(const SceneView& other) {
+  // The follower of compare mode moves and rests with the view the reader moves.
+  if (other.inMotion())
+    noteCameraMotion();
+  else if (!dragging_)
+    endMotion();
   renderer()->GetActiveCamera()->DeepCopy(other.renderer()->GetActiveCamera());
   fitViewAngle();
   renderer()->ResetCameraClippingRange();
@@ -325,8 +411,13 @@ vtkPolyData* SceneView::displayedPolyData() const {
   return polyData_;
 }
 
+vtkPolyData* SceneView::standInPolyData() const {
+  return standInData_;
+}
+
 int SceneView::pickElement(QPoint position) {
   if (!mesh_ || !polyData_) return -1;
+  endMotion();  // a click ends a wheel's motion: the pick sees the full mesh, never the stand-in
   if (!picker_) {
     // Without a locator the picker intersects the ray with every cell: a second at a million elements.
     // The locator is built at the first pick of a mesh (about as long as one of those linear picks) and
