@@ -1,7 +1,6 @@
 #include "app/scene_view.h"
 
 #include <vtkActor.h>
-#include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellPicker.h>
@@ -18,13 +17,12 @@
 #include <vtkStaticCellLocator.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
-#include <QElapsedTimer>
 #include <QTimer>
-#include <QWheelEvent>
 
 #include <algorithm>
 #include <cstring>
 
+#include "app/stand_in_actor.h"
 #include "viz/element_polydata.h"
 #include "viz/vtk_render.h"
 #include "viz/vtk_views.h"
@@ -54,15 +52,7 @@ SceneView::SceneView(QWidget* parent) : VtkWidget(parent) {
   actor_->VisibilityOff();
   renderer()->AddActor(actor_);
 
-  // The stand-in of a large mesh: drawn instead of actor_ while the camera moves, never picked.
-  auto standInMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  standInMapper->SetScalarModeToUsePointData();
-  standInMapper->SetColorModeToDirectScalars();
-  standInActor_ = vtkSmartPointer<vtkActor>::New();
-  standInActor_->SetMapper(standInMapper);
-  standInActor_->PickableOff();
-  standInActor_->VisibilityOff();
-  renderer()->AddActor(standInActor_);
+  standIn_ = std::make_unique<StandInActor>(*renderer());
   settle_ = new QTimer(this);
   settle_->setSingleShot(true);
   settle_->setInterval(kSettleMilliseconds);
@@ -94,52 +84,6 @@ SceneView::~SceneView() {
   for (unsigned long tag : styleObservers_) interactor()->GetInteractorStyle()->RemoveObserver(tag);
 }
 
-void SceneView::onCameraInteraction(vtkObject*, unsigned long event, void*) {
-  dragging_ = event == vtkCommand::StartInteractionEvent;
-  if (dragging_)
-    beginMotion();
-  else if (!settle_->isActive())  // a wheel step's motion lasts until the wheel rests
-    endMotion();
-}
-
-void SceneView::beginMotion() {
-  if (inMotion_) return;
-  inMotion_ = true;
-  // FXAA costs a third of a frame in a software renderer, and a moving view does not show its stairs.
-  renderer()->UseFXAAOff();
-  if (!standInData_) return;
-  // The mesh's look (lighting of the material view, culling), but neither its edges (the stand-in's
-  // triangles are not the elements) nor flat shading (its colours are means over clusters, best blended).
-  vtkProperty* property = standInActor_->GetProperty();
-  property->DeepCopy(actor_->GetProperty());
-  property->EdgeVisibilityOff();
-  property->SetInterpolationToGouraud();
-  standInActor_->VisibilityOn();
-  actor_->VisibilityOff();
-}
-
-void SceneView::endMotion() {
-  settle_->stop();
-  if (!inMotion_) return;
-  inMotion_ = false;
-  renderer()->UseFXAAOn();
-  standInActor_->VisibilityOff();
-  actor_->SetVisibility(mesh_ != nullptr);
-  requestRender();
-}
-
-void SceneView::noteCameraMotion() {
-  settle_->start();
-  beginMotion();
-}
-
-void SceneView::wheelEvent(QWheelEvent* event) {
-  // Started before the step, so that the style's EndInteractionEvent of the step leaves the motion on.
-  settle_->start();
-  VtkWidget::wheelEvent(event);
-  beginMotion();
-}
-
 void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera) {
   endMotion();  // a new mesh starts still, drawn in full
   mesh_ = mesh;
@@ -151,7 +95,7 @@ void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera
     polyData_ = nullptr;
     mapper_->SetInputData(nullptr);
     actor_->VisibilityOff();
-    dropStandIn();
+    standIn_->rebuild(nullptr, {});
     highlightActor_->VisibilityOff();
     if (emitterOutline_) renderer()->RemoveActor(emitterOutline_);
     emitterOutline_ = nullptr;
@@ -169,17 +113,6 @@ void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera
 void SceneView::setScene(const Mesh* mesh, const RgbField& B, const Camera& camera, bool resetCamera) {
   data_.B = B;
   setMesh(mesh, camera, resetCamera);
-}
-
-void SceneView::applyCamera(const Camera& c) {
-  vtkCamera* camera = renderer()->GetActiveCamera();
-  camera->SetPosition(c.position.data());
-  camera->SetFocalPoint(c.target.data());
-  camera->SetViewUp(c.up.data());
-  camera->SetViewAngle(c.fovYDegrees);
-  fitViewAngle();
-  renderer()->ResetCameraClippingRange();
-  requestRender();
 }
 
 void SceneView::setRadiosity(const RgbField& B) {
@@ -247,8 +180,7 @@ void SceneView::rebuildGeometry() {
   polyData_ = viz::makeElementPolyData(*mesh_, painted);
   ++geometryBuilds_;
   mapper_->SetInputData(polyData_);
-  dropStandIn();
-  if (viz::wantsStandIn(*mesh_)) buildStandIn(painted);
+  standIn_->rebuild(mesh_, painted);
   picker_ = nullptr;  // its cell locator was built on the old cells
   if (emitterOutline_) renderer()->RemoveActor(emitterOutline_);
   emitterOutline_ = nullptr;
@@ -260,25 +192,9 @@ void SceneView::repaint3d() {
   const viz::ScenePaint painted = paint();
   viz::updateElementColours(*polyData_, painted);
   // The stand-in's colours are the clusters' means of the same corners: no geometry is built again.
-  if (standIn_) standIn_->recolour(*standInData_, painted);
+  standIn_->recolour(painted);
   ++colourUpdates_;
   showColouring(painted);
-}
-
-void SceneView::buildStandIn(const viz::ScenePaint& painted) {
-  QElapsedTimer timer;
-  timer.start();
-  standIn_ = std::make_unique<viz::StandInMesh>(*mesh_);
-  standInData_ = standIn_->makePolyData(painted);
-  standInActor_->GetMapper()->SetInputDataObject(standInData_);
-  standInMilliseconds_ = static_cast<double>(timer.nsecsElapsed()) / 1e6;
-}
-
-void SceneView::dropStandIn() {
-  standIn_ = nullptr;
-  standInData_ = nullptr;
-  standInActor_->GetMapper()->SetInputDataObject(nullptr);
-  standInActor_->VisibilityOff();
 }
 
 void SceneView::showColouring(const viz::ScenePaint& painted) {
@@ -304,16 +220,6 @@ void SceneView::showColouring(const viz::ScenePaint& painted) {
   }
 }
 
-Camera SceneView::currentCamera() const {
-  vtkCamera* camera = renderer()->GetActiveCamera();
-  Camera c;
-  camera->GetPosition(c.position.data());
-  camera->GetFocalPoint(c.target.data());
-  camera->GetViewUp(c.up.data());
-  c.fovYDegrees = camera->GetViewAngle();
-  return c;
-}
-
 void SceneView::setShowEdges(bool show) {
   showEdges_ = show;
   options_.image.showEdges = show;
@@ -331,18 +237,6 @@ void SceneView::resizeEvent(QResizeEvent* event) {
   VtkWidget::resizeEvent(event);
   fitCaption();
   fitViewAngle();
-}
-
-void SceneView::fitViewAngle() {
-  // A step's camera frames the scene for a roughly square view, its angle measured along the height. A pane
-  // narrower than it is tall (each of compare mode's two) would then show only the middle of the room: it
-  // takes the same angle across its width instead, so the whole framing stays in view.
-  if (width() <= 0 || height() <= 0) return;
-  vtkCamera* camera = renderer()->GetActiveCamera();
-  const bool narrow = width() < height();
-  if (camera->GetUseHorizontalViewAngle() == narrow) return;
-  camera->SetUseHorizontalViewAngle(narrow);
-  requestRender();
 }
 
 void SceneView::fitCaption() {
@@ -395,24 +289,16 @@ void SceneView::rebuildHighlight() {
   highlightActor_->VisibilityOn();
 }
 
-void SceneView::syncCameraFrom(const SceneView& other) {
-  // The follower of compare mode moves and rests with the view the reader moves.
-  if (other.inMotion())
-    noteCameraMotion();
-  else if (!dragging_)
-    endMotion();
-  renderer()->GetActiveCamera()->DeepCopy(other.renderer()->GetActiveCamera());
-  fitViewAngle();
-  renderer()->ResetCameraClippingRange();
-  requestRender();
-}
-
 vtkPolyData* SceneView::displayedPolyData() const {
   return polyData_;
 }
 
 vtkPolyData* SceneView::standInPolyData() const {
-  return standInData_;
+  return standIn_->polyData();
+}
+
+double SceneView::standInBuildMilliseconds() const {
+  return standIn_->buildMilliseconds();
 }
 
 int SceneView::pickElement(QPoint position) {

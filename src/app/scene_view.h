@@ -11,7 +11,6 @@
 #include "app/vtk_widget.h"
 #include "core/scene.h"
 #include "viz/scene_view.h"
-#include "viz/stand_in_mesh.h"
 
 class QTimer;
 class vtkActor;
@@ -23,6 +22,8 @@ class vtkScalarBarActor;
 class vtkTextActor;
 
 namespace rt::app {
+
+class StandInActor;
 
 class SceneView : public VtkWidget {
   Q_OBJECT
@@ -72,7 +73,7 @@ class SceneView : public VtkWidget {
   // The coarse stand-in drawn while the camera moves (null for a mesh below the threshold), and how long
   // its clustering took (once per mesh).
   vtkPolyData* standInPolyData() const;
-  double standInBuildMilliseconds() const { return standInMilliseconds_; }
+  double standInBuildMilliseconds() const;
   // Whether the camera is moving now (the stand-in, when there is one, is what gets drawn).
   bool inMotion() const { return inMotion_; }
   // The camera moves without a drag (a walkthrough frame, a wheel step): the stand-in is drawn until the
@@ -93,8 +94,6 @@ class SceneView : public VtkWidget {
   // The moving frames: the stand-in instead of the mesh, no FXAA; the still frame: the mesh, FXAA.
   void beginMotion();
   void endMotion();
-  void buildStandIn(const viz::ScenePaint& painted);
-  void dropStandIn();
   void rebuildHighlight();
   // The caption's font shrinks (down to a floor) so that it fits a narrow pane, as in compare mode.
   void fitCaption();
@@ -114,10 +113,7 @@ class SceneView : public VtkWidget {
   vtkSmartPointer<vtkPolyDataMapper> mapper_;
   vtkSmartPointer<vtkActor> actor_;
   std::unique_ptr<viz::SmoothInterpolation> smoothing_;  // of mesh_, once a smooth view asked for it
-  std::unique_ptr<viz::StandInMesh> standIn_;            // of mesh_, when it is large
-  vtkSmartPointer<vtkPolyData> standInData_;
-  vtkSmartPointer<vtkActor> standInActor_;
-  double standInMilliseconds_ = 0.0;
+  std::unique_ptr<StandInActor> standIn_;                // of mesh_, when it is large
   bool inMotion_ = false;
   bool dragging_ = false;
   QTimer* settle_ = nullptr;               // the end of a motion without a drag

@@ -27,6 +27,7 @@
 #include "core/io/scene_loader.h"
 #include "core/mesh.h"
 #include "support/test_paths.h"
+#include "viz/stand_in_mesh.h"
 
 using namespace rt;
 using namespace rt::app;
