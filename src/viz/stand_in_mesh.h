@@ -33,7 +33,8 @@ namespace rt::viz {
 // than about 35 ms on the software renderer (the 50k-element museum, 100k triangles: 25 ms with the window),
 // and a small scene must look and behave exactly as it always did.
 constexpr std::size_t kStandInAboveTriangles = 200'000;
-// About the stand-in's size: some 30 ms a frame in the app under llvmpipe, whatever the mesh's size.
+// The stand-in's size: about 26 ms a frame in the app under llvmpipe (docs/benchmarks.md), whatever the
+// mesh's size.
 constexpr std::size_t kStandInTargetTriangles = 120'000;
 
 // The triangles a renderer draws for the mesh (an n-gon element is n - 2 of them).
