@@ -199,6 +199,7 @@ void MainWindow::buildUi() {
   });
   connect(player_, &IterationPlayer::currentChanged, this, &MainWindow::showIteration);
   connect(pathPlayer_, &CameraPathPlayer::cameraChanged, this, [this](const Camera& camera) {
+    primaryView_->noteCameraMotion();  // a flight is drawn with the stand-in of a large mesh
     primaryView_->applyCamera(camera);
     if (compare_) secondaryView_->syncCameraFrom(*primaryView_);
   });

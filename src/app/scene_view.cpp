@@ -1,7 +1,6 @@
 #include "app/scene_view.h"
 
 #include <vtkActor.h>
-#include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellPicker.h>
@@ -18,10 +17,12 @@
 #include <vtkStaticCellLocator.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <QTimer>
 
 #include <algorithm>
 #include <cstring>
 
+#include "app/stand_in_actor.h"
 #include "viz/element_polydata.h"
 #include "viz/vtk_render.h"
 #include "viz/vtk_views.h"
@@ -51,6 +52,14 @@ SceneView::SceneView(QWidget* parent) : VtkWidget(parent) {
   actor_->VisibilityOff();
   renderer()->AddActor(actor_);
 
+  standIn_ = std::make_unique<StandInActor>(*renderer());
+  settle_ = new QTimer(this);
+  settle_->setSingleShot(true);
+  settle_->setInterval(kSettleMilliseconds);
+  connect(settle_, &QTimer::timeout, this, [this] {
+    if (!dragging_) endMotion();
+  });
+
   highlightActor_ = vtkSmartPointer<vtkActor>::New();
   highlightActor_->GetProperty()->SetRepresentationToWireframe();
   highlightActor_->GetProperty()->SetColor(1.0, 0.85, 0.0);
@@ -75,13 +84,8 @@ SceneView::~SceneView() {
   for (unsigned long tag : styleObservers_) interactor()->GetInteractorStyle()->RemoveObserver(tag);
 }
 
-void SceneView::onCameraInteraction(vtkObject*, unsigned long event, void*) {
-  const bool still = event == vtkCommand::EndInteractionEvent;
-  renderer()->SetUseFXAA(still);
-  if (still) requestRender();
-}
-
 void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera) {
+  endMotion();  // a new mesh starts still, drawn in full
   mesh_ = mesh;
   highlighted_.clear();
   if (!mesh_) {
@@ -91,6 +95,7 @@ void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera
     polyData_ = nullptr;
     mapper_->SetInputData(nullptr);
     actor_->VisibilityOff();
+    standIn_->rebuild(nullptr, {});
     highlightActor_->VisibilityOff();
     if (emitterOutline_) renderer()->RemoveActor(emitterOutline_);
     emitterOutline_ = nullptr;
@@ -108,17 +113,6 @@ void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera
 void SceneView::setScene(const Mesh* mesh, const RgbField& B, const Camera& camera, bool resetCamera) {
   data_.B = B;
   setMesh(mesh, camera, resetCamera);
-}
-
-void SceneView::applyCamera(const Camera& c) {
-  vtkCamera* camera = renderer()->GetActiveCamera();
-  camera->SetPosition(c.position.data());
-  camera->SetFocalPoint(c.target.data());
-  camera->SetViewUp(c.up.data());
-  camera->SetViewAngle(c.fovYDegrees);
-  fitViewAngle();
-  renderer()->ResetCameraClippingRange();
-  requestRender();
 }
 
 void SceneView::setRadiosity(const RgbField& B) {
@@ -186,6 +180,7 @@ void SceneView::rebuildGeometry() {
   polyData_ = viz::makeElementPolyData(*mesh_, painted);
   ++geometryBuilds_;
   mapper_->SetInputData(polyData_);
+  standIn_->rebuild(mesh_, painted);
   picker_ = nullptr;  // its cell locator was built on the old cells
   if (emitterOutline_) renderer()->RemoveActor(emitterOutline_);
   emitterOutline_ = nullptr;
@@ -196,6 +191,8 @@ void SceneView::rebuildGeometry() {
 void SceneView::repaint3d() {
   const viz::ScenePaint painted = paint();
   viz::updateElementColours(*polyData_, painted);
+  // The stand-in's colours are the clusters' means of the same corners: no geometry is built again.
+  standIn_->recolour(painted);
   ++colourUpdates_;
   showColouring(painted);
 }
@@ -223,16 +220,6 @@ void SceneView::showColouring(const viz::ScenePaint& painted) {
   }
 }
 
-Camera SceneView::currentCamera() const {
-  vtkCamera* camera = renderer()->GetActiveCamera();
-  Camera c;
-  camera->GetPosition(c.position.data());
-  camera->GetFocalPoint(c.target.data());
-  camera->GetViewUp(c.up.data());
-  c.fovYDegrees = camera->GetViewAngle();
-  return c;
-}
-
 void SceneView::setShowEdges(bool show) {
   showEdges_ = show;
   options_.image.showEdges = show;
@@ -250,18 +237,6 @@ void SceneView::resizeEvent(QResizeEvent* event) {
   VtkWidget::resizeEvent(event);
   fitCaption();
   fitViewAngle();
-}
-
-void SceneView::fitViewAngle() {
-  // A step's camera frames the scene for a roughly square view, its angle measured along the height. A pane
-  // narrower than it is tall (each of compare mode's two) would then show only the middle of the room: it
-  // takes the same angle across its width instead, so the whole framing stays in view.
-  if (width() <= 0 || height() <= 0) return;
-  vtkCamera* camera = renderer()->GetActiveCamera();
-  const bool narrow = width() < height();
-  if (camera->GetUseHorizontalViewAngle() == narrow) return;
-  camera->SetUseHorizontalViewAngle(narrow);
-  requestRender();
 }
 
 void SceneView::fitCaption() {
@@ -314,19 +289,21 @@ void SceneView::rebuildHighlight() {
   highlightActor_->VisibilityOn();
 }
 
-void SceneView::syncCameraFrom(const SceneView& other) {
-  renderer()->GetActiveCamera()->DeepCopy(other.renderer()->GetActiveCamera());
-  fitViewAngle();
-  renderer()->ResetCameraClippingRange();
-  requestRender();
-}
-
 vtkPolyData* SceneView::displayedPolyData() const {
   return polyData_;
 }
 
+vtkPolyData* SceneView::standInPolyData() const {
+  return standIn_->polyData();
+}
+
+double SceneView::standInBuildMilliseconds() const {
+  return standIn_->buildMilliseconds();
+}
+
 int SceneView::pickElement(QPoint position) {
   if (!mesh_ || !polyData_) return -1;
+  endMotion();  // a click ends a wheel's motion: the pick sees the full mesh, never the stand-in
   if (!picker_) {
     // Without a locator the picker intersects the ray with every cell: a second at a million elements.
     // The locator is built at the first pick of a mesh (about as long as one of those linear picks) and

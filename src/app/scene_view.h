@@ -1,6 +1,8 @@
 // The 3D view of a solved scene: elements coloured by radiosity, optional mesh edges, highlighted elements,
 // and picking (a click names the element under the cursor). Two of them side by side make the compare mode;
-// they share a camera through syncCameraFrom().
+// they share a camera through syncCameraFrom(). A large mesh (viz::wantsStandIn) is drawn as a coarse
+// stand-in with the same colours while the camera moves (a drag, the wheel, a walkthrough), and in full on
+// the still frame after the motion (viz/stand_in_mesh.h).
 #pragma once
 
 #include <memory>
@@ -10,6 +12,7 @@
 #include "core/scene.h"
 #include "viz/scene_view.h"
 
+class QTimer;
 class vtkActor;
 class vtkObject;
 class vtkCellPicker;
@@ -19,6 +22,8 @@ class vtkScalarBarActor;
 class vtkTextActor;
 
 namespace rt::app {
+
+class StandInActor;
 
 class SceneView : public VtkWidget {
   Q_OBJECT
@@ -65,16 +70,30 @@ class SceneView : public VtkWidget {
   int colourUpdates() const { return colourUpdates_; }
   // The cells drawn (one per element).
   vtkPolyData* displayedPolyData() const;
+  // The coarse stand-in drawn while the camera moves (null for a mesh below the threshold), and how long
+  // its clustering took (once per mesh).
+  vtkPolyData* standInPolyData() const;
+  double standInBuildMilliseconds() const;
+  // Whether the camera is moving now (the stand-in, when there is one, is what gets drawn).
+  bool inMotion() const { return inMotion_; }
+  // The camera moves without a drag (a walkthrough frame, a wheel step): the stand-in is drawn until the
+  // camera has rested for kSettleMilliseconds.
+  void noteCameraMotion();
+  static constexpr int kSettleMilliseconds = 250;
 
  signals:
   void elementPicked(int element);
 
  protected:
   void resizeEvent(QResizeEvent* event) override;
+  void wheelEvent(QWheelEvent* event) override;
 
  private:
-  // FXAA off while the camera is dragged, on again for the still frame.
+  // A drag begins or ends (the interactor style's Start/EndInteractionEvent).
   void onCameraInteraction(vtkObject* caller, unsigned long event, void* data);
+  // The moving frames: the stand-in instead of the mesh, no FXAA; the still frame: the mesh, FXAA.
+  void beginMotion();
+  void endMotion();
   void rebuildHighlight();
   // The caption's font shrinks (down to a floor) so that it fits a narrow pane, as in compare mode.
   void fitCaption();
@@ -94,6 +113,10 @@ class SceneView : public VtkWidget {
   vtkSmartPointer<vtkPolyDataMapper> mapper_;
   vtkSmartPointer<vtkActor> actor_;
   std::unique_ptr<viz::SmoothInterpolation> smoothing_;  // of mesh_, once a smooth view asked for it
+  std::unique_ptr<StandInActor> standIn_;                // of mesh_, when it is large
+  bool inMotion_ = false;
+  bool dragging_ = false;
+  QTimer* settle_ = nullptr;               // the end of a motion without a drag
   vtkSmartPointer<vtkCellPicker> picker_;  // with a cell locator over polyData_, built at the first pick
   unsigned long styleObservers_[2] = {0, 0};
   int geometryBuilds_ = 0;
