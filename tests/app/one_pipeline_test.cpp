@@ -112,5 +112,7 @@ TEST(OnePipeline, ASweepSetsTheKnobTheMethodReads) {
   EXPECT_EQ(rt::lesson::formFactorOptionsFor(q, "quadrature", 0).tolerance, 1e-3);
   EXPECT_EQ(rt::lesson::formFactorOptionsFor(p, "quadrature", 0).tolerance, 0.0);  // the method's own
   EXPECT_DOUBLE_EQ(rt::accuracyKnobOf("exact").applied({}, 1e-4).tolerance,
-                   rt::accuracyKnobOf("exact").field == rt::AccuracyKnob::Field::Tolerance ? 1e-4 : 1e-9);
+                   rt::accuracyKnobOf("exact").field == rt::AccuracyKnob::Field::Tolerance
+                       ? 1e-4
+                       : rt::FormFactorOptions{}.tolerance);
 }
