@@ -34,8 +34,8 @@ struct SolveOutcome {
   double error = 0;     // the solver's own final error (its stopping measure)
   double residual = 0;  // relative residual ||K B - E|| / ||E|| of the returned B (without F: error)
   double seconds = 0;
-  // Stochastic solvers: the per-element standard error of B (n x 3; empty otherwise), its norm relative to
-  // ||B||, and the rays used.
+  // Stochastic solvers: the per-element standard error of B (n x 3; empty otherwise), its area-weighted
+  // RMS relative to that of B, and the rays used.
   RgbField standardErrors;
   double standardError = 0;
   long rays = 0;

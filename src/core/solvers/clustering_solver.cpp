@@ -185,10 +185,6 @@ RgbField ambientGuess(const RadiositySystem& system) {
   return guess;
 }
 
-double areaRms(const RgbField& field, const Eigen::VectorXd& areas) {
-  return std::sqrt(field.rowwise().squaredNorm().dot(areas) / areas.sum());
-}
-
 }  // namespace
 
 double defaultClusterTolerance() {
@@ -252,8 +248,7 @@ SolverStatus hierarchicalClustering(const RadiositySystem& system, RgbField& B, 
         const Row tail = change.cwiseAbs().colwise().maxCoeff() * (q / (1.0 - q)) + rounding;
         RgbField estimate = round == 1 ? RgbField(2.0 * (B - first).cwiseAbs()) : RgbField::Zero(B.rows(), 3);
         estimate.rowwise() += tail;
-        const double b = areaRms(B, system.areas);
-        rec.standardError = b > 0 ? areaRms(estimate, system.areas) / b : 0.0;
+        rec.standardError = relativeAreaRms(estimate, B, system.areas);
         if (errorEstimate) *errorEstimate = std::move(estimate);
       }
       if (sink) sink(std::move(rec));

@@ -63,11 +63,6 @@ Source sourceOf(const Mesh& mesh, Eigen::Index j) {
   return s;
 }
 
-double relativeNorm(const RgbField& standardError, const RgbField& B) {
-  const double b = B.norm();
-  return b > 0 ? standardError.norm() / b : standardError.norm();
-}
-
 }  // namespace
 
 long localLinesDefaultRays(std::size_t elements) {
@@ -174,7 +169,7 @@ SolverStatus localLines(const RadiositySystem& system, RgbField& B, const Solver
     rec.absorbedPower = absorbed;
     rec.escapedPower = escaped;
     rec.residual = eNorm > 0 ? unshot.norm() / eNorm : unshot.norm();
-    rec.standardError = relativeNorm(variance.cwiseSqrt(), B);
+    rec.standardError = relativeAreaRms(variance.cwiseSqrt(), B, A);
     rec.rays = raysSoFar;
     rec.seconds = clock.seconds();
     const bool done = rec.unshotPower <= options.tolerance * emitted;

@@ -14,8 +14,8 @@
 // at least 100,000); it stops when the unshot power is <= options.tolerance times the emitted power.
 //
 // The standard error of B is estimated per element from each iteration's independent rays, as
-// stochastic-jacobi does; the recorded residual is ||unshot|| / ||E|| (the residual of B - unshot), the exact
-// one needing F.
+// stochastic-jacobi does, and recorded as its area-weighted RMS relative to that of B; the recorded residual
+// is ||unshot|| / ||E|| (the residual of B - unshot), the exact one needing F.
 //
 // Deterministic for options.seed at any thread count: rays are cut into fixed chunks, each with its own
 // random stream seeded from (seed, iteration, chunk), and the scores are added in 2^-32 fixed point, whose

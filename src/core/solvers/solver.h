@@ -58,9 +58,9 @@ struct IterationRecord {
   double seconds = 0;  // since solve() started
   double escapedPower =
       0;  // power that left through openings (sum B_i A_i (1 - sum_j F_ij)); shooting: so far
-  double standardError =
-      0;          // stochastic methods: RMS of the per-element standard error of B, relative to ||B||
-  long rays = 0;  // stochastic methods: rays (or walks) used so far
+  double standardError = 0;  // stochastic methods: area-weighted RMS of the per-element standard error of
+                             // B, relative to that of B (solver_detail::relativeAreaRms)
+  long rays = 0;             // stochastic methods: rays (or walks) used so far
   // Hierarchical methods: links, nodes, and the bytes they hold (counted from the containers, at the peak).
   long links = 0;
   long nodes = 0;

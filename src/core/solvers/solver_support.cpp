@@ -39,6 +39,11 @@ IterationRecord gatherRecord(const RadiositySystem& system, const RgbField& B, i
   return r;
 }
 
+double relativeAreaRms(const RgbField& error, const RgbField& B, const Eigen::VectorXd& areas) {
+  const double e = error.rowwise().squaredNorm().dot(areas), b = B.rowwise().squaredNorm().dot(areas);
+  return b > 0 ? std::sqrt(e / b) : std::sqrt(e / areas.sum());
+}
+
 std::size_t sampleCumulative(const std::vector<double>& cumulative, double target) {
   return static_cast<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), target) -
                                   cumulative.begin());

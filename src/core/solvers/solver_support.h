@@ -22,6 +22,13 @@ IterationRecord gatherRecord(const RadiositySystem& system, const RgbField& B, i
 // Sum over channels of E_i A_i.
 double totalEmittedPower(const RadiositySystem& system);
 
+// sqrt(sum_i A_i |error_i|^2 / sum_i A_i |B_i|^2) (|.| over the channels; the absolute area-weighted RMS when
+// B is zero): how every solver's estimated error is reported, and the measure the benchmarks apply to the
+// actual error (scenes/tools/radiosity_error.py). Unweighted, each element would count the same whatever its
+// size, and on an unevenly meshed scene the many small, noisy elements would stand in for the few large ones
+// that hold most of the area: on the museum that reported two thirds of the error measured by area.
+double relativeAreaRms(const RgbField& error, const RgbField& B, const Eigen::VectorXd& areas);
+
 // True when element i reflects nothing in any channel: it gathers nothing and never needs updating.
 inline bool isBlack(const RadiositySystem& system, Eigen::Index i) {
   return (system.reflectance.row(i).array() == 0.0).all();

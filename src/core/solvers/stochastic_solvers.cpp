@@ -37,11 +37,6 @@ long defaultRays(const RadiositySystem& system, const SolverOptions& options) {
                                       : std::max<long>(1000, 100 * (long)system.size());
 }
 
-double relativeNorm(const RgbField& standardError, const RgbField& B) {
-  const double b = B.norm();
-  return b > 0 ? standardError.norm() / b : standardError.norm();
-}
-
 }  // namespace
 
 SolverStatus stochasticJacobi(const RadiositySystem& system, RgbField& B, const SolverOptions& options,
@@ -116,7 +111,7 @@ SolverStatus stochasticJacobi(const RadiositySystem& system, RgbField& B, const 
     rec.absorbedPower = absorbed;
     rec.escapedPower = escaped;
     rec.residual = system.relativeResidual(B);
-    rec.standardError = relativeNorm(variance.cwiseSqrt(), B);
+    rec.standardError = relativeAreaRms(variance.cwiseSqrt(), B, A);
     rec.rays = raysSoFar;
     rec.seconds = clock.seconds();
     const bool done = rec.unshotPower <= options.tolerance * emitted;
@@ -215,7 +210,7 @@ SolverStatus randomWalk(const RadiositySystem& system, RgbField& B, const Solver
     rec.absorbedPower = absorbed / W;
     rec.escapedPower = escaped / W;
     rec.residual = system.relativeResidual(B);
-    rec.standardError = relativeNorm(se, B);
+    rec.standardError = relativeAreaRms(se, B, A);
     rec.rays = walks;
     rec.seconds = clock.seconds();
     const bool done = rec.standardError <= options.tolerance;
