@@ -133,6 +133,7 @@ void ParameterPanel::addRow(const StepKey& key) {
     spin->setRange(key.min, std::min(key.max, 1e6));
     spin->setDecimals(key.decimals);
     spin->setSingleStep(key.step);
+    if (!key.zeroText.empty()) spin->setSpecialValueText(tr(key.zeroText.c_str()));
     connect(spin, &QDoubleSpinBox::valueChanged, this, changed);
     editor = spin;
   } else if (key.type == KeyType::Bool) {
@@ -152,6 +153,8 @@ void ParameterPanel::addRow(const StepKey& key) {
   } else {
     // Tolerances (decades apart) and names are typed; Enter or leaving the field applies them.
     auto* line = new QLineEdit(this);
+    // 0 shows as the choice it stands for (an empty field with that text greyed), not as a tolerance of 0.
+    if (!key.zeroText.empty()) line->setPlaceholderText(tr(key.zeroText.c_str()));
     connect(line, &QLineEdit::editingFinished, this, changed);
     editor = line;
   }
@@ -251,7 +254,9 @@ void ParameterPanel::showValue(const Row& row) {
     const int i = box->findText(text);
     if (i >= 0) box->setCurrentIndex(i);
   } else if (auto* line = qobject_cast<QLineEdit*>(row.editor)) {
-    line->setText(text);
+    bool number = false;
+    const double v = text.toDouble(&number);
+    line->setText(!key.zeroText.empty() && number && v == 0 ? QString() : text);
   }
 }
 

@@ -115,6 +115,7 @@ std::vector<StepKey> makeTable() {
                   "than 1e-6). 0 is the method's own: quadrature 1e-5, exact 1e-9.",
        .control = true,
        .logScale = true,
+       .zeroText = "the method's own",
        .stages = computeF,
        .slot = &P::formFactorTolerance});
   add({.name = "seed",

@@ -47,7 +47,7 @@ struct StepKey {
   bool logScale = false;      // Double spanning decades (tolerances): typed, not spun
   int decimals = 2;           // Double widgets
   double step = 1;            // Int and Double widgets: the arrow keys' step
-  std::string zeroText;       // Int keys where 0 stands for a choice made for the reader (e.g. "automatic")
+  std::string zeroText;       // numeric keys where 0 stands for a choice made for the reader ("automatic")
   std::vector<Stage> stages;  // empty: every stage that computes something
   ParameterSlot slot;
 

@@ -104,6 +104,30 @@ TEST(ParameterControls, TheHemicubeResolutionTakesEffect) {
       << window->result()->formFactorStats.notes;
 }
 
+// The form factors' tolerance: a typed field whose 0 reads as the method's own (empty, with that text greyed)
+// and whose typed value reaches the quadrature method.
+TEST(ParameterControls, TheFormFactorToleranceReachesTheQuadratureMethod) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  ASSERT_TRUE(window->openScene(QString()));
+  auto* method = qobject_cast<QComboBox*>(window->parameterPanel()->editor("method"));
+  ASSERT_NE(method, nullptr);
+  method->setFocus();
+  QTest::keyClicks(method, "quadrature");
+  test::waitForApply();
+  ASSERT_EQ(window->result()->formFactorMethod, "quadrature");
+  auto* field = qobject_cast<QLineEdit*>(window->parameterPanel()->editor("ff-tolerance"));
+  ASSERT_NE(field, nullptr);
+  EXPECT_TRUE(field->text().isEmpty());
+  EXPECT_EQ(field->placeholderText(), "the method's own");
+  EXPECT_NE(window->result()->formFactorStats.notes.find("absolute tolerance 1e-05"), std::string::npos)
+      << window->result()->formFactorStats.notes;
+  test::typeInto(field, "1e-3");
+  EXPECT_EQ(window->parameterPanel()->parameters().formFactorTolerance.value_or(0), 1e-3);
+  EXPECT_NE(window->result()->formFactorStats.notes.find("absolute tolerance 0.001"), std::string::npos)
+      << window->result()->formFactorStats.notes;
+}
+
 // A check box (smooth shading) changes what the view shows, not the numbers.
 TEST(ParameterControls, ACheckBoxChangesTheView) {
   RT_REQUIRE_DISPLAY();
