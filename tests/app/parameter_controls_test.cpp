@@ -71,6 +71,15 @@ void nudge(QWidget* editor, const std::string& key) {
   test::waitForApply();
 }
 
+// Picks a form-factor method in the panel's combo box by typing its name, as a reader does.
+void chooseMethod(MainWindow& window, const char* name) {
+  auto* method = qobject_cast<QComboBox*>(window.parameterPanel()->editor("method"));
+  ASSERT_NE(method, nullptr);
+  method->setFocus();
+  QTest::keyClicks(method, name);  // typing selects the item, as in any combo box
+  test::waitForApply();
+}
+
 }  // namespace
 
 // The light's spin box: typed, the light doubles and so does B, and F is reused.
@@ -89,11 +98,7 @@ TEST(ParameterControls, TheHemicubeResolutionTakesEffect) {
   RT_REQUIRE_DISPLAY();
   auto window = test::makeWindow();
   ASSERT_TRUE(window->openScene(QString()));
-  auto* method = qobject_cast<QComboBox*>(window->parameterPanel()->editor("method"));
-  ASSERT_NE(method, nullptr);
-  method->setFocus();
-  QTest::keyClicks(method, "hemicube");  // typing selects the item, as in any combo box
-  test::waitForApply();
+  chooseMethod(*window, "hemicube");
   ASSERT_EQ(window->result()->formFactorMethod, "hemicube");
   const int computed = static_cast<int>(window->result()->formFactorStats.elements);
   test::typeInto(window->parameterPanel()->editor("resolution"), "16");
@@ -110,11 +115,7 @@ TEST(ParameterControls, TheFormFactorToleranceReachesTheQuadratureMethod) {
   RT_REQUIRE_DISPLAY();
   auto window = test::makeWindow();
   ASSERT_TRUE(window->openScene(QString()));
-  auto* method = qobject_cast<QComboBox*>(window->parameterPanel()->editor("method"));
-  ASSERT_NE(method, nullptr);
-  method->setFocus();
-  QTest::keyClicks(method, "quadrature");
-  test::waitForApply();
+  chooseMethod(*window, "quadrature");
   ASSERT_EQ(window->result()->formFactorMethod, "quadrature");
   auto* field = qobject_cast<QLineEdit*>(window->parameterPanel()->editor("ff-tolerance"));
   ASSERT_NE(field, nullptr);

@@ -89,6 +89,15 @@ TEST(IrradianceCommand, TwoPassAgreesWithThePathTracer) {
   }
 }
 
+// `irradiance` at the points of the stored path-traced reference on the closed Cornell box's floor
+// (tests/data/pathtrace), with `settings`, into DIR/H.csv; the exit status.
+int runOnTheClosedBoxFloor(const std::string& settings, const std::string& dir, std::string* log) {
+  return runCommand(cliPath() + " irradiance " + sourcePath("scenes/cornell-box-closed.json") + " --points " +
+                        sourcePath("tests/data/pathtrace/cornell-closed-floor-points.csv") + " " + settings +
+                        " --output " + dir + "/H.csv",
+                    log);
+}
+
 // The error estimate against the stored long path-traced reference on the closed Cornell box's floor
 // (tests/data/pathtrace), on a coarse mesh (elements across the blocks' footprints): the Monte Carlo standard
 // errors alone leave out the solution's mesh error, which is most of the error there; with the mesh-error
@@ -96,12 +105,7 @@ TEST(IrradianceCommand, TwoPassAgreesWithThePathTracer) {
 TEST(IrradianceCommand, ErrorEstimateCoversTheErrorAgainstALongPathTracedRun) {
   const std::string dir = scratchDir("irradiance-covers");
   std::string log;
-  ASSERT_EQ(runCommand(cliPath() + " irradiance " + sourcePath("scenes/cornell-box-closed.json") +
-                           " --points " + sourcePath("tests/data/pathtrace/cornell-closed-floor-points.csv") +
-                           " --max-edge 120 --output " + dir + "/H.csv",
-                       &log),
-            0)
-      << log;
+  ASSERT_EQ(runOnTheClosedBoxFloor("--max-edge 120", dir, &log), 0) << log;
   EXPECT_NE(log.find("mesh error: the same points on a mesh with elements twice the size"), std::string::npos)
       << log;
   const auto a = readCsv(dir + "/H.csv");
@@ -133,11 +137,7 @@ TEST(IrradianceCommand, ErrorEstimateCoversTheErrorAgainstALongPathTracedRun) {
 TEST(IrradianceCommand, CoarseSolutionsGainFromTheDirectLightAtTheSecondaryHits) {
   const std::string dir = scratchDir("irradiance-coarse");
   std::string log;
-  ASSERT_EQ(runCommand(cliPath() + " irradiance " + sourcePath("scenes/cornell-box-closed.json") +
-                           " --points " + sourcePath("tests/data/pathtrace/cornell-closed-floor-points.csv") +
-                           " --max-edge 200 --split-at-contacts --no-mesh-error --output " + dir + "/H.csv",
-                       &log),
-            0)
+  ASSERT_EQ(runOnTheClosedBoxFloor("--max-edge 200 --split-at-contacts --no-mesh-error", dir, &log), 0)
       << log;
   const auto a = readCsv(dir + "/H.csv");
   const auto b = readCsv(sourcePath("tests/data/pathtrace/cornell-closed-floor-reference.csv"));
