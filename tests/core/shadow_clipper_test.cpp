@@ -3,6 +3,9 @@
 // the source sees nothing of the receiver; where the shadow is partial it says no.
 #include "core/formfactor/shadow_clipper.h"
 
+#include "core/formfactor/closed_solids.h"
+#include "core/formfactor/solid_silhouette.h"
+
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -108,6 +111,54 @@ TEST(ShadowClipper, ABlockHidesAllWhereNoOneOfItsFacesDoes) {
   const std::vector<Vec3> lowCentres{low.centre};
   const ShadowClipper partial(kSource, kUp, receiver, kDown, lowFaces, lowSolids, &lowCentres);
   EXPECT_FALSE(partial.hidesAll(kSource.v.data(), kSource.count, partial.occluders()));
+}
+
+// A block seen from a point outside it hides the cone over its silhouette: one convex cone of four planes
+// (one face seen) or six (two or three), the same region its front faces hide one by one.
+TEST(SolidSilhouette, TheConeOverABoxHasItsOutlinesPlanes) {
+  const Box block = box({0, 0, 0}, {1, 1, 1});
+  std::vector<const std::vector<Vec3>*> outlines;
+  for (const auto& face : block.faces) outlines.push_back(&face);
+  std::vector<SolidPlanes> planes;
+  const std::vector<int> solidOf = closedConvexSolids(outlines, planes);
+  ASSERT_EQ(planes.size(), 1u);
+  const std::vector<SolidShape> shapes = solidShapes(outlines, solidOf, 1);
+  ASSERT_EQ(shapes[0].corners.size(), 8u);
+  ASSERT_EQ(shapes[0].edges.size(), 12u);
+  std::array<Vec3, 32> cone;
+  EXPECT_EQ(silhouetteCone(shapes[0], {0.5, 0.5, 3}, 1e-12, cone.data(), 32), 4);    // one face seen
+  EXPECT_EQ(silhouetteCone(shapes[0], {3, 0.5, 3}, 1e-12, cone.data(), 32), 6);      // two faces
+  EXPECT_EQ(silhouetteCone(shapes[0], {3, 3, 3}, 1e-12, cone.data(), 32), 6);        // three faces
+  EXPECT_EQ(silhouetteCone(shapes[0], {0.5, 0.5, 0.5}, 1e-12, cone.data(), 32), 0);  // inside
+  const int m = silhouetteCone(shapes[0], {3, 2, 4}, 1e-12, cone.data(), 32);
+  ASSERT_EQ(m, 6);
+  for (int k = 0; k < m; ++k)  // inward: every corner on or inside every plane
+    for (const Vec3& c : shapes[0].corners) EXPECT_GE(cone[k].dot(c - Vec3(3, 2, 4)), -1e-12);
+}
+
+// Cut by its silhouette or face by face, a block between two squares hides the same part from every point of
+// the source, where it hides part of the receiver, all of it or nothing.
+TEST(SolidSilhouette, HidesWhatTheFacesHideOneByOne) {
+  const SmallPolygon receiver = polygon({{-1, -1, 3}, {-1, 2, 3}, {2, 2, 3}, {2, -1, 3}});  // faces -z
+  const Box block = box({0.3, 0.2, 1.0}, {0.9, 0.7, 1.6});
+  std::vector<OccluderPolygon> faces;
+  std::vector<const std::vector<Vec3>*> outlines;
+  for (const auto& face : block.faces) {
+    faces.push_back({&face, 0});
+    outlines.push_back(&face);
+  }
+  const std::vector<SolidPlanes> solids{block.planes};
+  const std::vector<Vec3> centres{block.centre};
+  const std::vector<SolidShape> shapes = solidShapes(outlines, std::vector<int>(6, 0), 1);
+  const ShadowClipper byFaces(kSource, kUp, receiver, kDown, faces, solids, &centres);
+  const ShadowClipper bySilhouette(kSource, kUp, receiver, kDown, faces, solids, &centres, &shapes);
+  for (double s = 0; s <= 1.0; s += 0.125)
+    for (double t = 0; t <= 1.0; t += 0.125) {
+      const Vec3 x{s, t, 0};
+      const double expected = byFaces.hidden(x, byFaces.occluders());
+      EXPECT_GT(expected, 0.0);
+      EXPECT_NEAR(bySilhouette.hidden(x, bySilhouette.occluders()), expected, 1e-14) << s << ", " << t;
+    }
 }
 
 }  // namespace

@@ -49,6 +49,8 @@ using SolidPlanes = std::vector<std::pair<Vec3, double>>;
 // An occluder: a convex polygon, counter-clockwise seen from its front, and the closed convex solid it
 // bounds (or -1). A segment from a point outside such a solid that crosses it enters through a face the
 // point is in front of, so from there the faces it sees from behind need not be clipped.
+struct SolidShape;  // solid_silhouette.h
+
 struct OccluderPolygon {
   const std::vector<Vec3>* polygon;
   int solid = -1;
@@ -58,10 +60,13 @@ class ShadowClipper {
  public:
   // source and receiver already horizon-clipped against each other. Keeps the occluders that may cut a
   // segment from the source to the receiver. `solids` outlives the clipper.
-  // `solidCentres`, a point inside each solid, lets hidesAll() use the solids' cross-sections.
+  // `solidCentres`, a point inside each solid, lets hidesAll() use the solids' cross-sections. `shapes`, the
+  // solids' faces and edges, lets hidden() cut a solid wholly in front of both planes by the one cone of its
+  // silhouette instead of face by face.
   ShadowClipper(const SmallPolygon& source, const Vec3& sourceNormal, const SmallPolygon& receiver,
                 const Vec3& receiverNormal, const std::vector<OccluderPolygon>& occluders,
-                const std::vector<SolidPlanes>& solids, const std::vector<Vec3>* solidCentres = nullptr);
+                const std::vector<SolidPlanes>& solids, const std::vector<Vec3>* solidCentres = nullptr,
+                const std::vector<SolidShape>* shapes = nullptr);
 
   // Indices of the occluders kept (all of them may block).
   const std::vector<int>& occluders() const { return all_; }
@@ -100,18 +105,25 @@ class ShadowClipper {
   // The crossings of the plane (unit normal, offset) by the corner-to-corner segments, into crossings_;
   // false unless the panel is strictly on the back and the receiver strictly on the front or vice versa.
   bool crossings(const Vec3* panel, int count, const Vec3& normal, double offset) const;
+  // Cuts the shadow of the cone from x (`m` inward side planes) out of pieces_, the kept parts into next_,
+  // adding the form factor of the cut parts to `sum`.
+  void cutCone(const Vec3& x, const Vec3* cone, int m, double& sum) const;
 
   SmallPolygon receiver_;
   Vec3 sourceNormal_;
   double eps_ = 0;  // a length: 1e-10 of the pair's size
   const std::vector<SolidPlanes>& solids_;
   const std::vector<Vec3>* solidCentres_;
+  const std::vector<SolidShape>* shapes_;
+  std::vector<char> whole_;  // per solid: wholly in front of both planes, cut by its silhouette
   mutable std::vector<Vec3> crossings_;
+  mutable std::vector<Vec3> probed_;  // probeShadow(): the solids' corners probed already
   std::vector<Occluder> prepared_;
   std::vector<int> all_;
   mutable std::vector<std::pair<Vec3, double>> planes_;
   mutable std::vector<SmallPolygon> pieces_, next_;
   mutable std::vector<signed char> outside_;  // per solid, for the current point: -1 not yet known
+  mutable std::vector<signed char> cut_;  // per solid, for the current point: 0 not yet, 1 cut, 2 by faces
 };
 
 }  // namespace rt
