@@ -172,33 +172,39 @@ ShadowClipper::ShadowClipper(const SmallPolygon& source, const Vec3& sourceNorma
 void ShadowClipper::hullPlanes(const Vec3* a, int na, const Vec3* b, int nb) const {
   planes_.clear();
   // Faces of the hull of two convex polygons other than their own planes hold an edge of one and a vertex
-  // of the other. The sides are decided on the unnormalised normal (scaling eps by its length) and only a
-  // face kept is normalised: most candidates have points on both sides, found within two or three.
-  auto tryPlane = [&](const Vec3& p, const Vec3& q, const Vec3& r) {
-    const Vec3 n = (q - p).cross(r - p);
-    const double length2 = n.squaredNorm();
-    if (!(length2 > 0)) return;
-    const double margin = eps_ * std::sqrt(length2);
-    bool above = false, below = false;
-    for (int k = 0; k < na; ++k) {
-      const double d = n.dot(a[k] - p);
-      above |= d > margin;
-      below |= d < -margin;
-    }
-    if (above && below) return;
-    for (int k = 0; k < nb; ++k) {
-      const double d = n.dot(b[k] - p);
-      above |= d > margin;
-      below |= d < -margin;
-    }
-    if (above && below) return;
-    const Vec3 unit = (above ? -n : n) / std::sqrt(length2);  // outward: every hull point on or below
-    planes_.push_back({unit, unit.dot(p)});
+  // of the other. A plane through an edge of a convex polygon has all of that polygon on one side, the side
+  // of its centre, so only the other polygon's corners are tested one by one. The sides are decided on the
+  // unnormalised normal (scaling eps by its length) and only a face kept is normalised: most candidates have
+  // corners on both sides, found within two or three.
+  auto centre = [](const Vec3* p, int n) {
+    Vec3 c = Vec3::Zero();
+    for (int k = 0; k < n; ++k) c += p[k];
+    return Vec3(c / n);
   };
-  for (int e = 0; e < na; ++e)
-    for (int k = 0; k < nb; ++k) tryPlane(a[e], a[(e + 1) % na], b[k]);
-  for (int e = 0; e < nb; ++e)
-    for (int k = 0; k < na; ++k) tryPlane(b[e], b[(e + 1) % nb], a[k]);
+  auto tryEdges = [&](const Vec3* edges, int ne, const Vec3& edgesCentre, const Vec3* others, int no) {
+    for (int e = 0; e < ne; ++e) {
+      const Vec3& p = edges[e];
+      const Vec3 edge = edges[(e + 1) % ne] - p;
+      for (int k = 0; k < no; ++k) {
+        const Vec3 n = edge.cross(others[k] - p);
+        const double length2 = n.squaredNorm();
+        if (!(length2 > 0)) continue;
+        const double margin = eps_ * std::sqrt(length2);
+        const double c = n.dot(edgesCentre - p);
+        bool above = c > margin, below = c < -margin;
+        for (int j = 0; j < no && !(above && below); ++j) {
+          const double d = n.dot(others[j] - p);
+          above |= d > margin;
+          below |= d < -margin;
+        }
+        if (above && below) continue;
+        const Vec3 unit = (above ? -n : n) / std::sqrt(length2);  // outward: every hull point on or below
+        planes_.push_back({unit, unit.dot(p)});
+      }
+    }
+  };
+  tryEdges(a, na, centre(a, na), b, nb);
+  tryEdges(b, nb, centre(b, nb), a, na);
 }
 
 bool ShadowClipper::outsideHull(const Occluder& o) const {
