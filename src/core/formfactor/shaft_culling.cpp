@@ -13,6 +13,9 @@ namespace {
 // patches have at least two elements on average (otherwise the table is as much work as the pairs
 // themselves).
 constexpr std::size_t kMaxTabulatedPatches = 4096;
+// Patch-against-plane tests spent on finding which patches can block at all (a million separate faces in
+// distinct planes would otherwise cost a million squared).
+constexpr long kMaxPlaneTests = 20'000'000;
 
 double cross2(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
@@ -80,24 +83,41 @@ ShaftCulling::ShaftCulling(const Mesh& mesh) : mesh_(mesh) {
     for (int v : ids) points.push_back(mesh.vertices[v]);
     patches_[k].outline = convexOutline(std::move(points), patches_[k].normal);
   }
-  std::vector<Eigen::AlignedBox3d> boxes;
-  for (const PatchInfo& p : patches_) boxes.push_back(p.box);
-  tree_ = BoxTree(std::move(boxes));
-
-  // Nothing can block when every patch has the whole scene in front of or on its plane. Patches in one plane
-  // (a wall split into quads) are tested once.
-  std::map<std::tuple<long long, long long, long long, long long>, int> planes;
-  for (std::size_t k = 0; k < P && !anyOccluder_; ++k) {
+  // Only a patch with something strictly behind its plane can ever block (test (3) needs the two ends on
+  // opposite sides); a room's walls cannot, and they are most of its patches. Patches in one plane (a wall
+  // split into quads) are tested once; a plane with the scene's box on its front needs no test at all.
+  Eigen::AlignedBox3d sceneBox;
+  for (const PatchInfo& p : patches_) sceneBox.extend(p.box);
+  std::map<std::tuple<long long, long long, long long, long long>, bool> planes;
+  long budget = kMaxPlaneTests;
+  for (std::size_t k = 0; k < P; ++k) {
     if (patches_[k].box.isEmpty()) continue;
     const Vec3& nk = patches_[k].normal;
     const double scale = 1e6 / (all.isEmpty() ? 1.0 : all.diagonal().norm());
     const auto key =
         std::make_tuple(std::llround(nk.x() * 1e9), std::llround(nk.y() * 1e9), std::llround(nk.z() * 1e9),
                         std::llround(nk.dot(patches_[k].point) * scale));
-    if (!planes.emplace(key, static_cast<int>(k)).second) continue;
-    for (std::size_t other = 0; other < P && !anyOccluder_; ++other)
-      anyOccluder_ = other != k && (sideOfPatch(static_cast<int>(other), static_cast<int>(k)) & kBack);
+    auto [it, added] = planes.emplace(key, false);
+    if (added) {
+      bool behind = false;
+      for (int c = 0; c < 8 && !behind; ++c)
+        behind = nk.dot(sceneBox.corner(static_cast<Eigen::AlignedBox3d::CornerType>(c)) -
+                        patches_[k].point) < -eps_;
+      // The box reaches behind: look for a patch that does, within a bounded number of tests (past it,
+      // planes count as blocking, which costs time, never correctness).
+      if (behind && budget > 0) {
+        behind = false;
+        for (std::size_t other = 0; other < P && !behind; ++other, --budget)
+          behind = sideOfPatch(static_cast<int>(other), static_cast<int>(k)) & kBack;
+      }
+      it->second = behind;
+    }
+    if (it->second) blockers_.push_back(static_cast<int>(k));
   }
+  anyOccluder_ = !blockers_.empty();
+  std::vector<Eigen::AlignedBox3d> boxes;
+  for (int k : blockers_) boxes.push_back(patches_[static_cast<std::size_t>(k)].box);
+  tree_ = BoxTree(std::move(boxes));
 
   if (anyOccluder_ && P <= kMaxTabulatedPatches && n >= 2 * P) {
     pairCandidates_.assign(P * P, {});
@@ -141,7 +161,8 @@ std::vector<int> ShaftCulling::patchPairCandidates(int a, int b) const {
   Eigen::AlignedBox3d shaft = patches_[static_cast<std::size_t>(a)].box;
   shaft.extend(patches_[static_cast<std::size_t>(b)].box);
   std::vector<int> out;
-  tree_.anyOverlapping(shaft, eps_, [&](int k) {
+  tree_.anyOverlapping(shaft, eps_, [&](int t) {
+    const int k = blockers_[static_cast<std::size_t>(t)];
     if (patchMayBlock(k, a, b)) out.push_back(k);
     return false;
   });
@@ -166,8 +187,10 @@ bool ShaftCulling::visitBlockers(int i, int j, Visit&& visit) const {
       if (blocks(k) && visit(k)) return true;
     return false;
   }
-  return tree_.anyOverlapping(shaft, eps_,
-                              [&](int k) { return patchMayBlock(k, a, b) && blocks(k) && visit(k); });
+  return tree_.anyOverlapping(shaft, eps_, [&](int t) {
+    const int k = blockers_[static_cast<std::size_t>(t)];
+    return patchMayBlock(k, a, b) && blocks(k) && visit(k);
+  });
 }
 
 void ShaftCulling::candidates(int i, int j, std::vector<int>& patches) const {
@@ -188,7 +211,8 @@ bool ShaftCulling::visitPointBlockers(const Vec3& point, const Vec3& normal, int
   const int b = elementPatch_[static_cast<std::size_t>(j)];
   Eigen::AlignedBox3d shaft = elementBoxes_[static_cast<std::size_t>(j)];
   shaft.extend(point);
-  return tree_.anyOverlapping(shaft, eps_, [&](int k) {
+  return tree_.anyOverlapping(shaft, eps_, [&](int t) {
+    const int k = blockers_[static_cast<std::size_t>(t)];
     if (k == b || k == pointPatch) return false;
     // (2): k reaches in front of j's plane and in front of the point's tangent plane.
     if (!(sideOfPatch(k, b) & kFront)) return false;

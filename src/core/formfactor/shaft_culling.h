@@ -3,9 +3,10 @@
 // pair's box, (2) it reaches in front of both planes, and (3) its own plane does not have all of i and j on
 // one side. In a convex enclosure no patch passes, so no ray is ever cast.
 //
-// The candidates k of (1) come from a box tree over the patches, so the cost grows like the number of pairs
-// times log(patches), never like patches^3. When patches are split into several elements each, the patch
-// pairs' candidates are found once (in parallel) and each element pair only re-checks those.
+// Only patches with some of the scene strictly behind their plane can pass (3) at all (a room's walls never
+// do); the candidates k of (1) come from a box tree over those patches, so the cost grows like the number of
+// pairs times log(patches), never like patches^3. When patches are split into several elements each, the
+// patch pairs' candidates are found once (in parallel) and each element pair only re-checks those.
 #pragma once
 
 #include <cstdint>
@@ -60,7 +61,8 @@ class ShaftCulling {
 
   const Mesh& mesh_;
   std::vector<PatchInfo> patches_;
-  BoxTree tree_;
+  std::vector<int> blockers_;  // the patches with something strictly behind their plane
+  BoxTree tree_;               // over the blockers' boxes (tree index t is patch blockers_[t])
   std::vector<Eigen::AlignedBox3d> elementBoxes_;
   std::vector<int> elementPatch_;
   // Per patch pair a < b (only when patches have several elements each): the patches that may block.
