@@ -28,16 +28,15 @@ void copyPolygon(const SmallPolygon& from, SmallPolygon& to) {
   std::copy_n(from.v.begin(), from.count, to.v.begin());
 }
 
-// Both parts of `in` at once: `front` as clipToFront(normal) gives it, `back` as clipToFront(-normal).
-// In one pass, as the shadow cut of each piece by each side plane of a cone needs both.
-void splitByPlane(const SmallPolygon& in, const Vec3& origin, const Vec3& normal, double eps,
-                  SmallPolygon& front, SmallPolygon& back) {
-  front.count = back.count = 0;
-  const double length = normal.norm();
-  if (in.count < 3 || !(length > 0)) return;
+// Splits `in` by the plane through `origin` with normal `normal`, corners within `margin` of it (a length
+// times the normal's length) counting as on it. Returns 1 when no corner lies behind (nothing written), -1
+// when none lies in front (nothing written), 0 when both do: then the part in front goes to `front` and,
+// where `back` is given, the part behind to it. In one pass, as the shadow cut of each piece by each side
+// plane of a cone needs both parts.
+int splitAt(const SmallPolygon& in, const Vec3& origin, const Vec3& normal, double margin,
+            SmallPolygon& front, SmallPolygon* back) {
   double side[SmallPolygon::kCapacity];
   bool anyBehind = false, anyFront = false;
-  const double margin = eps * length;
   for (int k = 0; k < in.count; ++k) {
     double d = normal.dot(in.v[static_cast<std::size_t>(k)] - origin);
     if (std::abs(d) <= margin) d = 0;
@@ -45,27 +44,27 @@ void splitByPlane(const SmallPolygon& in, const Vec3& origin, const Vec3& normal
     anyBehind |= d < 0;
     anyFront |= d > 0;
   }
-  if (!anyBehind || !anyFront) {
-    if (anyFront) copyPolygon(in, front);
-    if (anyBehind) copyPolygon(in, back);
-    return;
-  }
-  for (int k = 0; k < in.count && front.count + 2 <= SmallPolygon::kCapacity &&
-                  back.count + 2 <= SmallPolygon::kCapacity;
-       ++k) {
+  if (!anyBehind) return 1;  // (a piece wholly on the plane, or a plane of no direction, cuts nothing)
+  if (!anyFront) return -1;
+  front.count = 0;
+  if (back) back->count = 0;
+  for (int k = 0; k < in.count && front.count + 2 <= SmallPolygon::kCapacity; ++k) {
     const int next = (k + 1) % in.count;
     const double dp = side[k], dq = side[next];
     const Vec3& p = in.v[static_cast<std::size_t>(k)];
     if (dp >= 0) front.v[static_cast<std::size_t>(front.count++)] = p;
-    if (dp <= 0) back.v[static_cast<std::size_t>(back.count++)] = p;
+    if (back && dp <= 0 && back->count < SmallPolygon::kCapacity)
+      back->v[static_cast<std::size_t>(back->count++)] = p;
     if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0)) {
       const Vec3 cut = p + (in.v[static_cast<std::size_t>(next)] - p) * (dp / (dp - dq));
       front.v[static_cast<std::size_t>(front.count++)] = cut;
-      back.v[static_cast<std::size_t>(back.count++)] = cut;
+      if (back && back->count < SmallPolygon::kCapacity)
+        back->v[static_cast<std::size_t>(back->count++)] = cut;
     }
   }
   if (front.count < 3) front.count = 0;
-  if (back.count < 3) back.count = 0;
+  if (back && back->count < 3) back->count = 0;
+  return 0;
 }
 
 }  // namespace
@@ -341,34 +340,53 @@ double ShadowClipper::unoccluded(const Vec3& x) const {
   return std::max(0.0, lambertContourSum(x, sourceNormal_, receiver_.v.data(), receiver_.count));
 }
 
-void ShadowClipper::cutCone(const Vec3& x, const Vec3* cone, int m, double& sum) const {
+bool ShadowClipper::cutCone(const Vec3& x, const Vec3* cone, int m, bool last, double& sum) const {
+  double margin[SmallPolygon::kCapacity];
+  for (int k = 0; k < m; ++k) margin[k] = eps_ * cone[k].norm();
   next_.clear();
   SmallPolygon buffers[2];
+  bool anyLeft = false;  // of the receiver, some part outside this cone and every one before
   for (const SmallPolygon& piece : pieces_) {
-    // Wholly outside one side plane: untouched by this shadow.
+    // Wholly outside one side plane: untouched by this shadow (checked first so that it is not cut into
+    // pieces by the planes before it, which the occluders after this one would each have to cut again).
     bool clear = false;
-    for (int k = 0; k < m && !clear; ++k) {
-      const double margin = eps_ * cone[k].norm();
+    for (int k = 0; k < m && !clear && !last; ++k) {
       bool anyInside = false;
       for (int v = 0; v < piece.count && !anyInside; ++v)
-        anyInside = cone[k].dot(piece.v[static_cast<std::size_t>(v)] - x) > margin;
+        anyInside = cone[k].dot(piece.v[static_cast<std::size_t>(v)] - x) > margin[k];
       clear = !anyInside;
     }
     if (clear) {
       copyPolygon(piece, next_.emplace_back());
+      anyLeft = true;
       continue;
     }
     const SmallPolygon* inside = &piece;
-    for (int k = 0; k < m && inside->count > 0; ++k) {
-      SmallPolygon& part = buffers[k % 2];
-      SmallPolygon& outside = next_.emplace_back();
-      splitByPlane(*inside, x, cone[k], eps_, part, outside);
-      if (outside.count == 0) next_.pop_back();
-      inside = &part;
+    int which = 0;  // the buffer the next split writes: never the one `inside` is in
+    for (int k = 0; k < m && inside; ++k) {
+      SmallPolygon& part = buffers[which];
+      SmallPolygon* outside = last ? nullptr : &next_.emplace_back();
+      const int side = splitAt(*inside, x, cone[k], margin[k], part, outside);
+      if (side > 0) {
+        if (outside) next_.pop_back();
+        continue;
+      }
+      anyLeft = true;
+      if (side < 0) {
+        if (outside) copyPolygon(*inside, *outside);
+        inside = nullptr;
+        break;
+      }
+      if (outside && outside->count == 0) next_.pop_back();
+      inside = part.count > 0 ? &part : nullptr;
+      which ^= 1;
     }
-    if (inside->count > 0) sum += lambertContourSum(x, sourceNormal_, inside->v.data(), inside->count);
+    if (inside) sum += lambertContourSum(x, sourceNormal_, inside->v.data(), inside->count);
   }
+  // The last cone needs no pieces left over, only whether any would be.
+  if (last) return anyLeft;
   pieces_.swap(next_);
+  return !pieces_.empty();
 }
 
 double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders, bool* whollyHidden) const {
@@ -379,8 +397,20 @@ double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders, b
   std::array<Vec3, SmallPolygon::kCapacity> cone;
   outside_.assign(solids_.size(), -1);
   if (shapes_) cut_.assign(whole_.size(), 0);
-  for (int index : occluders) {
-    const Occluder& o = prepared_[static_cast<std::size_t>(index)];
+  // From `tail` on, every occluder bounds one solid wholly in front: cut by its silhouette there, it is the
+  // last shadow, and the parts of the receiver it leaves need not be kept for another.
+  const int n = static_cast<int>(occluders.size());
+  int tail = n;
+  auto wholeSolid = [&](int position) {
+    const int solid =
+        prepared_[static_cast<std::size_t>(occluders[static_cast<std::size_t>(position)])].solid;
+    return solid >= 0 && shapes_ && whole_[static_cast<std::size_t>(solid)] ? solid : -1;
+  };
+  if (n > 0 && wholeSolid(n - 1) >= 0)
+    for (tail = n - 1; tail > 0 && wholeSolid(tail - 1) == wholeSolid(n - 1);) --tail;
+  bool anyLeft = true;
+  for (int position = 0; position < n && anyLeft; ++position) {
+    const Occluder& o = prepared_[static_cast<std::size_t>(occluders[static_cast<std::size_t>(position)])];
     if (o.solid >= 0 && shapes_ && whole_[static_cast<std::size_t>(o.solid)]) {
       signed char& cut = cut_[static_cast<std::size_t>(o.solid)];
       if (cut == 1) continue;  // the solid's silhouette is cut already
@@ -389,8 +419,7 @@ double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders, b
                                      SmallPolygon::kCapacity);
         cut = m >= 3 ? 1 : 2;  // x not outside (or a degenerate silhouette): face by face
         if (cut == 1) {
-          cutCone(x, cone.data(), m, sum);
-          if (pieces_.empty()) break;
+          anyLeft = cutCone(x, cone.data(), m, position >= tail, sum);
           continue;
         }
       }
@@ -414,10 +443,9 @@ double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders, b
       if (n.dot(o.centre - x) < 0) n = -n;  // inward: the cone's inside in front
       cone[static_cast<std::size_t>(k)] = n;
     }
-    cutCone(x, cone.data(), m, sum);
-    if (pieces_.empty()) break;
+    anyLeft = cutCone(x, cone.data(), m, position == n - 1, sum);
   }
-  if (whollyHidden) *whollyHidden = pieces_.empty();
+  if (whollyHidden) *whollyHidden = !anyLeft;
   return std::max(0.0, sum);
 }
 

@@ -105,9 +105,10 @@ class ShadowClipper {
   // The crossings of the plane (unit normal, offset) by the corner-to-corner segments, into crossings_;
   // false unless the panel is strictly on the back and the receiver strictly on the front or vice versa.
   bool crossings(const Vec3* panel, int count, const Vec3& normal, double offset) const;
-  // Cuts the shadow of the cone from x (`m` inward side planes) out of pieces_, the kept parts into next_,
-  // adding the form factor of the cut parts to `sum`.
-  void cutCone(const Vec3& x, const Vec3* cone, int m, double& sum) const;
+  // Cuts the shadow of the cone from x (`m` inward side planes) out of pieces_, adding the form factor of the
+  // cut parts to `sum`, and keeps the parts left for the next cone unless this one is the `last`. Returns
+  // whether any part is left.
+  bool cutCone(const Vec3& x, const Vec3* cone, int m, bool last, double& sum) const;
 
   SmallPolygon receiver_;
   Vec3 sourceNormal_;
