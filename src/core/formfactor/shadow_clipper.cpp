@@ -15,13 +15,6 @@ Vec3 centreOf(const SmallPolygon& p) {
   return c / std::max(1, p.count);
 }
 
-double areaOf(const SmallPolygon& p) {
-  Vec3 sum = Vec3::Zero();
-  for (int k = 0; k < p.count; ++k)
-    sum += p.v[static_cast<std::size_t>(k)].cross(p.v[static_cast<std::size_t>((k + 1) % p.count)]);
-  return 0.5 * sum.norm();
-}
-
 // Only the corners in use: a SmallPolygon holds room for 32, and whole copies cost more than the clipping.
 void copyPolygon(const SmallPolygon& from, SmallPolygon& to) {
   to.count = from.count;
@@ -136,35 +129,52 @@ ShadowClipper::ShadowClipper(const SmallPolygon& source, const Vec3& sourceNorma
     size = std::max(size, (source.v[static_cast<std::size_t>(k)] - cr).norm());
   eps_ = 1e-10 * size;
   hullPlanes(source.v.data(), source.count, receiver.v.data(), receiver.count);
+  // A solid reaching behind either plane has faces clipped there (and a cap missing): it is cut face by
+  // face. One wholly in front needs no clipping, and hidden() cuts it by its silhouette.
+  if (shapes_) whole_.assign(shapes_->size(), -1);
+  auto wholeSolid = [&](int solid) {
+    if (solid < 0 || !shapes_ || static_cast<std::size_t>(solid) >= shapes_->size()) return false;
+    signed char& whole = whole_[static_cast<std::size_t>(solid)];
+    if (whole < 0) {
+      whole = 1;
+      for (const Vec3& c : (*shapes_)[static_cast<std::size_t>(solid)].corners)
+        if (sourceNormal.dot(c - source.v[0]) < -eps_ || receiverNormal.dot(c - receiver.v[0]) < -eps_) {
+          whole = 0;
+          break;
+        }
+    }
+    return whole == 1;
+  };
   SmallPolygon front;
   for (const OccluderPolygon& occluder : occluders) {
     const std::vector<Vec3>* polygon = occluder.polygon;
-    if (polygon->size() < 3 || polygon->size() > SmallPolygon::kCapacity - 4) continue;
-    Occluder o;
-    clipToFront(polygon->data(), static_cast<int>(polygon->size()), source.v[0], sourceNormal, eps_, front);
-    clipToFront(front.v.data(), front.count, receiver.v[0], receiverNormal, eps_, o.polygon);
-    if (o.polygon.count < 3 || areaOf(o.polygon) <= 1e-20 * size * size) continue;
-    Vec3 n = Vec3::Zero();
+    const int count = static_cast<int>(polygon->size());
+    if (count < 3 || count > SmallPolygon::kCapacity - 4) continue;
+    Occluder& o = prepared_.emplace_back();
+    if (wholeSolid(occluder.solid)) {
+      o.polygon.count = count;
+      std::copy(polygon->begin(), polygon->end(), o.polygon.v.begin());
+    } else {
+      clipToFront(polygon->data(), count, source.v[0], sourceNormal, eps_, front);
+      clipToFront(front.v.data(), front.count, receiver.v[0], receiverNormal, eps_, o.polygon);
+    }
+    Vec3 twice = Vec3::Zero();
     for (int k = 0; k < o.polygon.count; ++k)
-      n += o.polygon.v[static_cast<std::size_t>(k)].cross(
+      twice += o.polygon.v[static_cast<std::size_t>(k)].cross(
           o.polygon.v[static_cast<std::size_t>((k + 1) % o.polygon.count)]);
-    o.normal = n.normalized();
+    const double twiceArea = twice.norm();
+    if (o.polygon.count < 3 || 0.5 * twiceArea <= 1e-20 * size * size) {
+      prepared_.pop_back();
+      continue;
+    }
+    o.normal = twice / twiceArea;
     o.centre = centreOf(o.polygon);
     o.solid = occluder.solid;
-    if (outsideHull(o)) continue;
-    all_.push_back(static_cast<int>(prepared_.size()));
-    prepared_.push_back(o);
-  }
-  if (!shapes_) return;
-  // A solid reaching behind either plane has faces clipped there (and a cap missing): face by face.
-  whole_.assign(shapes_->size(), 0);
-  for (const Occluder& o : prepared_) {
-    if (o.solid < 0 || static_cast<std::size_t>(o.solid) >= shapes_->size()) continue;
-    bool front = true;
-    for (const Vec3& c : (*shapes_)[static_cast<std::size_t>(o.solid)].corners)
-      front = front && sourceNormal.dot(c - source.v[0]) >= -eps_ &&
-              receiverNormal.dot(c - receiver.v[0]) >= -eps_;
-    whole_[static_cast<std::size_t>(o.solid)] = front;
+    if (outsideHull(o)) {
+      prepared_.pop_back();
+      continue;
+    }
+    all_.push_back(static_cast<int>(prepared_.size()) - 1);
   }
 }
 
@@ -188,13 +198,14 @@ void ShadowClipper::hullPlanes(const Vec3* a, int na, const Vec3* b, int nb) con
         const Vec3 n = edge.cross(others[k] - p);
         const double length2 = n.squaredNorm();
         if (!(length2 > 0)) continue;
-        const double margin = eps_ * std::sqrt(length2);
+        // |d| > eps |n|, squared: no square root for the many candidates rejected.
+        const double margin2 = eps_ * eps_ * length2;
         const double c = n.dot(edgesCentre - p);
-        bool above = c > margin, below = c < -margin;
+        bool above = c > 0 && c * c > margin2, below = c < 0 && c * c > margin2;
         for (int j = 0; j < no && !(above && below); ++j) {
           const double d = n.dot(others[j] - p);
-          above |= d > margin;
-          below |= d < -margin;
+          above |= d > 0 && d * d > margin2;
+          below |= d < 0 && d * d > margin2;
         }
         if (above && below) continue;
         const Vec3 unit = (above ? -n : n) / std::sqrt(length2);  // outward: every hull point on or below
@@ -404,14 +415,14 @@ double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders, b
   auto wholeSolid = [&](int position) {
     const int solid =
         prepared_[static_cast<std::size_t>(occluders[static_cast<std::size_t>(position)])].solid;
-    return solid >= 0 && shapes_ && whole_[static_cast<std::size_t>(solid)] ? solid : -1;
+    return solid >= 0 && shapes_ && whole_[static_cast<std::size_t>(solid)] == 1 ? solid : -1;
   };
   if (n > 0 && wholeSolid(n - 1) >= 0)
     for (tail = n - 1; tail > 0 && wholeSolid(tail - 1) == wholeSolid(n - 1);) --tail;
   bool anyLeft = true;
   for (int position = 0; position < n && anyLeft; ++position) {
     const Occluder& o = prepared_[static_cast<std::size_t>(occluders[static_cast<std::size_t>(position)])];
-    if (o.solid >= 0 && shapes_ && whole_[static_cast<std::size_t>(o.solid)]) {
+    if (o.solid >= 0 && shapes_ && whole_[static_cast<std::size_t>(o.solid)] == 1) {
       signed char& cut = cut_[static_cast<std::size_t>(o.solid)];
       if (cut == 1) continue;  // the solid's silhouette is cut already
       if (cut == 0) {

@@ -116,7 +116,7 @@ class ShadowClipper {
   const std::vector<SolidPlanes>& solids_;
   const std::vector<Vec3>* solidCentres_;
   const std::vector<SolidShape>* shapes_;
-  std::vector<char> whole_;  // per solid: wholly in front of both planes, cut by its silhouette
+  std::vector<signed char> whole_;  // per solid: wholly in front of both planes (1), cut by its silhouette
   mutable std::vector<Vec3> crossings_;
   mutable std::vector<Vec3> probed_;  // probeShadow(): the solids' corners probed already
   std::vector<Occluder> prepared_;
