@@ -294,15 +294,26 @@ double ShadowClipper::probeShadow(const SourcePanel& panel, const std::vector<in
   SmallPolygon projected, clipped;
   // Clips `projected` to the panel (the planes through its edges along the source's normal) and probes
   // the centre of what is left.
+  // The panel's edge planes, found once for all probes.
+  Vec3 edgeNormals[4];
+  for (int k = 0; k < panel.count; ++k)
+    edgeNormals[k] = sourceNormal_.cross(panel.v[static_cast<std::size_t>((k + 1) % panel.count)] -
+                                         panel.v[static_cast<std::size_t>(k)]);
+  // Projections that cover the whole panel (or the same part of it) give the same probe: evaluated once.
+  Vec3 probed[64];
+  int probedCount = 0;
   auto probe = [&]() {
     for (int k = 0; k < panel.count && projected.count >= 3; ++k) {
-      const Vec3& a = panel.v[static_cast<std::size_t>(k)];
-      const Vec3 edge = panel.v[static_cast<std::size_t>((k + 1) % panel.count)] - a;
-      clipToFront(projected.v.data(), projected.count, a, sourceNormal_.cross(edge), eps_, clipped);
+      clipToFront(projected.v.data(), projected.count, panel.v[static_cast<std::size_t>(k)], edgeNormals[k],
+                  eps_, clipped);
       copyPolygon(clipped, projected);
     }
     if (projected.count < 3) return;
-    best = std::max(best, hidden(centreOf(projected), occluders));
+    const Vec3 x = centreOf(projected);
+    for (int k = 0; k < probedCount; ++k)
+      if ((probed[k] - x).cwiseAbs().maxCoeff() <= eps_) return;
+    if (probedCount < 64) probed[probedCount++] = x;
+    best = std::max(best, hidden(x, occluders));
     ++points;
   };
   double receiverHeight[SmallPolygon::kCapacity];
