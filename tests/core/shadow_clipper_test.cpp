@@ -3,6 +3,7 @@
 // the source sees nothing of the receiver; where the shadow is partial it says no.
 #include "core/formfactor/shadow_clipper.h"
 
+#include "core/box_solid.h"
 #include "core/formfactor/closed_solids.h"
 #include "core/formfactor/solid_silhouette.h"
 
@@ -17,37 +18,6 @@ SmallPolygon polygon(std::initializer_list<Vec3> corners) {
   SmallPolygon p;
   for (const Vec3& c : corners) p.v[static_cast<std::size_t>(p.count++)] = c;
   return p;
-}
-
-// The six faces of an axis-aligned box, counter-clockwise seen from outside, and its outward planes.
-struct Box {
-  std::vector<std::vector<Vec3>> faces;
-  SolidPlanes planes;
-  Vec3 centre;
-};
-
-Box box(const Vec3& lo, const Vec3& hi) {
-  Box b;
-  b.centre = 0.5 * (lo + hi);
-  for (int axis = 0; axis < 3; ++axis)
-    for (int side = 0; side < 2; ++side) {
-      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-      Vec3 normal = Vec3::Zero();
-      normal[axis] = side ? 1 : -1;
-      std::vector<Vec3> face;
-      for (const auto& [a, c] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
-        Vec3 corner;
-        corner[axis] = side ? hi[axis] : lo[axis];
-        corner[u] = a ? hi[u] : lo[u];
-        corner[v] = c ? hi[v] : lo[v];
-        face.push_back(corner);
-      }
-      if ((face[1] - face[0]).cross(face[2] - face[1]).dot(normal) < 0)
-        std::reverse(face.begin(), face.end());
-      b.faces.push_back(face);
-      b.planes.push_back({normal, normal.dot(face[0])});
-    }
-  return b;
 }
 
 const SmallPolygon kSource = polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});  // faces +z
@@ -141,17 +111,11 @@ TEST(SolidSilhouette, TheConeOverABoxHasItsOutlinesPlanes) {
 TEST(SolidSilhouette, HidesWhatTheFacesHideOneByOne) {
   const SmallPolygon receiver = polygon({{-1, -1, 3}, {-1, 2, 3}, {2, 2, 3}, {2, -1, 3}});  // faces -z
   const Box block = box({0.3, 0.2, 1.0}, {0.9, 0.7, 1.6});
-  std::vector<OccluderPolygon> faces;
-  std::vector<const std::vector<Vec3>*> outlines;
-  for (const auto& face : block.faces) {
-    faces.push_back({&face, 0});
-    outlines.push_back(&face);
-  }
+  const std::vector<OccluderPolygon> faces = block.occluders();
   const std::vector<SolidPlanes> solids{block.planes};
   const std::vector<Vec3> centres{block.centre};
-  const std::vector<SolidShape> shapes = solidShapes(outlines, std::vector<int>(6, 0), 1);
   const ShadowClipper byFaces(kSource, kUp, receiver, kDown, faces, solids, &centres);
-  const ShadowClipper bySilhouette(kSource, kUp, receiver, kDown, faces, solids, &centres, &shapes);
+  const ShadowClipper bySilhouette(kSource, kUp, receiver, kDown, faces, solids, &centres, &block.shapes);
   for (double s = 0; s <= 1.0; s += 0.125)
     for (double t = 0; t <= 1.0; t += 0.125) {
       const Vec3 x{s, t, 0};

@@ -18,6 +18,7 @@
 #include <array>
 #include <vector>
 
+#include "core/formfactor/penumbra_region.h"
 #include "core/formfactor/source_panels.h"
 #include "core/vec.h"
 
@@ -110,7 +111,11 @@ class ShadowClipper {
   // whether any part is left.
   bool cutCone(const Vec3& x, const Vec3* cone, int m, bool last, double& sum) const;
 
+  // The region of the source's plane a whole solid can shade (null when unbounded or not a whole solid).
+  const PenumbraRegion* penumbra(int solid) const;
+
   SmallPolygon receiver_;
+  Vec3 sourceOrigin_;
   Vec3 sourceNormal_;
   double eps_ = 0;  // a length: 1e-10 of the pair's size
   const std::vector<SolidPlanes>& solids_;
@@ -123,7 +128,9 @@ class ShadowClipper {
   std::vector<int> all_;
   mutable std::vector<std::pair<Vec3, double>> planes_;
   mutable std::vector<SmallPolygon> pieces_, next_;
-  mutable std::vector<signed char> outside_;  // per solid, for the current point: -1 not yet known
+  mutable std::vector<signed char> outside_;       // per solid, for the current point: -1 not yet known
+  mutable std::vector<PenumbraRegion> penumbrae_;  // per solid, made on first use
+  mutable std::vector<signed char> penumbraMade_;  // -1 not yet, 0 unbounded, 1 made
   mutable std::vector<signed char> cut_;  // per solid, for the current point: 0 not yet, 1 cut, 2 by faces
 };
 

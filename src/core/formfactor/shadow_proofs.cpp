@@ -1,0 +1,158 @@
+// ShadowClipper's proofs and probes: whether occluders hide the whole receiver from all of a panel
+// (hidesAll), and where on a panel a shadow that the rules' points missed would show (probeShadow).
+#include <algorithm>
+#include <cmath>
+
+#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/shadow_clipper_detail.h"
+
+namespace rt {
+
+using shadow_detail::centreOf;
+using shadow_detail::copyPolygon;
+
+bool polygonCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
+                             const Vec3* polygon, int count, const Vec3& normal, double offset, double eps) {
+  if (fromCount < 1 || toCount < 1 || count < 3) return false;
+  auto height = [&](const Vec3& p) { return normal.dot(p) - offset; };
+  const double side = height(to[0]);
+  for (int k = 0; k < toCount; ++k)
+    if (!(height(to[k]) * side > 0 && std::abs(height(to[k])) > eps)) return false;
+  for (int k = 0; k < fromCount; ++k)
+    if (!(height(from[k]) * side < 0 && std::abs(height(from[k])) > eps)) return false;
+  for (int f = 0; f < fromCount; ++f)
+    for (int t = 0; t < toCount; ++t) {
+      const double hf = height(from[f]), ht = height(to[t]);
+      const Vec3 crossing = from[f] + (to[t] - from[f]) * (hf / (hf - ht));
+      for (int k = 0; k < count; ++k) {
+        const Vec3 edge = polygon[(k + 1) % count] - polygon[k];
+        if (!(edge.cross(crossing - polygon[k]).dot(normal) > eps * edge.norm())) return false;
+      }
+    }
+  return true;
+}
+
+bool ShadowClipper::crossings(const Vec3* panel, int count, const Vec3& normal, double offset) const {
+  crossings_.clear();
+  double sign = 0;
+  double heights[SmallPolygon::kCapacity];
+  for (int k = 0; k < receiver_.count; ++k) {
+    heights[k] = normal.dot(receiver_.v[static_cast<std::size_t>(k)]) - offset;
+    if (std::abs(heights[k]) <= eps_ || (sign != 0 && heights[k] * sign < 0)) return false;
+    sign = heights[k];
+  }
+  for (int p = 0; p < count; ++p) {
+    const double h = normal.dot(panel[p]) - offset;
+    if (!(h * sign < 0) || std::abs(h) <= eps_) return false;
+    for (int k = 0; k < receiver_.count; ++k) {
+      const Vec3& r = receiver_.v[static_cast<std::size_t>(k)];
+      crossings_.push_back(panel[p] + (r - panel[p]) * (h / (h - heights[k])));
+    }
+  }
+  return true;
+}
+
+bool ShadowClipper::hidesAll(const Vec3* panel, int count, const std::vector<int>& occluders) const {
+  int lastSolid = -1;
+  for (int index : occluders) {
+    const Occluder& o = prepared_[static_cast<std::size_t>(index)];
+    if (polygonCutsEverySegment(panel, count, receiver_.v.data(), receiver_.count, o.polygon.v.data(),
+                                o.polygon.count, o.normal, o.normal.dot(o.centre), eps_))
+      return true;
+    // A block's faces may share the segments between them; its cross-sections through its centre, across
+    // the line of sight and parallel to each face, hold them all.
+    if (o.solid < 0 || o.solid == lastSolid || !solidCentres_) continue;
+    lastSolid = o.solid;
+    const SolidPlanes& solid = solids_[static_cast<std::size_t>(o.solid)];
+    const Vec3& centre = (*solidCentres_)[static_cast<std::size_t>(o.solid)];
+    Vec3 panelCentre = Vec3::Zero();
+    for (int p = 0; p < count; ++p) panelCentre += panel[p];
+    const Vec3 sight = (centreOf(receiver_) - panelCentre / count).normalized();
+    for (std::size_t plane = 0; plane <= solid.size(); ++plane) {
+      const Vec3 normal = plane == 0 ? sight : solid[plane - 1].first;
+      if (!crossings(panel, count, normal, normal.dot(centre))) continue;
+      bool inside = true;
+      for (std::size_t c = 0; c < crossings_.size() && inside; ++c)
+        for (const auto& [n, offset] : solid)
+          if (!(n.dot(crossings_[c]) - offset < -eps_)) {
+            inside = false;
+            break;
+          }
+      if (inside) return true;
+    }
+  }
+  return false;
+}
+
+double ShadowClipper::probeShadow(const SourcePanel& panel, const std::vector<int>& occluders,
+                                  long& points) const {
+  const Vec3& origin = panel.v[0];
+  double best = 0;
+  SmallPolygon projected, clipped;
+  // Clips `projected` to the panel (the planes through its edges along the source's normal) and probes
+  // the centre of what is left.
+  // The panel's edge planes, found once for all probes.
+  Vec3 edgeNormals[4];
+  for (int k = 0; k < panel.count; ++k)
+    edgeNormals[k] = sourceNormal_.cross(panel.v[static_cast<std::size_t>((k + 1) % panel.count)] -
+                                         panel.v[static_cast<std::size_t>(k)]);
+  // Projections that cover the whole panel (or the same part of it) give the same probe: evaluated once.
+  Vec3 probed[64];
+  int probedCount = 0;
+  auto probe = [&]() {
+    for (int k = 0; k < panel.count && projected.count >= 3; ++k) {
+      clipToFront(projected.v.data(), projected.count, panel.v[static_cast<std::size_t>(k)], edgeNormals[k],
+                  eps_, clipped);
+      copyPolygon(clipped, projected);
+    }
+    if (projected.count < 3) return;
+    const Vec3 x = centreOf(projected);
+    for (int k = 0; k < probedCount; ++k)
+      if ((probed[k] - x).cwiseAbs().maxCoeff() <= eps_) return;
+    if (probedCount < 64) probed[probedCount++] = x;
+    best = std::max(best, hidden(x, occluders));
+    ++points;
+  };
+  double receiverHeight[SmallPolygon::kCapacity];
+  for (int r = 0; r < receiver_.count; ++r)
+    receiverHeight[r] = sourceNormal_.dot(receiver_.v[static_cast<std::size_t>(r)] - origin);
+  // The point of the source plane on the line from r through o, when o lies between the plane and r (o
+  // itself when it stands on the plane).
+  auto through = [&](int r, const Vec3& o, double oHeight) {
+    const double rHeight = receiverHeight[r];
+    if (!(oHeight >= -eps_ && rHeight - oHeight > eps_)) return;
+    const Vec3& rv = receiver_.v[static_cast<std::size_t>(r)];
+    projected.v[static_cast<std::size_t>(projected.count++)] =
+        rv + (o - rv) * (rHeight / (rHeight - oHeight));
+  };
+  // A solid's corner is a corner of three faces or more: each is probed once. (Its faces seen from behind,
+  // though covered by those seen from the front, are probed too: their projections' centres found the
+  // shadows that the front faces' missed on the 612-wall grid room, 1.2e-5 off without them.)
+  std::vector<Vec3>& probedCorners = probed_;
+  probedCorners.clear();
+  for (int index : occluders) {
+    const Occluder& occluder = prepared_[static_cast<std::size_t>(index)];
+    const SmallPolygon& o = occluder.polygon;
+    double oHeight[SmallPolygon::kCapacity];
+    for (int k = 0; k < o.count; ++k)
+      oHeight[k] = sourceNormal_.dot(o.v[static_cast<std::size_t>(k)] - origin);
+    for (int r = 0; r < receiver_.count; ++r) {
+      projected.count = 0;
+      for (int k = 0; k < o.count; ++k) through(r, o.v[static_cast<std::size_t>(k)], oHeight[k]);
+      probe();
+    }
+    for (int k = 0; k < o.count; ++k) {
+      const Vec3& corner = o.v[static_cast<std::size_t>(k)];
+      if (occluder.solid >= 0) {
+        if (std::find(probedCorners.begin(), probedCorners.end(), corner) != probedCorners.end()) continue;
+        probedCorners.push_back(corner);
+      }
+      projected.count = 0;
+      for (int r = 0; r < receiver_.count; ++r) through(r, corner, oHeight[k]);
+      probe();
+    }
+  }
+  return best;
+}
+
+}  // namespace rt

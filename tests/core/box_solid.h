@@ -1,0 +1,56 @@
+// An axis-aligned box as a scene gives one: six faces, counter-clockwise seen from outside, and what the
+// quadrature method derives from them (outward planes, the solid's shape, a point inside). Shared by the
+// shadow clipper's tests.
+#pragma once
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+#include "core/formfactor/closed_solids.h"
+#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/solid_silhouette.h"
+
+namespace rt {
+
+struct Box {
+  std::vector<std::vector<Vec3>> faces;
+  SolidPlanes planes;  // per face: outward unit normal, offset
+  Vec3 centre;
+  std::vector<SolidShape> shapes;  // one: this box's faces, corners and edges
+  // The faces as occluders bounding solid 0.
+  std::vector<OccluderPolygon> occluders() const {
+    std::vector<OccluderPolygon> out;
+    for (const auto& face : faces) out.push_back({&face, 0});
+    return out;
+  }
+};
+
+inline Box box(const Vec3& lo, const Vec3& hi) {
+  Box b;
+  b.centre = 0.5 * (lo + hi);
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side = 0; side < 2; ++side) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      Vec3 normal = Vec3::Zero();
+      normal[axis] = side ? 1 : -1;
+      std::vector<Vec3> face;
+      for (const auto& [a, c] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+        Vec3 corner;
+        corner[axis] = side ? hi[axis] : lo[axis];
+        corner[u] = a ? hi[u] : lo[u];
+        corner[v] = c ? hi[v] : lo[v];
+        face.push_back(corner);
+      }
+      if ((face[1] - face[0]).cross(face[2] - face[1]).dot(normal) < 0)
+        std::reverse(face.begin(), face.end());
+      b.faces.push_back(face);
+      b.planes.push_back({normal, normal.dot(face[0])});
+    }
+  std::vector<const std::vector<Vec3>*> outlines;
+  for (const auto& face : b.faces) outlines.push_back(&face);
+  b.shapes = solidShapes(outlines, std::vector<int>(b.faces.size(), 0), 1);
+  return b;
+}
+
+}  // namespace rt
