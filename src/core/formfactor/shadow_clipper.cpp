@@ -220,8 +220,10 @@ const PenumbraRegion* ShadowClipper::penumbra(int solid) const {
 void ShadowClipper::cull(const SourcePanel& panel, const std::vector<int>& in, std::vector<int>& out) const {
   out.clear();
   if (in.empty()) return;
-  // A solid's faces go together when the panel is outside the region the solid can shade from it; the rest
-  // are tested one by one against the hull of the panel and the receiver, made only when needed.
+  // A whole solid's faces go together, kept where the panel meets the region the solid can shade and
+  // dropped where it does not (kept faces the solid's silhouette covers cost a few more probes, far less
+  // than the hull); the rest are tested one by one against the hull of the panel and the receiver, made
+  // only when needed.
   bool planesMade = false;
   int lastSolid = -1;
   bool lastMeets = false;
@@ -232,7 +234,8 @@ void ShadowClipper::cull(const SourcePanel& panel, const std::vector<int>& in, s
         lastSolid = o.solid;
         lastMeets = region->meets(panel.v.data(), panel.count);
       }
-      if (!lastMeets) continue;
+      if (lastMeets) out.push_back(k);
+      continue;
     }
     if (!planesMade) {
       hullPlanes(panel.v.data(), panel.count, receiver_.v.data(), receiver_.count);
