@@ -102,7 +102,6 @@ ShadowClipper::ShadowClipper(const SmallPolygon& source, const Vec3& sourceNorma
   for (int k = 0; k < source.count; ++k)
     size = std::max(size, (source.v[static_cast<std::size_t>(k)] - cr).norm());
   eps_ = 1e-10 * size;
-  hullPlanes(source.v.data(), source.count, receiver.v.data(), receiver.count);
   // A solid reaching behind either plane has faces clipped there (and a cap missing): it is cut face by
   // face. One wholly in front needs no clipping, and hidden() cuts it by its silhouette.
   if (shapes_) whole_.assign(shapes_->size(), -1);
@@ -120,6 +119,7 @@ ShadowClipper::ShadowClipper(const SmallPolygon& source, const Vec3& sourceNorma
     return whole == 1;
   };
   SmallPolygon front;
+  bool planesMade = false;
   for (const OccluderPolygon& occluder : occluders) {
     const std::vector<Vec3>* polygon = occluder.polygon;
     const int count = static_cast<int>(polygon->size());
@@ -144,7 +144,18 @@ ShadowClipper::ShadowClipper(const SmallPolygon& source, const Vec3& sourceNorma
     o.normal = twice / twiceArea;
     o.centre = centreOf(o.polygon);
     o.solid = occluder.solid;
-    if (outsideHull(o)) {
+    // As cull() has it: a whole solid by the region it can shade, the rest by the hull of the two.
+    bool outside;
+    if (const PenumbraRegion* region = penumbra(o.solid)) {
+      outside = !region->meets(source.v.data(), source.count);
+    } else {
+      if (!planesMade) {
+        hullPlanes(source.v.data(), source.count, receiver.v.data(), receiver.count);
+        planesMade = true;
+      }
+      outside = outsideHull(o);
+    }
+    if (outside) {
       prepared_.pop_back();
       continue;
     }
