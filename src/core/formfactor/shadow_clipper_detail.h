@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/formfactor/shadow_clipper.h"
 
@@ -18,6 +19,45 @@ inline Vec3 centreOf(const SmallPolygon& p) {
 inline void copyPolygon(const SmallPolygon& from, SmallPolygon& to) {
   to.count = from.count;
   std::copy_n(from.v.begin(), from.count, to.v.begin());
+}
+
+// Splits `in` by the plane through `origin` with normal `normal`, corners within `margin` of it (a length
+// times the normal's length) counting as on it. Returns 1 when no corner lies behind (nothing written), -1
+// when none lies in front (nothing written), 0 when both do: then the part in front goes to `front` and,
+// where `back` is given, the part behind to it. In one pass, as the shadow cut of each piece by each side
+// plane of a cone needs both parts.
+inline int splitAt(const SmallPolygon& in, const Vec3& origin, const Vec3& normal, double margin,
+                   SmallPolygon& front, SmallPolygon* back) {
+  double side[SmallPolygon::kCapacity];
+  bool anyBehind = false, anyFront = false;
+  for (int k = 0; k < in.count; ++k) {
+    double d = normal.dot(in.v[static_cast<std::size_t>(k)] - origin);
+    if (std::abs(d) <= margin) d = 0;
+    side[k] = d;
+    anyBehind |= d < 0;
+    anyFront |= d > 0;
+  }
+  if (!anyBehind) return 1;  // (a piece wholly on the plane, or a plane of no direction, cuts nothing)
+  if (!anyFront) return -1;
+  front.count = 0;
+  if (back) back->count = 0;
+  for (int k = 0; k < in.count && front.count + 2 <= SmallPolygon::kCapacity; ++k) {
+    const int next = (k + 1) % in.count;
+    const double dp = side[k], dq = side[next];
+    const Vec3& p = in.v[static_cast<std::size_t>(k)];
+    if (dp >= 0) front.v[static_cast<std::size_t>(front.count++)] = p;
+    if (back && dp <= 0 && back->count < SmallPolygon::kCapacity)
+      back->v[static_cast<std::size_t>(back->count++)] = p;
+    if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0)) {
+      const Vec3 cut = p + (in.v[static_cast<std::size_t>(next)] - p) * (dp / (dp - dq));
+      front.v[static_cast<std::size_t>(front.count++)] = cut;
+      if (back && back->count < SmallPolygon::kCapacity)
+        back->v[static_cast<std::size_t>(back->count++)] = cut;
+    }
+  }
+  if (front.count < 3) front.count = 0;
+  if (back && back->count < 3) back->count = 0;
+  return 0;
 }
 
 }  // namespace rt::shadow_detail

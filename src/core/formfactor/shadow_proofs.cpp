@@ -10,6 +10,7 @@ namespace rt {
 
 using shadow_detail::centreOf;
 using shadow_detail::copyPolygon;
+using shadow_detail::splitAt;
 
 bool polygonCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
                              const Vec3* polygon, int count, const Vec3& normal, double offset, double eps) {
@@ -89,23 +90,30 @@ double ShadowClipper::probeShadow(const SourcePanel& panel, const std::vector<in
   const Vec3& origin = panel.v[0];
   double best = 0;
   SmallPolygon projected, clipped;
-  // Clips `projected` to the panel (the planes through its edges along the source's normal) and probes
-  // the centre of what is left.
-  // The panel's edge planes, found once for all probes.
+  // The panel's edge planes (through its edges along the source's normal, facing in), found once for all
+  // probes.
   Vec3 edgeNormals[4];
-  for (int k = 0; k < panel.count; ++k)
+  double margins[4];
+  for (int k = 0; k < panel.count; ++k) {
     edgeNormals[k] = sourceNormal_.cross(panel.v[static_cast<std::size_t>((k + 1) % panel.count)] -
                                          panel.v[static_cast<std::size_t>(k)]);
+    margins[k] = eps_ * edgeNormals[k].norm();
+  }
   // Projections that cover the whole panel (or the same part of it) give the same probe: evaluated once.
   Vec3 probed[64];
   int probedCount = 0;
+  // Clips `projected` to the panel and probes the centre of what is left.
   auto probe = [&]() {
-    for (int k = 0; k < panel.count && projected.count >= 3; ++k) {
-      clipToFront(projected.v.data(), projected.count, panel.v[static_cast<std::size_t>(k)], edgeNormals[k],
-                  eps_, clipped);
-      copyPolygon(clipped, projected);
-    }
     if (projected.count < 3) return;
+    for (int k = 0; k < panel.count; ++k) {
+      const int side = splitAt(projected, panel.v[static_cast<std::size_t>(k)], edgeNormals[k], margins[k],
+                               clipped, nullptr);
+      if (side < 0) return;  // wholly outside the panel
+      if (side == 0) {
+        if (clipped.count < 3) return;
+        copyPolygon(clipped, projected);
+      }
+    }
     const Vec3 x = centreOf(projected);
     for (int k = 0; k < probedCount; ++k)
       if ((probed[k] - x).cwiseAbs().maxCoeff() <= eps_) return;
