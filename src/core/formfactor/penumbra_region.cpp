@@ -14,45 +14,55 @@ double cross2(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::V
 
 bool PenumbraRegion::build(const Vec3* corners, int cornerCount, const Vec3* receiver, int receiverCount,
                            const Vec3& origin, const Vec3& normal, double eps) {
-  hull_.clear();
+  count_ = 0;
+  if (cornerCount * receiverCount > kMaxPoints || receiverCount > 8) return false;
   origin_ = origin;
   u_ = normal.unitOrthogonal();
   v_ = normal.cross(u_);
   eps_ = eps;
+  double heights[8];
   double lowest = INFINITY;
-  for (int r = 0; r < receiverCount; ++r) lowest = std::min(lowest, normal.dot(receiver[r] - origin));
-  std::vector<Eigen::Vector2d> points;
-  points.reserve(static_cast<std::size_t>(cornerCount * receiverCount));
+  for (int r = 0; r < receiverCount; ++r) {
+    heights[r] = normal.dot(receiver[r] - origin);
+    lowest = std::min(lowest, heights[r]);
+  }
+  std::array<Eigen::Vector2d, kMaxPoints> points;
+  int n = 0;
   for (int c = 0; c < cornerCount; ++c) {
     const double h = normal.dot(corners[c] - origin);
     if (h < -eps || !(h < lowest - eps)) return false;
     for (int r = 0; r < receiverCount; ++r) {
-      const double hr = normal.dot(receiver[r] - origin);
-      const Vec3 x = receiver[r] + (corners[c] - receiver[r]) * (hr / (hr - h));
-      points.push_back({u_.dot(x - origin), v_.dot(x - origin)});
+      const Vec3 x = receiver[r] + (corners[c] - receiver[r]) * (heights[r] / (heights[r] - h)) - origin;
+      points[static_cast<std::size_t>(n++)] = {u_.dot(x), v_.dot(x)};
     }
   }
-  // Andrew's monotone chain.
-  std::sort(points.begin(), points.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  // Andrew's monotone chain (at most n + 1 entries while it runs: the last repeats the first).
+  std::sort(points.begin(), points.begin() + n, [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
     return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
   });
-  std::vector<Eigen::Vector2d> hull(2 * points.size());
-  std::size_t h = 0;
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    while (h >= 2 && cross2(hull[h - 2], hull[h - 1], points[k]) <= 0) --h;
-    hull[h++] = points[k];
+  std::array<Eigen::Vector2d, kMaxPoints + 1> chain;
+  int h = 0;
+  for (int k = 0; k < n; ++k) {
+    while (h >= 2 && cross2(chain[static_cast<std::size_t>(h - 2)], chain[static_cast<std::size_t>(h - 1)],
+                            points[static_cast<std::size_t>(k)]) <= 0)
+      --h;
+    chain[static_cast<std::size_t>(h++)] = points[static_cast<std::size_t>(k)];
   }
-  for (std::size_t k = points.size() - 1, lower = h + 1; k-- > 0;) {
-    while (h >= lower && cross2(hull[h - 2], hull[h - 1], points[k]) <= 0) --h;
-    hull[h++] = points[k];
+  for (int k = n - 1, lower = h + 1; k-- > 0;) {
+    while (h >= lower &&
+           cross2(chain[static_cast<std::size_t>(h - 2)], chain[static_cast<std::size_t>(h - 1)],
+                  points[static_cast<std::size_t>(k)]) <= 0)
+      --h;
+    chain[static_cast<std::size_t>(h++)] = points[static_cast<std::size_t>(k)];
   }
   if (h < 4) return false;  // fewer than three corners: a degenerate region, left to the hull test
-  hull_.assign(hull.begin(), hull.begin() + static_cast<std::ptrdiff_t>(h - 1));
+  count_ = h - 1;
+  std::copy(chain.begin(), chain.begin() + count_, hull_.begin());
   return true;
 }
 
 bool PenumbraRegion::meets(const Vec3* polygon, int count) const {
-  if (hull_.empty()) return true;
+  if (count_ == 0) return true;
   Eigen::Vector2d flat[8];
   if (count > 8) return true;
   for (int k = 0; k < count; ++k) flat[k] = {u_.dot(polygon[k] - origin_), v_.dot(polygon[k] - origin_)};
@@ -65,7 +75,7 @@ bool PenumbraRegion::meets(const Vec3* polygon, int count) const {
       if (sign * (edge.x() * (points[k] - a).y() - edge.y() * (points[k] - a).x()) >= -margin) return false;
     return true;
   };
-  const int m = static_cast<int>(hull_.size());
+  const int m = count_;
   for (int k = 0; k < m; ++k)
     if (separates(hull_[static_cast<std::size_t>(k)], hull_[static_cast<std::size_t>((k + 1) % m)], flat,
                   count, 1.0))

@@ -13,7 +13,7 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <vector>
+#include <array>
 
 #include "core/vec.h"
 
@@ -23,7 +23,8 @@ class PenumbraRegion {
  public:
   // `corners`: the solid's; `receiver`: the receiver's corners; the plane through `origin` with unit
   // `normal`, the receiver in front of it. False (and no region) when some corner of the solid lies behind
-  // the plane or not strictly below some receiver corner (the region is unbounded then).
+  // the plane or not strictly below some receiver corner (the region is unbounded then), or when there are
+  // more than 64 projections.
   bool build(const Vec3* corners, int cornerCount, const Vec3* receiver, int receiverCount,
              const Vec3& origin, const Vec3& normal, double eps);
   // False only when the convex polygon, lying in the plane, is wholly outside the region by more than eps
@@ -33,7 +34,11 @@ class PenumbraRegion {
  private:
   Vec3 origin_ = Vec3::Zero(), u_ = Vec3::Zero(), v_ = Vec3::Zero();
   double eps_ = 0;
-  std::vector<Eigen::Vector2d> hull_;  // counter-clockwise about the plane's normal
+  // Counter-clockwise about the plane's normal. Fixed room: one region is made for every occluded pair, and
+  // the heap would cost more than the hull.
+  static constexpr int kMaxPoints = 64;
+  std::array<Eigen::Vector2d, kMaxPoints> hull_;
+  int count_ = 0;
 };
 
 }  // namespace rt
