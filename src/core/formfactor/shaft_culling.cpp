@@ -16,6 +16,8 @@ constexpr std::size_t kMaxTabulatedPatches = 4096;
 // Patch-against-plane tests spent on finding which patches can block at all (a million separate faces in
 // distinct planes would otherwise cost a million squared).
 constexpr long kMaxPlaneTests = 20'000'000;
+// Entries of the blockers' side tables (a byte each): (patches + elements) x blockers.
+constexpr std::size_t kMaxSideTable = 16'000'000;
 
 double cross2(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
@@ -118,6 +120,25 @@ ShaftCulling::ShaftCulling(const Mesh& mesh) : mesh_(mesh) {
   std::vector<Eigen::AlignedBox3d> boxes;
   for (int k : blockers_) boxes.push_back(patches_[static_cast<std::size_t>(k)].box);
   tree_ = BoxTree(std::move(boxes));
+  // Every pair asks the same few sides of the same few blockers: tabulated when the tables are small.
+  const std::size_t B = blockers_.size();
+  if (B > 0 && (P + n) * B <= kMaxSideTable) {
+    blockerIndex_.assign(P, -1);
+    for (std::size_t t = 0; t < B; ++t)
+      blockerIndex_[static_cast<std::size_t>(blockers_[t])] = static_cast<int>(t);
+    patchSides_.resize(P * B);
+    elementSides_.resize(n * B);
+    tbb::parallel_for(std::size_t(0), P, [&](std::size_t a) {
+      for (std::size_t t = 0; t < B; ++t)
+        patchSides_[a * B + t] =
+            static_cast<std::uint8_t>(sideOfPatch(blockers_[t], static_cast<int>(a)) |
+                                      sideOfPatch(static_cast<int>(a), blockers_[t]) << 2);
+    });
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t e) {
+      for (std::size_t t = 0; t < B; ++t)
+        elementSides_[e * B + t] = sideOfElement(static_cast<int>(e), blockers_[t]);
+    });
+  }
 
   if (anyOccluder_ && P <= kMaxTabulatedPatches && n >= 2 * P) {
     pairCandidates_.assign(P * P, {});
@@ -152,9 +173,23 @@ std::uint8_t ShaftCulling::sideOfElement(int e, int plane) const {
 
 bool ShaftCulling::patchMayBlock(int k, int a, int b) const {
   if (k == a || k == b) return false;
+  if (!patchSides_.empty()) {
+    const std::size_t B = blockers_.size(),
+                      t = static_cast<std::size_t>(blockerIndex_[static_cast<std::size_t>(k)]);
+    const std::uint8_t sa = patchSides_[static_cast<std::size_t>(a) * B + t],
+                       sb = patchSides_[static_cast<std::size_t>(b) * B + t];
+    if (!(sa & kFront) || !(sb & kFront)) return false;
+    return (((sa >> 2) | (sb >> 2)) & kBoth) == kBoth;
+  }
   if (!(sideOfPatch(k, a) & kFront) || !(sideOfPatch(k, b) & kFront)) return false;
   // Never both strictly in front of k's plane and strictly behind it: k cannot separate them.
   return ((sideOfPatch(a, k) | sideOfPatch(b, k)) & kBoth) == kBoth;
+}
+
+std::uint8_t ShaftCulling::elementSide(int e, int k) const {
+  if (elementSides_.empty()) return sideOfElement(e, k);
+  return elementSides_[static_cast<std::size_t>(e) * blockers_.size() +
+                       static_cast<std::size_t>(blockerIndex_[static_cast<std::size_t>(k)])];
 }
 
 std::vector<int> ShaftCulling::patchPairCandidates(int a, int b) const {
@@ -179,7 +214,7 @@ bool ShaftCulling::visitBlockers(int i, int j, Visit&& visit) const {
   // The element-level form of (1) and (3) for a patch that passed the patch-level test.
   auto blocks = [&](int k) {
     if (!BoxTree::overlaps(shaft, patches_[static_cast<std::size_t>(k)].box, eps_)) return false;
-    return ((sideOfElement(i, k) | sideOfElement(j, k)) & kBoth) == kBoth;
+    return ((elementSide(i, k) | elementSide(j, k)) & kBoth) == kBoth;
   };
   if (!pairCandidates_.empty()) {
     for (int k : pairCandidates_[static_cast<std::size_t>(std::min(a, b)) * patchCount_ +
@@ -224,7 +259,7 @@ bool ShaftCulling::visitPointBlockers(const Vec3& point, const Vec3& normal, int
     const PatchInfo& p = patches_[static_cast<std::size_t>(k)];
     const double d = p.normal.dot(point - p.point);
     const std::uint8_t pointSide = d > eps_ ? kFront : d < -eps_ ? kBack : kOn;
-    return ((pointSide | sideOfElement(j, k)) & kBoth) == kBoth && visit(k);
+    return ((pointSide | elementSide(j, k)) & kBoth) == kBoth && visit(k);
   });
 }
 

@@ -50,6 +50,7 @@ class ShaftCulling {
   std::uint8_t sideOfPatch(int k, int plane) const;    // patch k against patch plane's plane
   std::uint8_t sideOfElement(int e, int plane) const;  // element e against a patch's plane
   bool patchMayBlock(int k, int a, int b) const;       // (2) and (3) for whole patches
+  std::uint8_t elementSide(int e, int k) const;        // sideOfElement(e, k) for a blocker k, from the table
   std::vector<int> patchPairCandidates(int a, int b) const;
   // Calls visit(k) for each patch k that may block some segment from element i to j, until visit returns
   // true; returns whether it did. The one test behind mayBeOccluded(i, j) and candidates().
@@ -61,8 +62,12 @@ class ShaftCulling {
 
   const Mesh& mesh_;
   std::vector<PatchInfo> patches_;
-  std::vector<int> blockers_;  // the patches with something strictly behind their plane
-  BoxTree tree_;               // over the blockers' boxes (tree index t is patch blockers_[t])
+  std::vector<int> blockers_;      // the patches with something strictly behind their plane
+  std::vector<int> blockerIndex_;  // per patch: its index in blockers_, or -1 (with the tables only)
+  // Per patch a and blocker t: sideOfPatch(k, a) | sideOfPatch(a, k) << 2; per element e and blocker t:
+  // sideOfElement(e, k). Empty when they would be too large.
+  std::vector<std::uint8_t> patchSides_, elementSides_;
+  BoxTree tree_;  // over the blockers' boxes (tree index t is patch blockers_[t])
   std::vector<Eigen::AlignedBox3d> elementBoxes_;
   std::vector<int> elementPatch_;
   // Per patch pair a < b (only when patches have several elements each): the patches that may block.
