@@ -27,6 +27,8 @@
 #include <optional>
 #include <vector>
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/analytic_method.h"
 #include "core/formfactor/closed_solids.h"
@@ -342,6 +344,16 @@ class QuadratureMethod : public FormFactorMethod {
     }
     std::atomic<long> points{0}, clipped{0}, contours{0}, budgetPairs{0}, occludedPairs{0}, hiddenPairs{0};
 
+    // Per thread: the pair's working vectors, kept from pair to pair.
+    struct PairScratch {
+      std::vector<int> candidates;
+      std::vector<Vec3> crossings;
+      std::vector<SmallPolygon> pieces, next;
+      std::vector<SourcePanel> panels;
+      std::vector<OccluderPolygon> occluders;
+    };
+    tbb::enumerable_thread_specific<PairScratch> scratches;
+
     auto integrate = [&](int i, int j) {
       PairResult result;
       PairWork work;
@@ -356,6 +368,29 @@ class QuadratureMethod : public FormFactorMethod {
       clipToFront(b.v.data(), b.count, a.v[0], ni, 1e-12 * scale, receiver);
       clipToFront(a.v.data(), a.count, b.v[0], nj, 1e-12 * scale, source);
       if (source.count < 3 || receiver.count < 3) return result;
+      PairScratch& scratch = scratches.local();
+      std::vector<int>& candidates = scratch.candidates;
+      candidates.clear();
+      shafts.candidates(i, j, candidates);
+      // A block between them that cuts every segment from one to the other (most occluded pairs of a room
+      // with blocks in it): proven from its cross-sections alone, before anything else is prepared.
+      if (!candidates.empty() && !solids.empty()) {
+        const double eps = shadowEps(source, receiver);
+        int last = -1;
+        for (int k : candidates) {
+          const int solid = solidOf[static_cast<std::size_t>(k)];
+          if (solid < 0 || solid == last) continue;
+          last = solid;
+          if (solidCutsEverySegment(source.v.data(), source.count, receiver.v.data(), receiver.count,
+                                    solids[static_cast<std::size_t>(solid)],
+                                    solidCentres[static_cast<std::size_t>(solid)], eps, scratch.crossings)) {
+            result.needsVisibility = true;
+            ++occludedPairs;
+            ++hiddenPairs;
+            return result;
+          }
+        }
+      }
       ReceiverBound bound{receiver.v[0], nj, Vec3::Zero(), 0, 0};
       Vec3 twice = Vec3::Zero();
       for (int k = 0; k < receiver.count; ++k) {
@@ -369,14 +404,16 @@ class QuadratureMethod : public FormFactorMethod {
             std::max(bound.radius, (receiver.v[static_cast<std::size_t>(k)] - bound.centre).norm());
       bound.area = 0.5 * twice.norm();
 
-      std::vector<SmallPolygon> pieces{source}, next;
+      std::vector<SmallPolygon>&pieces = scratch.pieces, &next = scratch.next;
+      pieces.assign(1, source);
       for (int s : elementSolids[static_cast<std::size_t>(i)]) {
         next.clear();
         for (const SmallPolygon& piece : pieces)
           piecesOutside(piece, solids[static_cast<std::size_t>(s)], 1e-12 * scale, next);
         pieces.swap(next);
       }
-      std::vector<SourcePanel> panels;
+      std::vector<SourcePanel>& panels = scratch.panels;
+      panels.clear();
       for (const SmallPolygon& piece : pieces) {
         std::array<SourcePanel, SmallPolygon::kCapacity> fan;
         const int made = panelsOf(piece.v.data(), piece.count, fan.data(), SmallPolygon::kCapacity);
@@ -387,11 +424,10 @@ class QuadratureMethod : public FormFactorMethod {
       for (int p = 0; p < panelCount && !near; ++p)
         near = panelGap(panels[static_cast<std::size_t>(p)], bound) <
                kNearSizes * panels[static_cast<std::size_t>(p)].longestEdge();
-      std::vector<int> candidates;
-      shafts.candidates(i, j, candidates);
       std::optional<ShadowClipper> clipper;
       if (!candidates.empty()) {
-        std::vector<OccluderPolygon> occluders;
+        std::vector<OccluderPolygon>& occluders = scratch.occluders;
+        occluders.clear();
         for (int k : candidates) {
           if (convex[static_cast<std::size_t>(k)])
             occluders.push_back({&shafts.outline(k), solidOf[static_cast<std::size_t>(k)]});

@@ -55,11 +55,8 @@ ShadowClipper::ShadowClipper(const SmallPolygon& source, const Vec3& sourceNorma
       solids_(solids),
       solidCentres_(solidCentres),
       shapes_(shapes) {
-  const Vec3 cs = centreOf(source), cr = centreOf(receiver);
-  double size = (cs - cr).norm();
-  for (int k = 0; k < source.count; ++k)
-    size = std::max(size, (source.v[static_cast<std::size_t>(k)] - cr).norm());
-  eps_ = 1e-10 * size;
+  eps_ = shadowEps(source, receiver);
+  const double size = 1e10 * eps_;
   // A solid reaching behind either plane has faces clipped there (and a cap missing): it is cut face by
   // face. One wholly in front needs no clipping, and hidden() cuts it by its silhouette.
   if (shapes_) whole_.assign(shapes_->size(), -1);

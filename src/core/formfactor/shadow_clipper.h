@@ -47,6 +47,18 @@ bool polygonCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, in
 // A closed convex solid (a block with its bottom): the outward planes of its faces (unit normal, offset).
 using SolidPlanes = std::vector<std::pair<Vec3, double>>;
 
+// True when the closed convex solid (`centre` inside it) cuts every segment from the convex polygon `from`
+// to the convex polygon `to` with a margin `eps`: the crossings of the corner-to-corner segments with one of
+// its cross-sections through the centre (across the line of sight, or parallel to a face) all lie inside it.
+// Every such segment crosses that plane in the hull of those crossings. `scratch` is working space.
+bool solidCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
+                           const SolidPlanes& solid, const Vec3& centre, double eps,
+                           std::vector<Vec3>& scratch);
+
+// The margin (a length) the shadow clipper's tests use between a source and a receiver: 1e-10 of the pair's
+// size.
+double shadowEps(const SmallPolygon& source, const SmallPolygon& receiver);
+
 // An occluder: a convex polygon, counter-clockwise seen from its front, and the closed convex solid it
 // bounds (or -1). A segment from a point outside such a solid that crosses it enters through a face the
 // point is in front of, so from there the faces it sees from behind need not be clipped.
@@ -103,9 +115,6 @@ class ShadowClipper {
   // Outward face planes (unit normal, offset) of the convex hull of the points a and b.
   void hullPlanes(const Vec3* a, int na, const Vec3* b, int nb) const;
   bool outsideHull(const Occluder& o) const;
-  // The crossings of the plane (unit normal, offset) by the corner-to-corner segments, into crossings_;
-  // false unless the panel is strictly on the back and the receiver strictly on the front or vice versa.
-  bool crossings(const Vec3* panel, int count, const Vec3& normal, double offset) const;
   // Cuts the shadow of the cone from x (`m` inward side planes) out of pieces_, adding the form factor of the
   // cut parts to `sum`, and keeps the parts left for the next cone unless this one is the `last`. Returns
   // whether any part is left.
@@ -122,8 +131,8 @@ class ShadowClipper {
   const std::vector<Vec3>* solidCentres_;
   const std::vector<SolidShape>* shapes_;
   std::vector<signed char> whole_;  // per solid: wholly in front of both planes (1), cut by its silhouette
-  mutable std::vector<Vec3> crossings_;
-  mutable std::vector<Vec3> probed_;  // probeShadow(): the solids' corners probed already
+  mutable std::vector<Vec3> crossings_;  // hidesAll()'s working space
+  mutable std::vector<Vec3> probed_;     // probeShadow(): the solids' corners probed already
   std::vector<Occluder> prepared_;
   std::vector<int> all_;
   mutable std::vector<std::pair<Vec3, double>> planes_;

@@ -33,24 +33,60 @@ bool polygonCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, in
   return true;
 }
 
-bool ShadowClipper::crossings(const Vec3* panel, int count, const Vec3& normal, double offset) const {
-  crossings_.clear();
+namespace {
+
+// The crossings of the plane (normal, offset) by the segments from each corner of `from` to each corner of
+// `to`, into `out`; false unless `from` lies strictly on one side and `to` strictly on the other.
+bool crossings(const Vec3* from, int fromCount, const Vec3* to, int toCount, const Vec3& normal,
+               double offset, double eps, std::vector<Vec3>& out) {
+  out.clear();
+  if (toCount > SmallPolygon::kCapacity) return false;
   double sign = 0;
   double heights[SmallPolygon::kCapacity];
-  for (int k = 0; k < receiver_.count; ++k) {
-    heights[k] = normal.dot(receiver_.v[static_cast<std::size_t>(k)]) - offset;
-    if (std::abs(heights[k]) <= eps_ || (sign != 0 && heights[k] * sign < 0)) return false;
+  for (int k = 0; k < toCount; ++k) {
+    heights[k] = normal.dot(to[k]) - offset;
+    if (std::abs(heights[k]) <= eps || (sign != 0 && heights[k] * sign < 0)) return false;
     sign = heights[k];
   }
-  for (int p = 0; p < count; ++p) {
-    const double h = normal.dot(panel[p]) - offset;
-    if (!(h * sign < 0) || std::abs(h) <= eps_) return false;
-    for (int k = 0; k < receiver_.count; ++k) {
-      const Vec3& r = receiver_.v[static_cast<std::size_t>(k)];
-      crossings_.push_back(panel[p] + (r - panel[p]) * (h / (h - heights[k])));
-    }
+  for (int p = 0; p < fromCount; ++p) {
+    const double h = normal.dot(from[p]) - offset;
+    if (!(h * sign < 0) || std::abs(h) <= eps) return false;
+    for (int k = 0; k < toCount; ++k) out.push_back(from[p] + (to[k] - from[p]) * (h / (h - heights[k])));
   }
   return true;
+}
+
+}  // namespace
+
+double shadowEps(const SmallPolygon& source, const SmallPolygon& receiver) {
+  const Vec3 cs = centreOf(source), cr = centreOf(receiver);
+  double size = (cs - cr).norm();
+  for (int k = 0; k < source.count; ++k)
+    size = std::max(size, (source.v[static_cast<std::size_t>(k)] - cr).norm());
+  return 1e-10 * size;
+}
+
+bool solidCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
+                           const SolidPlanes& solid, const Vec3& centre, double eps,
+                           std::vector<Vec3>& scratch) {
+  if (fromCount < 1 || toCount < 1) return false;
+  Vec3 fromCentre = Vec3::Zero(), toCentre = Vec3::Zero();
+  for (int p = 0; p < fromCount; ++p) fromCentre += from[p];
+  for (int p = 0; p < toCount; ++p) toCentre += to[p];
+  const Vec3 sight = (toCentre / toCount - fromCentre / fromCount).normalized();
+  for (std::size_t plane = 0; plane <= solid.size(); ++plane) {
+    const Vec3 normal = plane == 0 ? sight : solid[plane - 1].first;
+    if (!crossings(from, fromCount, to, toCount, normal, normal.dot(centre), eps, scratch)) continue;
+    bool inside = true;
+    for (std::size_t c = 0; c < scratch.size() && inside; ++c)
+      for (const auto& [n, offset] : solid)
+        if (!(n.dot(scratch[c]) - offset < -eps)) {
+          inside = false;
+          break;
+        }
+    if (inside) return true;
+  }
+  return false;
 }
 
 bool ShadowClipper::hidesAll(const Vec3* panel, int count, const std::vector<int>& occluders) const {
@@ -60,27 +96,13 @@ bool ShadowClipper::hidesAll(const Vec3* panel, int count, const std::vector<int
     if (polygonCutsEverySegment(panel, count, receiver_.v.data(), receiver_.count, o.polygon.v.data(),
                                 o.polygon.count, o.normal, o.normal.dot(o.centre), eps_))
       return true;
-    // A block's faces may share the segments between them; its cross-sections through its centre, across
-    // the line of sight and parallel to each face, hold them all.
+    // A block's faces may share the segments between them; its cross-sections hold them all.
     if (o.solid < 0 || o.solid == lastSolid || !solidCentres_) continue;
     lastSolid = o.solid;
-    const SolidPlanes& solid = solids_[static_cast<std::size_t>(o.solid)];
-    const Vec3& centre = (*solidCentres_)[static_cast<std::size_t>(o.solid)];
-    Vec3 panelCentre = Vec3::Zero();
-    for (int p = 0; p < count; ++p) panelCentre += panel[p];
-    const Vec3 sight = (centreOf(receiver_) - panelCentre / count).normalized();
-    for (std::size_t plane = 0; plane <= solid.size(); ++plane) {
-      const Vec3 normal = plane == 0 ? sight : solid[plane - 1].first;
-      if (!crossings(panel, count, normal, normal.dot(centre))) continue;
-      bool inside = true;
-      for (std::size_t c = 0; c < crossings_.size() && inside; ++c)
-        for (const auto& [n, offset] : solid)
-          if (!(n.dot(crossings_[c]) - offset < -eps_)) {
-            inside = false;
-            break;
-          }
-      if (inside) return true;
-    }
+    if (solidCutsEverySegment(panel, count, receiver_.v.data(), receiver_.count,
+                              solids_[static_cast<std::size_t>(o.solid)],
+                              (*solidCentres_)[static_cast<std::size_t>(o.solid)], eps_, crossings_))
+      return true;
   }
   return false;
 }
