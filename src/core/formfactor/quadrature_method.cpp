@@ -347,7 +347,6 @@ class QuadratureMethod : public FormFactorMethod {
     // Per thread: the pair's working vectors, kept from pair to pair.
     struct PairScratch {
       std::vector<int> candidates;
-      std::vector<Vec3> crossings;
       std::vector<SmallPolygon> pieces, next;
       std::vector<SourcePanel> panels;
       std::vector<OccluderPolygon> occluders;
@@ -383,7 +382,7 @@ class QuadratureMethod : public FormFactorMethod {
           last = solid;
           if (solidCutsEverySegment(source.v.data(), source.count, receiver.v.data(), receiver.count,
                                     solids[static_cast<std::size_t>(solid)],
-                                    solidCentres[static_cast<std::size_t>(solid)], eps, scratch.crossings)) {
+                                    solidCentres[static_cast<std::size_t>(solid)], eps)) {
             result.needsVisibility = true;
             ++occludedPairs;
             ++hiddenPairs;

@@ -50,10 +50,9 @@ using SolidPlanes = std::vector<std::pair<Vec3, double>>;
 // True when the closed convex solid (`centre` inside it) cuts every segment from the convex polygon `from`
 // to the convex polygon `to` with a margin `eps`: the crossings of the corner-to-corner segments with one of
 // its cross-sections through the centre (across the line of sight, or parallel to a face) all lie inside it.
-// Every such segment crosses that plane in the hull of those crossings. `scratch` is working space.
+// Every such segment crosses that plane in the hull of those crossings.
 bool solidCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
-                           const SolidPlanes& solid, const Vec3& centre, double eps,
-                           std::vector<Vec3>& scratch);
+                           const SolidPlanes& solid, const Vec3& centre, double eps);
 
 // The margin (a length) the shadow clipper's tests use between a source and a receiver: 1e-10 of the pair's
 // size.
@@ -130,9 +129,8 @@ class ShadowClipper {
   const std::vector<SolidPlanes>& solids_;
   const std::vector<Vec3>* solidCentres_;
   const std::vector<SolidShape>* shapes_;
-  std::vector<signed char> whole_;  // per solid: wholly in front of both planes (1), cut by its silhouette
-  mutable std::vector<Vec3> crossings_;  // hidesAll()'s working space
-  mutable std::vector<Vec3> probed_;     // probeShadow(): the solids' corners probed already
+  std::vector<signed char> whole_;    // per solid: wholly in front of both planes (1), cut by its silhouette
+  mutable std::vector<Vec3> probed_;  // probeShadow(): the solids' corners probed already
   std::vector<Occluder> prepared_;
   std::vector<int> all_;
   mutable std::vector<std::pair<Vec3, double>> planes_;

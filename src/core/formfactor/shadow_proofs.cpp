@@ -33,31 +33,6 @@ bool polygonCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, in
   return true;
 }
 
-namespace {
-
-// The crossings of the plane (normal, offset) by the segments from each corner of `from` to each corner of
-// `to`, into `out`; false unless `from` lies strictly on one side and `to` strictly on the other.
-bool crossings(const Vec3* from, int fromCount, const Vec3* to, int toCount, const Vec3& normal,
-               double offset, double eps, std::vector<Vec3>& out) {
-  out.clear();
-  if (toCount > SmallPolygon::kCapacity) return false;
-  double sign = 0;
-  double heights[SmallPolygon::kCapacity];
-  for (int k = 0; k < toCount; ++k) {
-    heights[k] = normal.dot(to[k]) - offset;
-    if (std::abs(heights[k]) <= eps || (sign != 0 && heights[k] * sign < 0)) return false;
-    sign = heights[k];
-  }
-  for (int p = 0; p < fromCount; ++p) {
-    const double h = normal.dot(from[p]) - offset;
-    if (!(h * sign < 0) || std::abs(h) <= eps) return false;
-    for (int k = 0; k < toCount; ++k) out.push_back(from[p] + (to[k] - from[p]) * (h / (h - heights[k])));
-  }
-  return true;
-}
-
-}  // namespace
-
 double shadowEps(const SmallPolygon& source, const SmallPolygon& receiver) {
   const Vec3 cs = centreOf(source), cr = centreOf(receiver);
   double size = (cs - cr).norm();
@@ -67,23 +42,38 @@ double shadowEps(const SmallPolygon& source, const SmallPolygon& receiver) {
 }
 
 bool solidCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
-                           const SolidPlanes& solid, const Vec3& centre, double eps,
-                           std::vector<Vec3>& scratch) {
-  if (fromCount < 1 || toCount < 1) return false;
+                           const SolidPlanes& solid, const Vec3& centre, double eps) {
+  if (fromCount < 1 || toCount < 1 || toCount > SmallPolygon::kCapacity) return false;
   Vec3 fromCentre = Vec3::Zero(), toCentre = Vec3::Zero();
   for (int p = 0; p < fromCount; ++p) fromCentre += from[p];
   for (int p = 0; p < toCount; ++p) toCentre += to[p];
   const Vec3 sight = (toCentre / toCount - fromCentre / fromCount).normalized();
+  double heights[SmallPolygon::kCapacity];
   for (std::size_t plane = 0; plane <= solid.size(); ++plane) {
     const Vec3 normal = plane == 0 ? sight : solid[plane - 1].first;
-    if (!crossings(from, fromCount, to, toCount, normal, normal.dot(centre), eps, scratch)) continue;
-    bool inside = true;
-    for (std::size_t c = 0; c < scratch.size() && inside; ++c)
-      for (const auto& [n, offset] : solid)
-        if (!(n.dot(scratch[c]) - offset < -eps)) {
-          inside = false;
-          break;
-        }
+    const double offset = normal.dot(centre);
+    // `to` strictly on one side of the plane, `from` strictly on the other.
+    double sign = 0;
+    bool separated = true;
+    for (int k = 0; k < toCount && separated; ++k) {
+      heights[k] = normal.dot(to[k]) - offset;
+      separated = std::abs(heights[k]) > eps && !(sign != 0 && heights[k] * sign < 0);
+      sign = heights[k];
+    }
+    // Each crossing strictly inside every face plane, the first one outside ending this cross-section.
+    bool inside = separated;
+    for (int p = 0; p < fromCount && inside; ++p) {
+      const double h = normal.dot(from[p]) - offset;
+      inside = h * sign < 0 && std::abs(h) > eps;
+      for (int k = 0; k < toCount && inside; ++k) {
+        const Vec3 crossing = from[p] + (to[k] - from[p]) * (h / (h - heights[k]));
+        for (const auto& [n, faceOffset] : solid)
+          if (!(n.dot(crossing) - faceOffset < -eps)) {
+            inside = false;
+            break;
+          }
+      }
+    }
     if (inside) return true;
   }
   return false;
@@ -101,7 +91,7 @@ bool ShadowClipper::hidesAll(const Vec3* panel, int count, const std::vector<int
     lastSolid = o.solid;
     if (solidCutsEverySegment(panel, count, receiver_.v.data(), receiver_.count,
                               solids_[static_cast<std::size_t>(o.solid)],
-                              (*solidCentres_)[static_cast<std::size_t>(o.solid)], eps_, crossings_))
+                              (*solidCentres_)[static_cast<std::size_t>(o.solid)], eps_))
       return true;
   }
   return false;
