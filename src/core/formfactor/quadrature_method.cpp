@@ -24,7 +24,6 @@
 #include <cstdio>
 #include <functional>
 #include <memory>
-#include <optional>
 #include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -352,6 +351,7 @@ class QuadratureMethod : public FormFactorMethod {
       std::vector<OccluderPolygon> occluders;
     };
     tbb::enumerable_thread_specific<PairScratch> scratches;
+    tbb::enumerable_thread_specific<ShadowClipper> clippers(std::cref(solids), &solidCentres, &shapes);
 
     auto integrate = [&](int i, int j) {
       PairResult result;
@@ -423,7 +423,7 @@ class QuadratureMethod : public FormFactorMethod {
       for (int p = 0; p < panelCount && !near; ++p)
         near = panelGap(panels[static_cast<std::size_t>(p)], bound) <
                kNearSizes * panels[static_cast<std::size_t>(p)].longestEdge();
-      std::optional<ShadowClipper> clipper;
+      ShadowClipper* clipper = nullptr;
       if (!candidates.empty()) {
         std::vector<OccluderPolygon>& occluders = scratch.occluders;
         occluders.clear();
@@ -434,8 +434,9 @@ class QuadratureMethod : public FormFactorMethod {
             for (int e : patchElements[static_cast<std::size_t>(k)])
               occluders.push_back({&elementPolygons[static_cast<std::size_t>(e)], -1});
         }
-        clipper.emplace(source, ni, receiver, nj, occluders, solids, &solidCentres, &shapes);
-        if (clipper->occluders().empty()) clipper.reset();
+        clipper = &clippers.local();
+        clipper->prepare(source, ni, receiver, nj, occluders);
+        if (clipper->occluders().empty()) clipper = nullptr;
       }
       if (clipper) {
         result.needsVisibility = true;

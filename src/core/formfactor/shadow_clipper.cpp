@@ -44,17 +44,29 @@ void clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& norm
   if (out.count < 3) out.count = 0;
 }
 
+ShadowClipper::ShadowClipper(const std::vector<SolidPlanes>& solids, const std::vector<Vec3>* solidCentres,
+                             const std::vector<SolidShape>* shapes)
+    : solids_(solids), solidCentres_(solidCentres), shapes_(shapes) {}
+
 ShadowClipper::ShadowClipper(const SmallPolygon& source, const Vec3& sourceNormal,
                              const SmallPolygon& receiver, const Vec3& receiverNormal,
                              const std::vector<OccluderPolygon>& occluders,
                              const std::vector<SolidPlanes>& solids, const std::vector<Vec3>* solidCentres,
                              const std::vector<SolidShape>* shapes)
-    : receiver_(receiver),
-      sourceOrigin_(source.v[0]),
-      sourceNormal_(sourceNormal),
-      solids_(solids),
-      solidCentres_(solidCentres),
-      shapes_(shapes) {
+    : ShadowClipper(solids, solidCentres, shapes) {
+  prepare(source, sourceNormal, receiver, receiverNormal, occluders);
+}
+
+void ShadowClipper::prepare(const SmallPolygon& source, const Vec3& sourceNormal,
+                            const SmallPolygon& receiver, const Vec3& receiverNormal,
+                            const std::vector<OccluderPolygon>& occluders) {
+  copyPolygon(receiver, receiver_);
+  sourceOrigin_ = source.v[0];
+  sourceNormal_ = sourceNormal;
+  prepared_.clear();
+  all_.clear();
+  whole_.clear();
+  penumbraMade_.clear();
   eps_ = shadowEps(source, receiver);
   const double size = 1e10 * eps_;
   // A solid reaching behind either plane has faces clipped there (and a cap missing): it is cut face by
@@ -169,8 +181,8 @@ bool ShadowClipper::outsideHull(const Occluder& o) const {
 
 const PenumbraRegion* ShadowClipper::penumbra(int solid) const {
   if (solid < 0 || whole_.empty() || whole_[static_cast<std::size_t>(solid)] != 1) return nullptr;
-  if (penumbrae_.empty()) {
-    penumbrae_.resize(whole_.size());
+  if (penumbraMade_.empty()) {
+    if (penumbrae_.size() < whole_.size()) penumbrae_.resize(whole_.size());
     penumbraMade_.assign(whole_.size(), -1);
   }
   signed char& made = penumbraMade_[static_cast<std::size_t>(solid)];

@@ -79,6 +79,14 @@ class ShadowClipper {
                 const Vec3& receiverNormal, const std::vector<OccluderPolygon>& occluders,
                 const std::vector<SolidPlanes>& solids, const std::vector<Vec3>* solidCentres = nullptr,
                 const std::vector<SolidShape>* shapes = nullptr);
+  // One to prepare() for pair after pair (its buffers kept: a method computing millions of pairs would
+  // otherwise spend as long in the heap as in the clipping).
+  explicit ShadowClipper(const std::vector<SolidPlanes>& solids,
+                         const std::vector<Vec3>* solidCentres = nullptr,
+                         const std::vector<SolidShape>* shapes = nullptr);
+  // What the first constructor does, for a new pair.
+  void prepare(const SmallPolygon& source, const Vec3& sourceNormal, const SmallPolygon& receiver,
+               const Vec3& receiverNormal, const std::vector<OccluderPolygon>& occluders);
 
   // Indices of the occluders kept (all of them may block).
   const std::vector<int>& occluders() const { return all_; }
