@@ -126,6 +126,24 @@ TEST(ShaftCulling, SubdividedPatchesUseTheirPatchPairsAndAgree) {
     }
 }
 
+// A wall of the room has the whole scene in front of its plane: it can never stand between two elements, so
+// it is never a candidate (the box tree holds only the faces of the block, so it is not even visited).
+TEST(ShaftCulling, OnlyTheBlocksFacesAreEverCandidates) {
+  constexpr int n = 10;
+  const Mesh mesh = test::meshOf(gridRoom(n), 1);
+  const ShaftCulling shafts(mesh);
+  std::vector<int> candidates;
+  int pairs = 0;
+  for (int i = 0; i < static_cast<int>(mesh.size()); i += 3)
+    for (int j = 1; j < static_cast<int>(mesh.size()); j += 4) {
+      candidates.clear();
+      shafts.candidates(i, j, candidates);
+      pairs += !candidates.empty();
+      for (int k : candidates) EXPECT_GE(k, 6 * n * n) << i << " " << j;
+    }
+  EXPECT_GT(pairs, 100);
+}
+
 TEST(ShaftCulling, AConvexRoomHasNoOccluder) {
   Scene room = gridRoom(6);
   room.patches.resize(6 * 36);  // without the block
