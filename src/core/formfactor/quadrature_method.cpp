@@ -219,8 +219,8 @@ class HiddenIntegral {
     // tolerance at 1 % is therefore never trusted on one comparison: it is split at least once. (A 3 x 3 rule
     // against the children's instead is fooled as well: errors of 1.5e-4 at a tolerance of 1e-6 on the grid
     // room.)
-    if (mixed && item.depth == 0 && item.value > kTrustedShare * tolerance_)
-      item.error = std::max(item.error, item.value);
+    const bool forced = mixed && item.depth == 0 && item.value > kTrustedShare * tolerance_;
+    if (forced) item.error = std::max(item.error, item.value);
     // No Gauss point saw a shadow, but one may fall on the panel's rim only (the shadow of a block's corner
     // reaching the last few percent of a wall element): the corners are looked at too, and a shadow seen
     // there counts as an error of its size.
@@ -236,7 +236,8 @@ class HiddenIntegral {
     // floor-to-ceiling pair) is seen by few sample points or none, by the panel's rule and its children's
     // alike. Probed where the occluders and the receiver line up: a probe that sees more than twice what
     // the samples give the panel on average means the samples missed it.
-    if (mixed && item.depth <= kMaxProbedDepth) {
+    // (A panel split anyway needs no probe: its children are probed.)
+    if (mixed && !forced && item.depth <= kMaxProbedDepth) {
       long probes = 0;
       const double probed = clipper_.probeShadow(item.panel, item.occluders, probes);
       work_.points += probes;
