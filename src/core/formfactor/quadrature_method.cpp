@@ -31,6 +31,7 @@
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/analytic_method.h"
 #include "core/formfactor/closed_solids.h"
+#include "core/formfactor/hidden_integral.h"
 #include "core/formfactor/pair_matrix.h"
 #include "core/formfactor/shadow_clipper.h"
 #include "core/formfactor/shaft_culling.h"
@@ -43,26 +44,6 @@ namespace {
 
 constexpr double kNearSizes = 1.0;  // closer than this many source sizes: exact contour integral
 constexpr int kMaxUnoccludedDepth = 6;
-constexpr int kMaxHiddenDepth = 10;
-constexpr long kMaxHiddenPoints = 60000;  // per pair
-// Panels probed for grazing shadows (ShadowClipper::probeShadow): the top ones and their children. Once a
-// probe has started the refinement, the rules' comparison carries it on. Measured on the 612-wall grid
-// room at 1e-5: largest floor-row error against the exact method 1.19e-5 unprobed, 8.0e-6 at depth 0,
-// 5.9e-6 at depth 1 and at every depth, which costs 1.25 x the work of depth 1.
-constexpr int kMaxProbedDepth = 1;
-// A top panel's hidden part up to this many times its tolerance is trusted on one comparison of rules (see
-// HiddenIntegral::push). Measured on the 2,400-wall grid room at 1e-5, largest floor-row error: 5.06e-6 at
-// 1 and 10, 9.1e-6 at 30, 1.6e-5 at 100.
-constexpr double kTrustedShare = 10;
-
-// Per pair, on one thread.
-struct PairWork {
-  long points = 0;    // Lambert evaluations
-  long clipped = 0;   // of them, at points where the receiver was clipped by occluders
-  long contours = 0;  // exact contour integrals
-  bool budgetReached = false;
-};
-
 double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound, const SmallPolygon& receiver,
                            const Vec3& normal, double tolerance, int depth, PairWork& work) {
   int n = gaussOrderFor(panel, bound, tolerance);
@@ -80,195 +61,6 @@ double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound,
   work.points += n * n;
   return sum;
 }
-
-// Globally adaptive: panels wait in a heap ordered by their error estimate (a panel's rule against the sum
-// of its four children's), and the worst is split until the estimates add up to less than the tolerance or
-// the work bound is reached. Local criteria (each panel its share of the tolerance) never end along a jump
-// of the integrand: the floor next to a block sees half the room just outside its footprint and nothing
-// under it, and a panel straddling that line errs in proportion to its own area however small it is. The
-// total error along such a line falls like the panels' size, so the global criterion ends.
-class HiddenIntegral {
- public:
-  // `unoccluded(panel, tolerance)`: int over the panel of F(dA_x -> receiver), for panels from which the
-  // whole receiver is hidden (there the hidden part is all of it).
-  using Unoccluded = std::function<double(const SourcePanel&, double)>;
-  // `sourceArea` turns the tolerance of the integral into one of F(dA -> receiver) at each point.
-  HiddenIntegral(const ShadowClipper& clipper, int order, Unoccluded unoccluded, double sourceArea,
-                 PairWork& work)
-      : clipper_(clipper),
-        order_(order),
-        unoccluded_(std::move(unoccluded)),
-        sourceArea_(sourceArea),
-        work_(work) {}
-
-  // int over the panels of F(dA_x -> hidden part), to `tolerance` (absolute, in the same units).
-  double operator()(const SourcePanel* panels, int count, double tolerance) {
-    tolerance_ = tolerance;
-    std::vector<Item> heap;
-    double done = 0;  // panels that no occluder can touch or that are wholly hidden, or at the depth bound
-    for (int p = 0; p < count; ++p) {
-      Item top{panels[p], {}, 0, 0, 0};
-      clipper_.cull(panels[p], clipper_.occluders(), top.occluders);
-      if (top.occluders.empty()) continue;
-      bool allHidden = true;
-      const double estimate = evaluate(top.panel, top.occluders, allHidden);
-      // Only a panel whose every point saw nothing of the receiver can be wholly hidden.
-      if (allHidden && clipper_.hidesAll(panels[p].v.data(), panels[p].count, top.occluders)) {
-        done += unoccluded_(panels[p], pointTolerance());
-        continue;
-      }
-      push(heap, std::move(top), estimate, allHidden);
-    }
-    auto byError = [](const Item& a, const Item& b) { return a.error < b.error; };
-    std::make_heap(heap.begin(), heap.end(), byError);
-    double error = 0;
-    for (const Item& item : heap) error += item.error;
-    while (!heap.empty() && error > tolerance) {
-      if (work_.points >= kMaxHiddenPoints) {
-        work_.budgetReached = true;
-        break;
-      }
-      std::pop_heap(heap.begin(), heap.end(), byError);
-      Item worst = std::move(heap.back());
-      heap.pop_back();
-      error -= worst.error;
-      if (worst.depth + 1 >= kMaxHiddenDepth) {
-        done += worst.value;
-        work_.budgetReached = true;
-        continue;
-      }
-      for (std::size_t c = 0; c < 4; ++c) {
-        Child& child = worst.children[c];
-        if (child.state != Child::Mixed) {
-          done += child.value;
-          continue;
-        }
-        Item next{child.panel, std::move(child.occluders), 0, 0, worst.depth + 1};
-        push(heap, std::move(next), child.value, child.allHidden);
-        error += heap.back().error;
-        std::push_heap(heap.begin(), heap.end(), byError);
-      }
-    }
-    for (const Item& item : heap) done += item.value;
-    return done;
-  }
-
- private:
-  struct Child {
-    enum State { Visible, Hidden, Mixed };
-    SourcePanel panel;
-    std::vector<int> occluders;
-    double value = 0;
-    State state = Visible;
-    bool allHidden = false;  // every point of its rule saw the receiver wholly hidden
-  };
-  struct Item {
-    SourcePanel panel;
-    std::vector<int> occluders;
-    double value = 0;  // the sum over its children
-    double error = 0;  // |children - own rule|
-    int depth = 0;
-    std::array<Child, 4> children;
-  };
-
-  // Clears `allHidden` when some point of the rule sees part of the receiver.
-  double evaluate(const SourcePanel& panel, const std::vector<int>& occluders, bool& allHidden) {
-    const int order = order_;
-    double sum = 0;
-    forEachGaussPoint(panel, order, [&](const Vec3& x, double w) {
-      bool hiddenHere = false;
-      sum += w * clipper_.hidden(x, occluders, &hiddenHere);
-      allHidden &= hiddenHere;
-    });
-    work_.points += order * order;
-    work_.clipped += order * order;
-    return sum;
-  }
-
-  // Evaluates the item's children and appends it (not yet in heap order) with its error estimate. A child
-  // that no occluder touches hides nothing, one whose receiver is wholly hidden hides all of it: both are
-  // exact (to the unoccluded rule's tolerance) and never split; only mixed children carry an error.
-  void push(std::vector<Item>& heap, Item item, double estimate, bool estimateAllHidden) {
-    const std::array<SourcePanel, 4> split = item.panel.split();
-    item.value = 0;
-    bool mixed = false, allHidden = estimateAllHidden;
-    for (std::size_t c = 0; c < 4; ++c) {
-      Child& child = item.children[c];
-      child.panel = split[c];
-      clipper_.cull(split[c], item.occluders, child.occluders);
-      if (child.occluders.empty()) {
-        child.state = Child::Visible;
-        child.value = 0;
-      } else {
-        child.allHidden = true;
-        child.value = evaluate(split[c], child.occluders, child.allHidden);
-        if (child.allHidden && clipper_.hidesAll(split[c].v.data(), split[c].count, child.occluders)) {
-          child.state = Child::Hidden;
-          child.value = unoccluded_(split[c], pointTolerance());
-        } else {
-          child.state = Child::Mixed;
-          allHidden &= child.allHidden;
-          mixed = true;
-        }
-      }
-      item.value += child.value;
-    }
-    item.error = std::abs(item.value - estimate);
-    // A 2 x 2 rule and its children's can agree by chance where a shadow's edge crosses the panel (measured:
-    // 1 % of a hidden part past a block's corner). A top panel whose hidden part is more than a tenth of the
-    // tolerance at 1 % is therefore never trusted on one comparison: it is split at least once. (A 3 x 3 rule
-    // against the children's instead is fooled as well: errors of 1.5e-4 at a tolerance of 1e-6 on the grid
-    // room.)
-    const bool forced = mixed && item.depth == 0 && item.value > kTrustedShare * tolerance_;
-    if (forced) item.error = std::max(item.error, item.value);
-    // No Gauss point saw a shadow, but one may fall on the panel's rim only (the shadow of a block's corner
-    // reaching the last few percent of a wall element): the corners are looked at too, and a shadow seen
-    // there counts as an error of its size.
-    if (mixed && item.value == 0 && estimate == 0) {
-      double corners = 0;
-      for (int k = 0; k < item.panel.count; ++k)
-        corners += clipper_.hidden(item.panel.v[static_cast<std::size_t>(k)], item.occluders);
-      work_.points += item.panel.count;
-      work_.clipped += item.panel.count;
-      item.error = std::max(item.error, corners / item.panel.count * item.panel.area());
-    }
-    // A shadow that grazes the receiver from a sliver of the panel only (a block's top corner cutting a
-    // floor-to-ceiling pair) is seen by few sample points or none, by the panel's rule and its children's
-    // alike. Probed where the occluders and the receiver line up: a probe that sees more than twice what
-    // the samples give the panel on average means the samples missed it.
-    // (A panel split anyway needs no probe: its children are probed.)
-    if (mixed && !forced && item.depth <= kMaxProbedDepth) {
-      long probes = 0;
-      const double probed = clipper_.probeShadow(item.panel, item.occluders, probes);
-      work_.points += probes;
-      work_.clipped += probes;
-      item.error = std::max(item.error, 0.5 * probed * item.panel.area() - item.value);
-    }
-    // The converse: every point saw the receiver wholly hidden, but a corner may look past the occluder's
-    // edge (a sliver of a wall seen past a block's corner from the end of a wall element only).
-    if (mixed && allHidden) {
-      double corners = 0;
-      for (int k = 0; k < item.panel.count; ++k) {
-        const Vec3& corner = item.panel.v[static_cast<std::size_t>(k)];
-        corners += std::max(0.0, clipper_.unoccluded(corner) - clipper_.hidden(corner, item.occluders));
-      }
-      work_.points += 2 * item.panel.count;
-      work_.clipped += item.panel.count;
-      item.error = std::max(item.error, corners / item.panel.count * item.panel.area());
-    }
-    heap.push_back(std::move(item));
-  }
-
-  // Wholly hidden panels do not overlap, so this holds their sum to half the tolerance.
-  double pointTolerance() const { return 0.5 * tolerance_ / sourceArea_; }
-
-  const ShadowClipper& clipper_;
-  int order_;
-  Unoccluded unoccluded_;
-  double sourceArea_;
-  PairWork& work_;
-  double tolerance_ = 0;
-};
 
 class QuadratureMethod : public FormFactorMethod {
  public:
@@ -502,8 +294,8 @@ class QuadratureMethod : public FormFactorMethod {
     stats.notes += ", " + std::to_string(solids.size()) + " closed convex solids";
     if (budgetPairs > 0)
       stats.notes += ", " + std::to_string(budgetPairs.load()) + " pairs reached the work bound (depth " +
-                     std::to_string(kMaxHiddenDepth) + ", " + std::to_string(kMaxHiddenPoints) +
-                     " points) before the tolerance";
+                     std::to_string(HiddenIntegral::kMaxDepth) + ", " +
+                     std::to_string(HiddenIntegral::kMaxPoints) + " points) before the tolerance";
     return F;
   }
 };

@@ -1,0 +1,158 @@
+#include "core/formfactor/hidden_integral.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace rt {
+namespace {
+
+// Panels probed for grazing shadows (ShadowClipper::probeShadow): the top ones and their children. Once a
+// probe has started the refinement, the rules' comparison carries it on. Measured on the 612-wall grid
+// room at 1e-5: largest floor-row error against the exact method 1.19e-5 unprobed, 8.0e-6 at depth 0,
+// 5.9e-6 at depth 1 and at every depth, which costs 1.25 x the work of depth 1.
+constexpr int kMaxProbedDepth = 1;
+// A top panel's hidden part up to this many times its tolerance is trusted on one comparison of rules (see
+// HiddenIntegral::push). Measured on the 2,400-wall grid room at 1e-5, largest floor-row error: 5.06e-6 at
+// 1 and 10, 9.1e-6 at 30, 1.6e-5 at 100.
+constexpr double kTrustedShare = 10;
+
+}  // namespace
+
+double HiddenIntegral::operator()(const SourcePanel* panels, int count, double tolerance) {
+  tolerance_ = tolerance;
+  std::vector<Item> heap;
+  double done = 0;  // panels that no occluder can touch or that are wholly hidden, or at the depth bound
+  for (int p = 0; p < count; ++p) {
+    Item top{panels[p], {}, 0, 0, 0};
+    clipper_.cull(panels[p], clipper_.occluders(), top.occluders);
+    if (top.occluders.empty()) continue;
+    bool allHidden = true;
+    const double estimate = evaluate(top.panel, top.occluders, allHidden);
+    // Only a panel whose every point saw nothing of the receiver can be wholly hidden.
+    if (allHidden && clipper_.hidesAll(panels[p].v.data(), panels[p].count, top.occluders)) {
+      done += unoccluded_(panels[p], pointTolerance());
+      continue;
+    }
+    push(heap, std::move(top), estimate, allHidden);
+  }
+  auto byError = [](const Item& a, const Item& b) { return a.error < b.error; };
+  std::make_heap(heap.begin(), heap.end(), byError);
+  double error = 0;
+  for (const Item& item : heap) error += item.error;
+  while (!heap.empty() && error > tolerance) {
+    if (work_.points >= kMaxPoints) {
+      work_.budgetReached = true;
+      break;
+    }
+    std::pop_heap(heap.begin(), heap.end(), byError);
+    Item worst = std::move(heap.back());
+    heap.pop_back();
+    error -= worst.error;
+    if (worst.depth + 1 >= kMaxDepth) {
+      done += worst.value;
+      work_.budgetReached = true;
+      continue;
+    }
+    for (std::size_t c = 0; c < 4; ++c) {
+      Child& child = worst.children[c];
+      if (child.state != Child::Mixed) {
+        done += child.value;
+        continue;
+      }
+      Item next{child.panel, std::move(child.occluders), 0, 0, worst.depth + 1};
+      push(heap, std::move(next), child.value, child.allHidden);
+      error += heap.back().error;
+      std::push_heap(heap.begin(), heap.end(), byError);
+    }
+  }
+  for (const Item& item : heap) done += item.value;
+  return done;
+}
+
+double HiddenIntegral::evaluate(const SourcePanel& panel, const std::vector<int>& occluders,
+                                bool& allHidden) {
+  const int order = order_;
+  double sum = 0;
+  forEachGaussPoint(panel, order, [&](const Vec3& x, double w) {
+    bool hiddenHere = false;
+    sum += w * clipper_.hidden(x, occluders, &hiddenHere);
+    allHidden &= hiddenHere;
+  });
+  work_.points += order * order;
+  work_.clipped += order * order;
+  return sum;
+}
+
+void HiddenIntegral::push(std::vector<Item>& heap, Item item, double estimate, bool estimateAllHidden) {
+  const std::array<SourcePanel, 4> split = item.panel.split();
+  item.value = 0;
+  bool mixed = false, allHidden = estimateAllHidden;
+  for (std::size_t c = 0; c < 4; ++c) {
+    Child& child = item.children[c];
+    child.panel = split[c];
+    clipper_.cull(split[c], item.occluders, child.occluders);
+    if (child.occluders.empty()) {
+      child.state = Child::Visible;
+      child.value = 0;
+    } else {
+      child.allHidden = true;
+      child.value = evaluate(split[c], child.occluders, child.allHidden);
+      if (child.allHidden && clipper_.hidesAll(split[c].v.data(), split[c].count, child.occluders)) {
+        child.state = Child::Hidden;
+        child.value = unoccluded_(split[c], pointTolerance());
+      } else {
+        child.state = Child::Mixed;
+        allHidden &= child.allHidden;
+        mixed = true;
+      }
+    }
+    item.value += child.value;
+  }
+  item.error = std::abs(item.value - estimate);
+  // A 2 x 2 rule and its children's can agree by chance where a shadow's edge crosses the panel (measured:
+  // 1 % of a hidden part past a block's corner). A top panel whose hidden part is more than a tenth of the
+  // tolerance at 1 % is therefore never trusted on one comparison: it is split at least once. (A 3 x 3 rule
+  // against the children's instead is fooled as well: errors of 1.5e-4 at a tolerance of 1e-6 on the grid
+  // room.)
+  const bool forced = mixed && item.depth == 0 && item.value > kTrustedShare * tolerance_;
+  if (forced) item.error = std::max(item.error, item.value);
+  // No Gauss point saw a shadow, but one may fall on the panel's rim only (the shadow of a block's corner
+  // reaching the last few percent of a wall element): the corners are looked at too, and a shadow seen
+  // there counts as an error of its size.
+  if (mixed && item.value == 0 && estimate == 0) {
+    double corners = 0;
+    for (int k = 0; k < item.panel.count; ++k)
+      corners += clipper_.hidden(item.panel.v[static_cast<std::size_t>(k)], item.occluders);
+    work_.points += item.panel.count;
+    work_.clipped += item.panel.count;
+    item.error = std::max(item.error, corners / item.panel.count * item.panel.area());
+  }
+  // A shadow that grazes the receiver from a sliver of the panel only (a block's top corner cutting a
+  // floor-to-ceiling pair) is seen by few sample points or none, by the panel's rule and its children's
+  // alike. Probed where the occluders and the receiver line up: a probe that sees more than twice what
+  // the samples give the panel on average means the samples missed it.
+  // (A panel split anyway needs no probe: its children are probed.)
+  if (mixed && !forced && item.depth <= kMaxProbedDepth) {
+    long probes = 0;
+    const double probed = clipper_.probeShadow(item.panel, item.occluders, probes);
+    work_.points += probes;
+    work_.clipped += probes;
+    item.error = std::max(item.error, 0.5 * probed * item.panel.area() - item.value);
+  }
+  // The converse: every point saw the receiver wholly hidden, but a corner may look past the occluder's
+  // edge (a sliver of a wall seen past a block's corner from the end of a wall element only).
+  if (mixed && allHidden) {
+    double corners = 0;
+    for (int k = 0; k < item.panel.count; ++k) {
+      const Vec3& corner = item.panel.v[static_cast<std::size_t>(k)];
+      corners += std::max(0.0, clipper_.unoccluded(corner) - clipper_.hidden(corner, item.occluders));
+    }
+    work_.points += 2 * item.panel.count;
+    work_.clipped += item.panel.count;
+    item.error = std::max(item.error, corners / item.panel.count * item.panel.area());
+  }
+  heap.push_back(std::move(item));
+}
+
+}  // namespace rt

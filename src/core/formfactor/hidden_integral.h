@@ -1,0 +1,87 @@
+// The hidden part of a pair's form factor: the integral over the source of F(dA_x -> the part of the receiver
+// that occluders hide from x), clipped per point by ShadowClipper and integrated adaptively along the
+// penumbrae (docs/formfactors.md, "Quadrature").
+#pragma once
+
+#include <array>
+#include <functional>
+#include <vector>
+
+#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/source_panels.h"
+
+namespace rt {
+
+// Per pair, on one thread.
+struct PairWork {
+  long points = 0;    // Lambert evaluations
+  long clipped = 0;   // of them, at points where the receiver was clipped by occluders
+  long contours = 0;  // exact contour integrals
+  bool budgetReached = false;
+};
+
+// Globally adaptive: panels wait in a heap ordered by their error estimate (a panel's rule against the sum
+// of its four children's), and the worst is split until the estimates add up to less than the tolerance or
+// the work bound is reached. Local criteria (each panel its share of the tolerance) never end along a jump
+// of the integrand: the floor next to a block sees half the room just outside its footprint and nothing
+// under it, and a panel straddling that line errs in proportion to its own area however small it is. The
+// total error along such a line falls like the panels' size, so the global criterion ends.
+class HiddenIntegral {
+ public:
+  // `unoccluded(panel, tolerance)`: int over the panel of F(dA_x -> receiver), for panels from which the
+  // whole receiver is hidden (there the hidden part is all of it).
+  using Unoccluded = std::function<double(const SourcePanel&, double)>;
+  // `sourceArea` turns the tolerance of the integral into one of F(dA -> receiver) at each point.
+  HiddenIntegral(const ShadowClipper& clipper, int order, Unoccluded unoccluded, double sourceArea,
+                 PairWork& work)
+      : clipper_(clipper),
+        order_(order),
+        unoccluded_(std::move(unoccluded)),
+        sourceArea_(sourceArea),
+        work_(work) {}
+
+  // Work bounds per pair: panel depth and points.
+  static constexpr int kMaxDepth = 10;
+  static constexpr long kMaxPoints = 60000;
+
+  // int over the panels of F(dA_x -> hidden part), to `tolerance` (absolute, in the same units).
+  double operator()(const SourcePanel* panels, int count, double tolerance);
+
+ private:
+  struct Child {
+    enum State { Visible, Hidden, Mixed };
+    SourcePanel panel;
+    std::vector<int> occluders;
+    double value = 0;
+    State state = Visible;
+    bool allHidden = false;  // every point of its rule saw the receiver wholly hidden
+  };
+  struct Item {
+    SourcePanel panel;
+    std::vector<int> occluders;
+    double value = 0;  // the sum over its children
+    double error = 0;  // |children - own rule|
+    int depth = 0;
+    std::array<Child, 4> children;
+  };
+
+  // Clears `allHidden` when some point of the rule sees part of the receiver.
+  double evaluate(const SourcePanel& panel, const std::vector<int>& occluders, bool& allHidden);
+
+  // Evaluates the item's children and appends it (not yet in heap order) with its error estimate. A child
+  // that no occluder touches hides nothing, one whose receiver is wholly hidden hides all of it: both are
+  // exact (to the unoccluded rule's tolerance) and never split; only mixed children carry an error.
+  void push(std::vector<Item>& heap, Item item, double estimate, bool estimateAllHidden);
+
+  // Wholly hidden panels do not overlap, so this holds their sum to half the tolerance.
+  double pointTolerance() const { return 0.5 * tolerance_ / sourceArea_; }
+
+  const ShadowClipper& clipper_;
+  int order_;
+  Unoccluded unoccluded_;
+  double sourceArea_;
+  PairWork& work_;
+  double tolerance_ = 0;
+};
+
+}  // namespace rt
