@@ -234,8 +234,8 @@ class QuadratureMethod : public FormFactorMethod {
       if (clipper) {
         result.needsVisibility = true;
         ++occludedPairs;
-        // Wholly hidden (most occluded pairs of a room with blocks in it): nothing to integrate.
-        if (clipper->hidesAll(source.v.data(), source.count, clipper->occluders())) {
+        // Wholly hidden by one face (the blocks' cross-sections were tried above): nothing to integrate.
+        if (clipper->hidesAll(source.v.data(), source.count, clipper->occluders(), false)) {
           ++hiddenPairs;
           return result;
         }

@@ -96,8 +96,9 @@ class ShadowClipper {
   // (`count` corners) to the receiver, with a margin: then the whole receiver is hidden from all of it.
   // Every such segment crosses a plane that separates the two at a point in the convex hull of the
   // crossings of the corner-to-corner segments, so those crossings lying inside a convex face (or a convex
-  // solid's cross-section) is enough.
-  bool hidesAll(const Vec3* panel, int count, const std::vector<int>& occluders) const;
+  // solid's cross-section) is enough. `bySolids` false leaves the solids' cross-sections out (a caller that
+  // has tried them already with solidCutsEverySegment).
+  bool hidesAll(const Vec3* panel, int count, const std::vector<int>& occluders, bool bySolids = true) const;
   // F(dA_x -> the part of the receiver hidden by `occluders`) for x on the source; `whollyHidden`, where
   // given, tells whether nothing of the receiver is left in view.
   double hidden(const Vec3& x, const std::vector<int>& occluders, bool* whollyHidden = nullptr) const;

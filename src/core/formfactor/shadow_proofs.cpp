@@ -79,7 +79,8 @@ bool solidCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int 
   return false;
 }
 
-bool ShadowClipper::hidesAll(const Vec3* panel, int count, const std::vector<int>& occluders) const {
+bool ShadowClipper::hidesAll(const Vec3* panel, int count, const std::vector<int>& occluders,
+                             bool bySolids) const {
   int lastSolid = -1;
   for (int index : occluders) {
     const Occluder& o = prepared_[static_cast<std::size_t>(index)];
@@ -87,7 +88,7 @@ bool ShadowClipper::hidesAll(const Vec3* panel, int count, const std::vector<int
                                 o.polygon.count, o.normal, o.normal.dot(o.centre), eps_))
       return true;
     // A block's faces may share the segments between them; its cross-sections hold them all.
-    if (o.solid < 0 || o.solid == lastSolid || !solidCentres_) continue;
+    if (!bySolids || o.solid < 0 || o.solid == lastSolid || !solidCentres_) continue;
     lastSolid = o.solid;
     if (solidCutsEverySegment(panel, count, receiver_.v.data(), receiver_.count,
                               solids_[static_cast<std::size_t>(o.solid)],
