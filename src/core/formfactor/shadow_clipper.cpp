@@ -228,23 +228,33 @@ double ShadowClipper::unoccluded(const Vec3& x) const {
 }
 
 bool ShadowClipper::cutCone(const Vec3& x, const Vec3* cone, int m, bool last, double& sum) const {
-  double margin[SmallPolygon::kCapacity];
-  for (int k = 0; k < m; ++k) margin[k] = eps_ * cone[k].norm();
-  next_.clear();
+  double margin2[SmallPolygon::kCapacity];  // (eps |n|)^2: splitAt's margin, with no square root
+  for (int k = 0; k < m; ++k) margin2[k] = eps_ * eps_ * cone[k].squaredNorm();
+  // next_ is a pool: its first nextCount slots are the pieces kept. Slots are added only when it grows, as
+  // a new SmallPolygon is zeroed whole (768 bytes).
+  int nextCount = 0;
+  auto slot = [&]() -> SmallPolygon& {
+    if (nextCount == static_cast<int>(next_.size())) next_.emplace_back();
+    return next_[static_cast<std::size_t>(nextCount)];
+  };
   SmallPolygon buffers[2];
   bool anyLeft = false;  // of the receiver, some part outside this cone and every one before
-  for (const SmallPolygon& piece : pieces_) {
+  for (int p = 0; p < pieceCount_; ++p) {
+    const SmallPolygon& piece = pieces_[static_cast<std::size_t>(p)];
     // Wholly outside one side plane: untouched by this shadow (checked first so that it is not cut into
     // pieces by the planes before it, which the occluders after this one would each have to cut again).
     bool clear = false;
     for (int k = 0; k < m && !clear && !last; ++k) {
       bool anyInside = false;
-      for (int v = 0; v < piece.count && !anyInside; ++v)
-        anyInside = cone[k].dot(piece.v[static_cast<std::size_t>(v)] - x) > margin[k];
+      for (int v = 0; v < piece.count && !anyInside; ++v) {
+        const double d = cone[k].dot(piece.v[static_cast<std::size_t>(v)] - x);
+        anyInside = d > 0 && d * d > margin2[k];
+      }
       clear = !anyInside;
     }
     if (clear) {
-      copyPolygon(piece, next_.emplace_back());
+      copyPolygon(piece, slot());
+      ++nextCount;
       anyLeft = true;
       continue;
     }
@@ -252,19 +262,19 @@ bool ShadowClipper::cutCone(const Vec3& x, const Vec3* cone, int m, bool last, d
     int which = 0;  // the buffer the next split writes: never the one `inside` is in
     for (int k = 0; k < m && inside; ++k) {
       SmallPolygon& part = buffers[which];
-      SmallPolygon* outside = last ? nullptr : &next_.emplace_back();
-      const int side = splitAt(*inside, x, cone[k], margin[k], part, outside);
-      if (side > 0) {
-        if (outside) next_.pop_back();
-        continue;
-      }
+      SmallPolygon* outside = last ? nullptr : &slot();
+      const int side = splitAt(*inside, x, cone[k], margin2[k], part, outside);
+      if (side > 0) continue;
       anyLeft = true;
       if (side < 0) {
-        if (outside) copyPolygon(*inside, *outside);
+        if (outside) {
+          copyPolygon(*inside, *outside);
+          ++nextCount;
+        }
         inside = nullptr;
         break;
       }
-      if (outside && outside->count == 0) next_.pop_back();
+      if (outside && outside->count > 0) ++nextCount;
       inside = part.count > 0 ? &part : nullptr;
       which ^= 1;
     }
@@ -273,13 +283,15 @@ bool ShadowClipper::cutCone(const Vec3& x, const Vec3* cone, int m, bool last, d
   // The last cone needs no pieces left over, only whether any would be.
   if (last) return anyLeft;
   pieces_.swap(next_);
-  return !pieces_.empty();
+  pieceCount_ = nextCount;
+  return pieceCount_ > 0;
 }
 
 double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders, bool* whollyHidden) const {
   if (whollyHidden) *whollyHidden = false;
-  pieces_.resize(1);
+  if (pieces_.empty()) pieces_.emplace_back();
   copyPolygon(receiver_, pieces_[0]);
+  pieceCount_ = 1;
   double sum = 0;
   std::array<Vec3, SmallPolygon::kCapacity> cone;
   outside_.assign(solids_.size(), -1);

@@ -143,7 +143,8 @@ class ShadowClipper {
   std::vector<Occluder> prepared_;
   std::vector<int> all_;
   mutable std::vector<std::pair<Vec3, double>> planes_;
-  mutable std::vector<SmallPolygon> pieces_, next_;
+  mutable std::vector<SmallPolygon> pieces_, next_;  // pools: the first pieceCount_ of pieces_ are in use
+  mutable int pieceCount_ = 0;
   mutable std::vector<signed char> outside_;       // per solid, for the current point: -1 not yet known
   mutable std::vector<PenumbraRegion> penumbrae_;  // per solid, made on first use
   mutable std::vector<signed char> penumbraMade_;  // -1 not yet, 0 unbounded, 1 made

@@ -21,18 +21,19 @@ inline void copyPolygon(const SmallPolygon& from, SmallPolygon& to) {
   std::copy_n(from.v.begin(), from.count, to.v.begin());
 }
 
-// Splits `in` by the plane through `origin` with normal `normal`, corners within `margin` of it (a length
-// times the normal's length) counting as on it. Returns 1 when no corner lies behind (nothing written), -1
-// when none lies in front (nothing written), 0 when both do: then the part in front goes to `front` and,
-// where `back` is given, the part behind to it. In one pass, as the shadow cut of each piece by each side
-// plane of a cone needs both parts.
-inline int splitAt(const SmallPolygon& in, const Vec3& origin, const Vec3& normal, double margin,
+// Splits `in` by the plane through `origin` with normal `normal`, corners whose height d above it (in units
+// of the normal's length) has d^2 <= `margin2` counting as on it: the margin squared, so that callers need no
+// square root of the normal's length. Returns 1 when no corner lies behind (nothing written), -1 when none
+// lies in front (nothing written), 0 when both do: then the part in front goes to `front` and, where `back`
+// is given, the part behind to it. In one pass, as the shadow cut of each piece by each side plane of a cone
+// needs both parts.
+inline int splitAt(const SmallPolygon& in, const Vec3& origin, const Vec3& normal, double margin2,
                    SmallPolygon& front, SmallPolygon* back) {
   double side[SmallPolygon::kCapacity];
   bool anyBehind = false, anyFront = false;
   for (int k = 0; k < in.count; ++k) {
     double d = normal.dot(in.v[static_cast<std::size_t>(k)] - origin);
-    if (std::abs(d) <= margin) d = 0;
+    if (d * d <= margin2) d = 0;
     side[k] = d;
     anyBehind |= d < 0;
     anyFront |= d > 0;

@@ -106,11 +106,11 @@ double ShadowClipper::probeShadow(const SourcePanel& panel, const std::vector<in
   // The panel's edge planes (through its edges along the source's normal, facing in), found once for all
   // probes.
   Vec3 edgeNormals[4];
-  double margins[4];
+  double margins2[4];
   for (int k = 0; k < panel.count; ++k) {
     edgeNormals[k] = sourceNormal_.cross(panel.v[static_cast<std::size_t>((k + 1) % panel.count)] -
                                          panel.v[static_cast<std::size_t>(k)]);
-    margins[k] = eps_ * edgeNormals[k].norm();
+    margins2[k] = eps_ * eps_ * edgeNormals[k].squaredNorm();
   }
   // Projections that cover the whole panel (or the same part of it) give the same probe: evaluated once.
   Vec3 probed[64];
@@ -119,7 +119,7 @@ double ShadowClipper::probeShadow(const SourcePanel& panel, const std::vector<in
   auto probe = [&]() {
     if (projected.count < 3) return;
     for (int k = 0; k < panel.count; ++k) {
-      const int side = splitAt(projected, panel.v[static_cast<std::size_t>(k)], edgeNormals[k], margins[k],
+      const int side = splitAt(projected, panel.v[static_cast<std::size_t>(k)], edgeNormals[k], margins2[k],
                                clipped, nullptr);
       if (side < 0) return;  // wholly outside the panel
       if (side == 0) {
