@@ -110,16 +110,9 @@ class QuadratureMethod : public FormFactorMethod {
     std::vector<SolidPlanes> solids;
     const std::vector<int> solidOf = closedConvexSolids(outlines, solids);
     const std::vector<SolidShape> shapes = solidShapes(outlines, solidOf, static_cast<int>(solids.size()));
-    // A point inside each solid: the mean of its faces' corners.
-    std::vector<Vec3> solidCentres(solids.size(), Vec3::Zero());
-    std::vector<int> solidCorners(solids.size(), 0);
-    for (std::size_t k = 0; k < shafts.patchCount(); ++k)
-      if (solidOf[k] >= 0)
-        for (const Vec3& v : shafts.outline(static_cast<int>(k))) {
-          solidCentres[static_cast<std::size_t>(solidOf[k])] += v;
-          ++solidCorners[static_cast<std::size_t>(solidOf[k])];
-        }
-    for (std::size_t s = 0; s < solids.size(); ++s) solidCentres[s] /= std::max(1, solidCorners[s]);
+    // A point inside each solid, for the proofs by cross-sections: its shape's centre.
+    std::vector<Vec3> solidCentres;
+    for (const SolidShape& shape : shapes) solidCentres.push_back(shape.centre);
     // The solids each element reaches into (a floor element partly under a block): that part sees nothing,
     // and the jump at the block's edge is cut out of the source instead of left to the quadrature.
     std::vector<std::vector<int>> elementSolids(mesh.size());

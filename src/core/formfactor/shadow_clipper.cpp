@@ -298,17 +298,17 @@ double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders, b
   if (shapes_) cut_.assign(whole_.size(), 0);
   // From `tail` on, every occluder bounds one solid wholly in front: cut by its silhouette there, it is the
   // last shadow, and the parts of the receiver it leaves need not be kept for another.
-  const int n = static_cast<int>(occluders.size());
-  int tail = n;
+  const int count = static_cast<int>(occluders.size());
+  int tail = count;
   auto wholeSolid = [&](int position) {
     const int solid =
         prepared_[static_cast<std::size_t>(occluders[static_cast<std::size_t>(position)])].solid;
     return solid >= 0 && shapes_ && whole_[static_cast<std::size_t>(solid)] == 1 ? solid : -1;
   };
-  if (n > 0 && wholeSolid(n - 1) >= 0)
-    for (tail = n - 1; tail > 0 && wholeSolid(tail - 1) == wholeSolid(n - 1);) --tail;
+  if (count > 0 && wholeSolid(count - 1) >= 0)
+    for (tail = count - 1; tail > 0 && wholeSolid(tail - 1) == wholeSolid(count - 1);) --tail;
   bool anyLeft = true;
-  for (int position = 0; position < n && anyLeft; ++position) {
+  for (int position = 0; position < count && anyLeft; ++position) {
     const Occluder& o = prepared_[static_cast<std::size_t>(occluders[static_cast<std::size_t>(position)])];
     if (o.solid >= 0 && shapes_ && whole_[static_cast<std::size_t>(o.solid)] == 1) {
       signed char& cut = cut_[static_cast<std::size_t>(o.solid)];
@@ -342,7 +342,7 @@ double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders, b
       if (n.dot(o.centre - x) < 0) n = -n;  // inward: the cone's inside in front
       cone[static_cast<std::size_t>(k)] = n;
     }
-    anyLeft = cutCone(x, cone.data(), m, position == n - 1, sum);
+    anyLeft = cutCone(x, cone.data(), m, position == count - 1, sum);
   }
   if (whollyHidden) *whollyHidden = !anyLeft;
   return std::max(0.0, sum);

@@ -1,5 +1,6 @@
 #include "core/formfactor/solid_silhouette.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <tuple>
