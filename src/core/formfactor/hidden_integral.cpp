@@ -70,6 +70,69 @@ double HiddenIntegral::operator()(const SourcePanel* panels, int count, double t
   return done;
 }
 
+double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tolerance) {
+  tolerance_ = tolerance;
+  std::vector<Smooth> heap;
+  double done = 0;
+  for (int c = 0; c < count; ++c) {
+    // Not culled: the centre tells as well whether anything is hidden there, for about the cost of the test.
+    Smooth cell{cells[c], 0, 0, 0};
+    bool wholly = false;
+    const double centre = clipper_.hidden(cells[c].centre(), clipper_.occluders(), &wholly);
+    ++work_.points;
+    ++work_.clipped;
+    if (wholly) {
+      done += unoccluded_(cells[c], pointTolerance());
+      continue;
+    }
+    if (centre <= 0) continue;
+    cell.value = centre * cells[c].area();
+    rate(cell);
+    heap.push_back(std::move(cell));
+  }
+  auto byError = [](const Smooth& a, const Smooth& b) { return a.error < b.error; };
+  std::make_heap(heap.begin(), heap.end(), byError);
+  double error = 0;
+  for (const Smooth& cell : heap) error += cell.error;
+  while (!heap.empty() && error > tolerance) {
+    if (work_.points >= kMaxPoints) {
+      work_.budgetReached = true;
+      break;
+    }
+    std::pop_heap(heap.begin(), heap.end(), byError);
+    Smooth worst = std::move(heap.back());
+    heap.pop_back();
+    error -= worst.error;
+    if (worst.depth + 1 >= kMaxDepth) {
+      done += worst.value;
+      work_.budgetReached = true;
+      continue;
+    }
+    for (const SourcePanel& part : worst.panel.split()) {
+      Smooth child{part, 0, 0, worst.depth + 1};
+      child.value = clipper_.hidden(part.centre(), clipper_.occluders()) * part.area();
+      ++work_.points;
+      ++work_.clipped;
+      rate(child);
+      error += child.error;
+      heap.push_back(std::move(child));
+      std::push_heap(heap.begin(), heap.end(), byError);
+    }
+  }
+  for (const Smooth& cell : heap) done += cell.value;
+  return done;
+}
+
+void HiddenIntegral::rate(Smooth& cell) {
+  double fine = 0;
+  forEachGaussPoint(cell.panel, 2,
+                    [&](const Vec3& x, double w) { fine += w * clipper_.hidden(x, clipper_.occluders()); });
+  work_.points += 4;
+  work_.clipped += 4;
+  cell.error = std::abs(fine - cell.value);
+  cell.value = fine;
+}
+
 double HiddenIntegral::evaluate(const SourcePanel& panel, const std::vector<int>& occluders,
                                 bool& allHidden) {
   const int order = order_;

@@ -62,6 +62,7 @@ double shadowEps(const SmallPolygon& source, const SmallPolygon& receiver);
 // bounds (or -1). A segment from a point outside such a solid that crosses it enters through a face the
 // point is in front of, so from there the faces it sees from behind need not be clipped.
 struct SolidShape;  // solid_silhouette.h
+struct EventPlane;  // visibility_events.h
 
 struct OccluderPolygon {
   const std::vector<Vec3>* polygon;
@@ -112,6 +113,10 @@ class ShadowClipper {
   double probeShadow(const SourcePanel& panel, const std::vector<int>& occluders, long& points) const;
   // F(dA_x -> the whole receiver).
   double unoccluded(const Vec3& x) const;
+  // The planes along which the hidden part's form changes over the source (visibility_events.h), into
+  // `out`. False when `occluders` are not one solid or one polygon: then the events are not all planes.
+  bool eventPlanes(const SmallPolygon& source, const std::vector<int>& occluders,
+                   std::vector<EventPlane>& out) const;
 
  private:
   struct Occluder {

@@ -87,7 +87,10 @@ int gaussOrderFor(const SourcePanel& panel, const ReceiverBound& receiver, doubl
   const double size = std::min(1.0, receiver.area / (std::numbers::pi * gap * gap));
   const double needed = kSafety * size / tolerance;
   if (needed <= 1) return 1;
-  const int n = static_cast<int>(std::ceil(std::log(needed) / (2 * std::log(rho))));
+  // A triangle's collapsed rule carries the Jacobian u in its integrand, which costs one power of rho (the
+  // n x n rule is exact to degree 2n - 2 in u, not 2n - 1): M rho^(1 - 2n).
+  const double lost = panel.count == 3 ? 1 : 0;
+  const int n = static_cast<int>(std::ceil((std::log(needed) / std::log(rho) + lost) / 2));
   return n <= kMaxOrder ? std::max(1, n) : 0;
 }
 
@@ -98,8 +101,13 @@ int panelsOf(const Vec3* polygon, int count, SourcePanel* out, int capacity) {
     for (int k = 0; k < count; ++k) out[0].v[static_cast<std::size_t>(k)] = polygon[k];
     return 1;
   }
+  // A fan of quadrilaterals from the first corner (convex, as the polygon is), the last one a triangle when
+  // the count is odd: half the panels of a fan of triangles, each by the tensor rule.
   int made = 0;
-  for (int t = 1; t + 1 < count && made < capacity; ++t)
+  int t = 1;
+  for (; t + 2 < count && made < capacity; t += 2)
+    out[made++] = {{polygon[0], polygon[t], polygon[t + 1], polygon[t + 2]}, 4};
+  if (t + 1 < count && made < capacity)
     out[made++] = {{polygon[0], polygon[t], polygon[t + 1], Vec3::Zero()}, 3};
   return made;
 }

@@ -61,7 +61,8 @@ double panelGap(const SourcePanel& panel, const ReceiverBound& receiver);
 constexpr int kMaxOrder = 8;
 int gaussOrderFor(const SourcePanel& panel, const ReceiverBound& receiver, double tolerance);
 
-// A convex polygon as panels: itself when it has 3 or 4 vertices, otherwise a fan of triangles.
+// A convex polygon as panels: itself when it has 3 or 4 vertices, otherwise a fan of quadrilaterals (and
+// one triangle).
 int panelsOf(const Vec3* polygon, int count, SourcePanel* out, int capacity);
 
 }  // namespace rt

@@ -1,0 +1,199 @@
+#include "core/formfactor/visibility_events.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/formfactor/shadow_clipper_detail.h"
+#include "core/formfactor/solid_silhouette.h"
+
+namespace rt {
+
+using shadow_detail::centreOf;
+using shadow_detail::splitAt;
+
+namespace {
+
+// The source as the events see it: its plane and its edges' inward normals within that plane.
+class SourceRegion {
+ public:
+  SourceRegion(const SmallPolygon& source, const Vec3& normal, double eps)
+      : source_(source), normal_(normal), eps_(eps) {
+    const Vec3 centre = centreOf(source);
+    for (int k = 0; k < source.count; ++k) {
+      const Vec3& p = source.v[static_cast<std::size_t>(k)];
+      Vec3 inward = normal.cross(source.v[static_cast<std::size_t>((k + 1) % source.count)] - p);
+      if (inward.dot(centre - p) < 0) inward = -inward;
+      const double length = inward.norm();
+      inward_[static_cast<std::size_t>(k)] = length > 0 ? Vec3(inward / length) : Vec3::Zero();
+    }
+  }
+
+  double height(const Vec3& p) const { return normal_.dot(p - source_.v[0]); }
+
+  // The source's corners strictly on both sides of the plane: its line crosses the source's inside.
+  bool crossedBy(const Vec3& origin, const Vec3& normal) const {
+    const double margin = eps_ * normal.norm();
+    bool above = false, below = false;
+    for (int k = 0; k < source_.count; ++k) {
+      const double d = normal.dot(source_.v[static_cast<std::size_t>(k)] - origin);
+      above |= d > margin;
+      below |= d < -margin;
+    }
+    return above && below;
+  }
+
+  // The segment pq of the source's plane passes through the source's inside (by more than eps).
+  bool meetsSegment(const Vec3& p, const Vec3& q) const {
+    double t0 = 0, t1 = 1;
+    const Vec3 d = q - p;
+    for (int k = 0; k < source_.count; ++k) {
+      const Vec3& n = inward_[static_cast<std::size_t>(k)];
+      const double start = n.dot(p - source_.v[static_cast<std::size_t>(k)]) - eps_, rate = n.dot(d);
+      if (std::abs(rate) <= 1e-300) {
+        if (start < 0) return false;
+        continue;
+      }
+      const double t = -start / rate;
+      if (rate > 0)
+        t0 = std::max(t0, t);
+      else
+        t1 = std::min(t1, t);
+      if (t0 >= t1) return false;
+    }
+    return true;
+  }
+
+  // The event plane's line where it matters: the projection of the segment ab from the centre c onto the
+  // source's plane (the points x from which c lies in line behind a point of ab). Lines from which c
+  // cannot be behind ab (ab no nearer the plane than c) are dropped; where only part of ab is nearer, the
+  // projection is unbounded and the whole line is tested.
+  bool matters(const Vec3& c, const Vec3& a, const Vec3& b, const Vec3& planeNormal) const {
+    const double hc = height(c), ha = height(a), hb = height(b);
+    if (ha >= hc - eps_ && hb >= hc - eps_) return false;
+    if (ha < -eps_ || hb < -eps_ || ha >= hc - eps_ || hb >= hc - eps_) return crossedBy(c, planeNormal);
+    const Vec3 pa = c + (a - c) * (hc / (hc - ha)), pb = c + (b - c) * (hc / (hc - hb));
+    return meetsSegment(pa, pb);
+  }
+
+ private:
+  const SmallPolygon& source_;
+  Vec3 normal_;
+  double eps_;
+  std::array<Vec3, SmallPolygon::kCapacity> inward_;
+};
+
+}  // namespace
+
+bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<int>& occluders,
+                                std::vector<EventPlane>& out) const {
+  out.clear();
+  if (occluders.empty()) return true;
+  const int solid = prepared_[static_cast<std::size_t>(occluders[0])].solid;
+  if (solid < 0 && occluders.size() > 1) return false;
+  for (int k : occluders)
+    if (prepared_[static_cast<std::size_t>(k)].solid != solid) return false;
+  const SourceRegion region(source, sourceNormal_, eps_);
+  const double tiny = 1e-24 * (eps_ * 1e10) * (eps_ * 1e10);  // a cross product of no direction
+  // Receiver corner r behind occluder edge ab (EV), and occluder corner v in front of receiver edge r1 r2
+  // (VE): from x the point nearer the source's plane hides the one farther.
+  auto edgeEvents = [&](const Vec3& a, const Vec3& b) {
+    for (int k = 0; k < receiver_.count; ++k) {
+      const Vec3& r = receiver_.v[static_cast<std::size_t>(k)];
+      const Vec3 n = (a - r).cross(b - r);
+      if (n.squaredNorm() > tiny * tiny && region.matters(r, a, b, n)) out.push_back({r, n});
+    }
+  };
+  auto cornerEvents = [&](const Vec3& v) {
+    for (int k = 0; k < receiver_.count; ++k) {
+      const Vec3 &r1 = receiver_.v[static_cast<std::size_t>(k)],
+                 &r2 = receiver_.v[static_cast<std::size_t>((k + 1) % receiver_.count)];
+      const Vec3 n = (r1 - v).cross(r2 - v);
+      if (n.squaredNorm() <= tiny * tiny) continue;
+      // From x, v hides a point p of r1 r2: x = p + (v - p) t, so x is p's projection through v, and the
+      // segment of them is the projection of r1 r2 from each end's point through v.
+      const double hv = region.height(v), h1 = region.height(r1), h2 = region.height(r2);
+      bool keep;
+      if (h1 <= hv + eps_ && h2 <= hv + eps_)
+        keep = false;
+      else if (hv < -eps_ || h1 <= hv + eps_ || h2 <= hv + eps_)
+        keep = region.crossedBy(v, n);
+      else
+        keep = region.meetsSegment(r1 + (v - r1) * (h1 / (h1 - hv)), r2 + (v - r2) * (h2 / (h2 - hv)));
+      if (keep) out.push_back({v, n});
+    }
+  };
+  auto faceEvent = [&](const Vec3& origin, const Vec3& normal) {
+    if (region.crossedBy(origin, normal)) out.push_back({origin, normal});
+  };
+
+  if (solid >= 0 && shapes_ && whole_[static_cast<std::size_t>(solid)] == 1) {
+    // A whole solid: its edges that are on the silhouette from some point of the source (their two faces
+    // not both seen from the front, nor both from behind, from all of it), and their corners.
+    const SolidShape& shape = (*shapes_)[static_cast<std::size_t>(solid)];
+    std::array<signed char, 64> facing{};  // per face: 1 all front, -1 all behind, 0 mixed or edge-on
+    const std::size_t faces = std::min<std::size_t>(shape.planes.size(), facing.size());
+    for (std::size_t f = 0; f < faces; ++f) {
+      const auto& [n, offset] = shape.planes[f];
+      bool front = true, behind = true;
+      for (int k = 0; k < source.count; ++k) {
+        const double d = n.dot(source.v[static_cast<std::size_t>(k)]) - offset;
+        front &= d > eps_;
+        behind &= d < -eps_;
+      }
+      facing[f] = front ? 1 : behind ? -1 : 0;
+      if (!front && !behind) faceEvent(n * offset, n);
+    }
+    std::array<bool, 64> cornerUsed{};
+    for (const SolidShape::Edge& edge : shape.edges) {
+      const signed char l = static_cast<std::size_t>(edge.left) < faces ? facing[edge.left] : 0,
+                        r = static_cast<std::size_t>(edge.right) < faces ? facing[edge.right] : 0;
+      if (l != 0 && l == r) continue;
+      edgeEvents(shape.corners[static_cast<std::size_t>(edge.a)],
+                 shape.corners[static_cast<std::size_t>(edge.b)]);
+      for (int c : {edge.a, edge.b})
+        if (static_cast<std::size_t>(c) < cornerUsed.size()) cornerUsed[static_cast<std::size_t>(c)] = true;
+    }
+    for (std::size_t c = 0; c < shape.corners.size() && c < cornerUsed.size(); ++c)
+      if (cornerUsed[c]) cornerEvents(shape.corners[c]);
+    return true;
+  }
+  // A polygon, or a solid cut by the source's or the receiver's plane (its clipped faces): every edge and
+  // corner (a truncated convex solid is still convex, so its silhouette is among them).
+  for (int index : occluders) {
+    const Occluder& o = prepared_[static_cast<std::size_t>(index)];
+    const int m = o.polygon.count;
+    for (int k = 0; k < m; ++k) {
+      edgeEvents(o.polygon.v[static_cast<std::size_t>(k)],
+                 o.polygon.v[static_cast<std::size_t>((k + 1) % m)]);
+      cornerEvents(o.polygon.v[static_cast<std::size_t>(k)]);
+    }
+    faceEvent(o.centre, o.normal);
+  }
+  return true;
+}
+
+bool cutAlongEvents(const SourcePanel& panel, const std::vector<EventPlane>& planes, double eps, int maxCells,
+                    std::vector<SmallPolygon>& cells) {
+  const std::size_t first = cells.size();
+  SmallPolygon& whole = cells.emplace_back();
+  whole.count = panel.count;
+  std::copy_n(panel.v.begin(), panel.count, whole.v.begin());
+  SmallPolygon front, back;
+  for (const EventPlane& plane : planes) {
+    const double margin2 = eps * eps * plane.normal.squaredNorm();
+    const std::size_t end = cells.size();
+    for (std::size_t c = first; c < end; ++c) {
+      if (splitAt(cells[c], plane.origin, plane.normal, margin2, front, &back) != 0) continue;
+      if (front.count < 3 || back.count < 3) continue;  // a sliver below the margin: not worth a cell
+      if (static_cast<int>(cells.size() - first) >= maxCells) {
+        cells.resize(first);
+        return false;
+      }
+      cells[c] = front;
+      cells.push_back(back);
+    }
+  }
+  return true;
+}
+
+}  // namespace rt

@@ -1,0 +1,152 @@
+// The visibility events of one occluder (visibility_events.h): cut along them, the source falls into cells in
+// each of which the hidden part keeps its form. Checked by what that promises: whether nothing, part or all
+// of the receiver is hidden is the same at every point of a cell, and Gauss rules on a cell converge as on
+// an analytic integrand, while on the uncut source, across the events, they do not.
+#include "core/formfactor/visibility_events.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/box_solid.h"
+#include "core/formfactor/shadow_clipper.h"
+
+namespace rt {
+namespace {
+
+SmallPolygon polygon(std::initializer_list<Vec3> corners) {
+  SmallPolygon p;
+  for (const Vec3& c : corners) p.v[static_cast<std::size_t>(p.count++)] = c;
+  return p;
+}
+
+const SmallPolygon kSource = polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});  // faces +z
+const SourcePanel kPanel{{kSource.v[0], kSource.v[1], kSource.v[2], kSource.v[3]}, 4};
+const Vec3 kUp{0, 0, 1}, kDown{0, 0, -1};
+// A small receiver above the source: a diamond, and off the blocks' faces' planes, so that no event of one
+// kind falls on the line of another (the test would not tell them apart).
+const SmallPolygon kReceiver =
+    polygon({{0.47, 0.37, 3}, {0.32, 0.52, 3}, {0.47, 0.67, 3}, {0.62, 0.52, 3}});  // faces -z
+// A slab whose edge sweeps across the receiver as x crosses the source (from one side nothing of the
+// receiver is hidden, from the other all of it), and a block whose corner's shadow crosses it as well.
+const Box kSlab = box({0.5, -1, 1.4}, {1.5, 2, 1.6});
+const Box kCorner = box({0.5, 0.5, 1.4}, {1.5, 1.5, 1.6});
+
+enum class Seen { Nothing, Part, All };
+
+Seen hiddenAt(const ShadowClipper& clipper, const Vec3& x) {
+  bool wholly = false;
+  const double hidden = clipper.hidden(x, clipper.occluders(), &wholly);
+  return wholly ? Seen::All : hidden > 0 ? Seen::Part : Seen::Nothing;
+}
+
+double rule(const ShadowClipper& clipper, const SmallPolygon& cell, int n) {
+  std::array<SourcePanel, SmallPolygon::kCapacity> panels;
+  const int count = panelsOf(cell.v.data(), cell.count, panels.data(), SmallPolygon::kCapacity);
+  double sum = 0;
+  for (int p = 0; p < count; ++p)
+    forEachGaussPoint(panels[static_cast<std::size_t>(p)], n,
+                      [&](const Vec3& x, double w) { sum += w * clipper.hidden(x, clipper.occluders()); });
+  return sum;
+}
+
+struct Cut {
+  ShadowClipper clipper;
+  std::vector<EventPlane> planes;
+  std::vector<SmallPolygon> cells;
+  bool complete = false;
+};
+
+void cut(Cut& c) {
+  c.complete = c.clipper.eventPlanes(kSource, c.clipper.occluders(), c.planes);
+  ASSERT_TRUE(cutAlongEvents(kPanel, c.planes, 1e-12, 1000, c.cells));
+}
+
+class VisibilityEvents : public testing::TestWithParam<const Box*> {};
+
+TEST_P(VisibilityEvents, WhatIsHiddenIsTheSameThroughoutEachCell) {
+  const Box& kBlock = *GetParam();
+  const std::vector<SolidPlanes> solids{kBlock.planes};
+  const std::vector<Vec3> centres{kBlock.centre};
+  Cut c{ShadowClipper(kSource, kUp, kReceiver, kDown, kBlock.occluders(), solids, &centres, &kBlock.shapes)};
+  cut(c);
+  ASSERT_TRUE(c.complete);
+  EXPECT_GE(c.planes.size(), 2u);
+  ASSERT_GE(c.cells.size(), 3u);
+  int seen[3] = {0, 0, 0};
+  for (const SmallPolygon& cell : c.cells) {
+    Vec3 centre = Vec3::Zero();
+    for (int k = 0; k < cell.count; ++k) centre += cell.v[static_cast<std::size_t>(k)];
+    centre /= cell.count;
+    const Seen expected = hiddenAt(c.clipper, centre);
+    ++seen[static_cast<int>(expected)];
+    for (int k = 0; k < cell.count; ++k) {
+      const Vec3 &a = cell.v[static_cast<std::size_t>(k)],
+                 &b = cell.v[static_cast<std::size_t>((k + 1) % cell.count)];
+      for (double s : {0.3, 0.7, 0.98}) {
+        EXPECT_EQ(hiddenAt(c.clipper, centre + s * (a - centre)), expected) << "towards corner " << k;
+        EXPECT_EQ(hiddenAt(c.clipper, centre + s * (0.5 * (a + b) - centre)), expected)
+            << "towards edge " << k;
+      }
+    }
+  }
+  // The scene is made so that all three happen.
+  EXPECT_GT(seen[static_cast<int>(Seen::Nothing)], 0);
+  EXPECT_GT(seen[static_cast<int>(Seen::Part)], 0);
+  EXPECT_GT(seen[static_cast<int>(Seen::All)], 0);
+}
+
+TEST_P(VisibilityEvents, RulesConvergeOnEachCellAsOnAnAnalyticIntegrand) {
+  const Box& kBlock = *GetParam();
+  const std::vector<SolidPlanes> solids{kBlock.planes};
+  const std::vector<Vec3> centres{kBlock.centre};
+  Cut c{ShadowClipper(kSource, kUp, kReceiver, kDown, kBlock.occluders(), solids, &centres, &kBlock.shapes)};
+  cut(c);
+  double cellsLow = 0, cellsHigh = 0;
+  for (const SmallPolygon& cell : c.cells) {
+    const double low = rule(c.clipper, cell, 4), high = rule(c.clipper, cell, 10);
+    EXPECT_NEAR(low, high, 1e-9) << "a cell of " << cell.count << " corners";
+    cellsLow += low;
+    cellsHigh += high;
+  }
+  // The uncut source, across the events, by the same rules: far apart.
+  const double wholeLow = rule(c.clipper, kSource, 4), wholeHigh = rule(c.clipper, kSource, 10);
+  EXPECT_GT(std::abs(wholeLow - wholeHigh), 1e-6);
+  EXPECT_NEAR(cellsHigh, wholeHigh, 1e-4);
+  EXPECT_NEAR(cellsLow, cellsHigh, 1e-8);
+}
+
+INSTANTIATE_TEST_SUITE_P(SlabAndCorner, VisibilityEvents, testing::Values(&kSlab, &kCorner));
+
+TEST(VisibilityEventPlanes, OnePolygonHasThemTwoOccludersDoNot) {
+  const std::vector<SolidPlanes> none;
+  const std::vector<Vec3> plate{{0.7, 0.3, 1.5}, {1.3, 0.3, 1.5}, {1.3, 0.8, 1.5}, {0.7, 0.8, 1.5}};
+  Cut one{ShadowClipper(kSource, kUp, kReceiver, kDown, {{&plate, -1}}, none)};
+  cut(one);
+  EXPECT_TRUE(one.complete);
+  EXPECT_GE(one.cells.size(), 3u);
+  for (const SmallPolygon& cell : one.cells)
+    EXPECT_NEAR(rule(one.clipper, cell, 4), rule(one.clipper, cell, 10), 1e-9);
+
+  const std::vector<Vec3> second{{0.2, 0.3, 2.2}, {0.9, 0.3, 2.2}, {0.9, 0.5, 2.2}, {0.2, 0.5, 2.2}};
+  const ShadowClipper two(kSource, kUp, kReceiver, kDown, {{&plate, -1}, {&second, -1}}, none);
+  ASSERT_EQ(two.occluders().size(), 2u);
+  std::vector<EventPlane> planes;
+  EXPECT_FALSE(two.eventPlanes(kSource, two.occluders(), planes));
+}
+
+TEST(VisibilityEventPlanes, CellsBeyondTheBoundAreRefused) {
+  const std::vector<SolidPlanes> solids{kSlab.planes};
+  const std::vector<Vec3> centres{kSlab.centre};
+  const ShadowClipper clipper(kSource, kUp, kReceiver, kDown, kSlab.occluders(), solids, &centres,
+                              &kSlab.shapes);
+  std::vector<EventPlane> planes;
+  ASSERT_TRUE(clipper.eventPlanes(kSource, clipper.occluders(), planes));
+  std::vector<SmallPolygon> cells(2);  // a caller's cells from before are kept
+  EXPECT_FALSE(cutAlongEvents(kPanel, planes, 1e-12, 2, cells));
+  EXPECT_EQ(cells.size(), 2u);
+}
+
+}  // namespace
+}  // namespace rt
