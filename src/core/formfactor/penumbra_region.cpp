@@ -36,31 +36,36 @@ bool PenumbraRegion::build(const Vec3* corners, int cornerCount, const Vec3* rec
       points[static_cast<std::size_t>(n++)] = {u_.dot(x), v_.dot(x)};
     }
   }
-  // Andrew's monotone chain (at most n + 1 entries while it runs: the last repeats the first).
-  std::sort(points.begin(), points.begin() + n, [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  std::array<Eigen::Vector2d, kMaxPoints + 1> chain;
-  int h = 0;
-  for (int k = 0; k < n; ++k) {
-    while (h >= 2 && cross2(chain[static_cast<std::size_t>(h - 2)], chain[static_cast<std::size_t>(h - 1)],
-                            points[static_cast<std::size_t>(k)]) <= 0)
-      --h;
-    chain[static_cast<std::size_t>(h++)] = points[static_cast<std::size_t>(k)];
-  }
-  for (int k = n - 1, lower = h + 1; k-- > 0;) {
-    while (h >= lower &&
-           cross2(chain[static_cast<std::size_t>(h - 2)], chain[static_cast<std::size_t>(h - 1)],
-                  points[static_cast<std::size_t>(k)]) <= 0)
-      --h;
-    chain[static_cast<std::size_t>(h++)] = points[static_cast<std::size_t>(k)];
-  }
-  if (h < 4) return false;  // fewer than three corners: a degenerate region, left to the hull test
-  count_ = h - 1;
-  std::copy(chain.begin(), chain.begin() + count_, hull_.begin());
+  const int hullCount = convexHull2d(points.data(), n, hull_.data());
+  if (hullCount < 3) return false;  // fewer than three corners: a degenerate region, left to the hull test
+  count_ = hullCount;
   return true;
 }
 
+int convexHull2d(Eigen::Vector2d* points, int n, Eigen::Vector2d* out) {
+  if (n > kMaxHullPoints) return 0;
+  // Andrew's monotone chain (at most n + 1 entries while it runs: the last repeats the first).
+  std::sort(points, points + n, [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  std::array<Eigen::Vector2d, kMaxHullPoints + 1> chain;
+  int h = 0;
+  for (int k = 0; k < n; ++k) {
+    while (h >= 2 && cross2(chain[static_cast<std::size_t>(h - 2)], chain[static_cast<std::size_t>(h - 1)],
+                            points[k]) <= 0)
+      --h;
+    chain[static_cast<std::size_t>(h++)] = points[k];
+  }
+  for (int k = n - 1, lower = h + 1; k-- > 0;) {
+    while (h >= lower && cross2(chain[static_cast<std::size_t>(h - 2)],
+                                chain[static_cast<std::size_t>(h - 1)], points[k]) <= 0)
+      --h;
+    chain[static_cast<std::size_t>(h++)] = points[k];
+  }
+  if (h < 4) return 0;
+  std::copy(chain.begin(), chain.begin() + (h - 1), out);
+  return h - 1;
+}
 bool PenumbraRegion::meets(const Vec3* polygon, int count) const {
   if (count_ == 0) return true;
   Eigen::Vector2d flat[8];

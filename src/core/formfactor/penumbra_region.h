@@ -19,6 +19,11 @@
 
 namespace rt {
 
+// The convex hull of up to kMaxHullPoints points (reordered), counter-clockwise into `out` (room for as
+// many); returns its corner count, 0 when it has fewer than three.
+constexpr int kMaxHullPoints = 64;
+int convexHull2d(Eigen::Vector2d* points, int n, Eigen::Vector2d* out);
+
 class PenumbraRegion {
  public:
   // `corners`: the solid's; `receiver`: the receiver's corners; the plane through `origin` with unit

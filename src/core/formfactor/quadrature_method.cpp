@@ -29,10 +29,10 @@
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/analytic_method.h"
+#include "core/formfactor/block_shadow_regions.h"
 #include "core/formfactor/closed_solids.h"
 #include "core/formfactor/hidden_integral.h"
 #include "core/formfactor/pair_matrix.h"
-#include "core/formfactor/row_penumbrae.h"
 #include "core/formfactor/shadow_clipper.h"
 #include "core/formfactor/shaft_culling.h"
 #include "core/formfactor/solid_silhouette.h"
@@ -150,7 +150,17 @@ class QuadratureMethod : public FormFactorMethod {
     tbb::enumerable_thread_specific<PairScratch> scratches;
     double sceneSize = 0;
     for (const Vec3& v : mesh.vertices) sceneSize = std::max(sceneSize, v.cwiseAbs().maxCoeff());
-    tbb::enumerable_thread_specific<RowPenumbrae> rowPenumbrae(std::cref(shapes), 1e-10 * sceneSize);
+    const double regionEps = 1e-10 * sceneSize;
+    tbb::enumerable_thread_specific<RowShadowRegions> rowRegions(std::cref(shapes), regionEps);
+    std::vector<std::vector<Vec3>> polygons;
+    std::vector<Vec3> normals;
+    if (!solids.empty())
+      for (std::size_t e = 0; e < mesh.size(); ++e) {
+        polygons.push_back(mesh.polygon(static_cast<int>(e)));
+        normals.push_back(mesh.elements[e].normal);
+      }
+    const ContactShadowRegions contactRegions(shapes, static_cast<int>(polygons.size()), polygons, normals,
+                                              regionEps);
     static thread_local int rowElement = -1;  // the element the current row of the matrix is fixed at
     tbb::enumerable_thread_specific<ShadowClipper> clippers(std::cref(solids), &solidCentres, &shapes);
 
@@ -172,25 +182,38 @@ class QuadratureMethod : public FormFactorMethod {
       std::vector<int>& candidates = scratch.candidates;
       candidates.clear();
       shafts.candidates(i, j, candidates);
-      // A block outside the region it could shade from the row's element (row_penumbrae.h) hides nothing:
-      // more than half of the pairs with candidates in a room with blocks.
+      // What each block does to the pair, read off regions made once per row or per element on the floor a
+      // block stands on (block_shadow_regions.h): more than half of the blocks the shaft test lets through
+      // miss the pair, and most pairs they hide wholly are found so.
       if (!candidates.empty() && !solids.empty() && (rowElement == i || rowElement == j)) {
         const bool rowIsSource = rowElement == i;
-        const ElementPolygon& row = rowIsSource ? a : b;
+        const ElementPolygon &row = rowIsSource ? a : b, &otherFull = rowIsSource ? b : a;
         const SmallPolygon& other = rowIsSource ? receiver : source;
         const int otherElement = rowIsSource ? j : i;
-        RowPenumbrae& regions = rowPenumbrae.local();
+        RowShadowRegions& regions = rowRegions.local();
         int last = -1;
-        bool ruledOut = false;
+        BlockVerdict verdict = BlockVerdict::Unknown;
         for (int& k : candidates) {
           const int solid = solidOf[static_cast<std::size_t>(k)];
           if (solid < 0) continue;
-          if (solid != last)
-            ruledOut =
-                regions.rulesOut(rowElement, row.v.data(), row.count, solid, other.v.data(), other.count,
-                                 other.v[0], mesh.elements[static_cast<std::size_t>(otherElement)].normal);
+          if (solid != last) {
+            verdict = contactRegions.judge(solid, rowElement, row.v.data(), row.count, otherElement);
+            if (verdict == BlockVerdict::Unknown)
+              verdict =
+                  contactRegions.judge(solid, otherElement, otherFull.v.data(), otherFull.count, rowElement);
+            if (verdict == BlockVerdict::Unknown)
+              verdict =
+                  regions.judge(rowElement, row.v.data(), row.count, solid, other.v.data(), other.count,
+                                other.v[0], mesh.elements[static_cast<std::size_t>(otherElement)].normal);
+            if (verdict == BlockVerdict::HidesAll) {
+              result.needsVisibility = true;
+              ++scratch.counts.occludedPairs;
+              ++scratch.counts.hiddenPairs;
+              return result;
+            }
+          }
           last = solid;
-          if (ruledOut) k = -1;
+          if (verdict == BlockVerdict::Misses) k = -1;
         }
         std::erase(candidates, -1);
       }
