@@ -107,7 +107,7 @@ BlockVerdict RowShadowRegions::judge(int rowElement, const Vec3* rowCorners, int
   if (!entry->bounded) return BlockVerdict::Unknown;
   if (entry->region.misses(other, otherCount)) return BlockVerdict::Misses;
   if (entry->region.hidesAll(other, otherCount)) return BlockVerdict::HidesAll;
-  return BlockVerdict::Unknown;
+  return BlockVerdict::Shades;
 }
 
 ContactShadowRegions::ContactShadowRegions(const std::vector<SolidShape>& shapes, int elementCount,
@@ -155,7 +155,7 @@ BlockVerdict ContactShadowRegions::judge(int solid, int standingElement, const V
   const BlockShadowRegion& region = contact.regions[static_cast<std::size_t>(otherElement)];
   if (region.misses(standing, standingCount)) return BlockVerdict::Misses;
   if (region.hidesAll(standing, standingCount)) return BlockVerdict::HidesAll;
-  return BlockVerdict::Unknown;
+  return BlockVerdict::Shades;
 }
 
 }  // namespace rt

@@ -44,7 +44,9 @@ class BlockShadowRegion {
   std::vector<Eigen::Vector2d> umbra_;  // counter-clockwise; empty when there is none
 };
 
-enum class BlockVerdict { Unknown, Misses, HidesAll };
+// Misses: no segment between the two meets the block; HidesAll: every one does; Shades: some may (the region
+// says so); Unknown: no region (the block is not strictly between).
+enum class BlockVerdict { Unknown, Misses, HidesAll, Shades };
 
 // Per thread: the regions on each plane from the current row's element.
 class RowShadowRegions {

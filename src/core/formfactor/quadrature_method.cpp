@@ -145,6 +145,7 @@ class QuadratureMethod : public FormFactorMethod {
       std::vector<EventPlane> events;
       std::vector<SmallPolygon> cells;
       std::vector<SourcePanel> cellPanels;
+      std::vector<int> shading;  // solids a region says shade the pair
       Counts counts;
     };
     tbb::enumerable_thread_specific<PairScratch> scratches;
@@ -185,6 +186,7 @@ class QuadratureMethod : public FormFactorMethod {
       // What each block does to the pair, read off regions made once per row or per element on the floor a
       // block stands on (block_shadow_regions.h): more than half of the blocks the shaft test lets through
       // miss the pair, and most pairs they hide wholly are found so.
+      scratch.shading.clear();
       if (!candidates.empty() && !solids.empty() && (rowElement == i || rowElement == j)) {
         const bool rowIsSource = rowElement == i;
         const ElementPolygon &row = rowIsSource ? a : b, &otherFull = rowIsSource ? b : a;
@@ -212,6 +214,7 @@ class QuadratureMethod : public FormFactorMethod {
               return result;
             }
           }
+          if (solid != last && verdict == BlockVerdict::Shades) scratch.shading.push_back(solid);
           last = solid;
           if (verdict == BlockVerdict::Misses) k = -1;
         }
@@ -275,7 +278,9 @@ class QuadratureMethod : public FormFactorMethod {
         occluders.clear();
         for (int k : candidates) {
           if (convex[static_cast<std::size_t>(k)])
-            occluders.push_back({&shafts.outline(k), solidOf[static_cast<std::size_t>(k)]});
+            occluders.push_back({&shafts.outline(k), solidOf[static_cast<std::size_t>(k)],
+                                 std::find(scratch.shading.begin(), scratch.shading.end(),
+                                           solidOf[static_cast<std::size_t>(k)]) != scratch.shading.end()});
           else
             for (int e : patchElements[static_cast<std::size_t>(k)])
               occluders.push_back({&elementPolygons[static_cast<std::size_t>(e)], -1});

@@ -87,6 +87,8 @@ void ShadowClipper::prepare(const SmallPolygon& source, const Vec3& sourceNormal
   };
   SmallPolygon front;
   bool planesMade = false;
+  int lastSolid = -1;  // the solid whose region was tested last, and what it said
+  bool lastOutside = false;
   for (const OccluderPolygon& occluder : occluders) {
     const std::vector<Vec3>* polygon = occluder.polygon;
     const int count = static_cast<int>(polygon->size());
@@ -111,10 +113,17 @@ void ShadowClipper::prepare(const SmallPolygon& source, const Vec3& sourceNormal
     o.normal = twice / twiceArea;
     o.centre = centreOf(o.polygon);
     o.solid = occluder.solid;
-    // As cull() has it: a whole solid by the region it can shade, the rest by the hull of the two.
+    // As cull() has it: a whole solid by the region it can shade (once for all its faces), the rest by the
+    // hull of the two; nothing when the caller knows it shades the pair.
     bool outside;
-    if (const PenumbraRegion* region = penumbra(o.solid)) {
+    if (occluder.shades) {
+      outside = false;
+    } else if (o.solid >= 0 && o.solid == lastSolid) {
+      outside = lastOutside;
+    } else if (const PenumbraRegion* region = penumbra(o.solid)) {
       outside = !region->meets(source.v.data(), source.count);
+      lastSolid = o.solid;
+      lastOutside = outside;
     } else {
       if (!planesMade) {
         hullPlanes(source.v.data(), source.count, receiver.v.data(), receiver.count);

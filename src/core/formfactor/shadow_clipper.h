@@ -67,6 +67,7 @@ struct EventPlane;  // visibility_events.h
 struct OccluderPolygon {
   const std::vector<Vec3>* polygon;
   int solid = -1;
+  bool shades = false;  // known to shade part of the pair (block_shadow_regions.h): not tested again
 };
 
 class ShadowClipper {
