@@ -46,9 +46,12 @@ namespace {
 constexpr double kNearSizes = 1.0;  // closer than this many source sizes: exact contour integral
 constexpr int kMaxUnoccludedDepth = 6;
 constexpr int kMaxEventCells = 64;  // more, and the adaptive rules cost less than the cells
+// `gap` and `edge`, where known (>= 0), are panelGap() and the longest edge of the panel.
 double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound, const SmallPolygon& receiver,
-                           const Vec3& normal, double tolerance, int depth, PairWork& work) {
-  int n = gaussOrderFor(panel, bound, tolerance);
+                           const Vec3& normal, double tolerance, int depth, PairWork& work, double gap = -1,
+                           double edge = -1) {
+  int n = gap >= 0 ? gaussOrderFor(gap, edge, panel.count, bound.area, tolerance)
+                   : gaussOrderFor(panel, bound, tolerance);
   if (n == 0 && depth < kMaxUnoccludedDepth) {
     double sum = 0;
     for (const SourcePanel& child : panel.split())
@@ -62,6 +65,22 @@ double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound,
   });
   work.points += n * n;
   return sum;
+}
+
+// The receiver as the a-priori order sees it.
+ReceiverBound boundOf(const SmallPolygon& receiver, const Vec3& normal) {
+  ReceiverBound bound{receiver.v[0], normal, Vec3::Zero(), 0, 0};
+  Vec3 twice = Vec3::Zero();
+  for (int k = 0; k < receiver.count; ++k) {
+    bound.centre += receiver.v[static_cast<std::size_t>(k)];
+    twice += receiver.v[static_cast<std::size_t>(k)].cross(
+        receiver.v[static_cast<std::size_t>((k + 1) % receiver.count)]);
+  }
+  bound.centre /= receiver.count;
+  for (int k = 0; k < receiver.count; ++k)
+    bound.radius = std::max(bound.radius, (receiver.v[static_cast<std::size_t>(k)] - bound.centre).norm());
+  bound.area = 0.5 * twice.norm();
+  return bound;
 }
 
 class QuadratureMethod : public FormFactorMethod {
@@ -165,6 +184,26 @@ class QuadratureMethod : public FormFactorMethod {
     static thread_local int rowElement = -1;  // the element the current row of the matrix is fixed at
     tbb::enumerable_thread_specific<ShadowClipper> clippers(std::cref(solids), &solidCentres, &shapes);
 
+    // Per element, what the a-priori order needs of it whole (most pairs clip neither element): its bound as
+    // a receiver, and its centre, radius and longest edge as a source panel.
+    struct ElementMeasure {
+      ReceiverBound bound;
+      double longest = 0;
+    };
+    std::vector<ElementMeasure> measures(mesh.size());
+    for (std::size_t e = 0; e < mesh.size(); ++e) {
+      const ElementPolygon polygon(mesh, static_cast<int>(e));
+      SmallPolygon small;
+      small.count = polygon.count;
+      std::copy(polygon.v.begin(), polygon.v.begin() + polygon.count, small.v.begin());
+      measures[e].bound = boundOf(small, mesh.elements[e].normal);
+      for (int k = 0; k < polygon.count; ++k)
+        measures[e].longest =
+            std::max(measures[e].longest, (polygon.v[static_cast<std::size_t>((k + 1) % polygon.count)] -
+                                           polygon.v[static_cast<std::size_t>(k)])
+                                              .norm());
+    }
+
     auto integrate = [&](int i, int j) {
       PairResult result;
       PairWork work;
@@ -176,8 +215,8 @@ class QuadratureMethod : public FormFactorMethod {
                             mesh.elements[static_cast<std::size_t>(j)].centroid)
                                .norm();
       SmallPolygon source, receiver;
-      clipToFront(b.v.data(), b.count, a.v[0], ni, 1e-12 * scale, receiver);
-      clipToFront(a.v.data(), a.count, b.v[0], nj, 1e-12 * scale, source);
+      const bool receiverWhole = clipToFront(b.v.data(), b.count, a.v[0], ni, 1e-12 * scale, receiver);
+      const bool sourceWhole = clipToFront(a.v.data(), a.count, b.v[0], nj, 1e-12 * scale, source);
       if (source.count < 3 || receiver.count < 3) return result;
       PairScratch& scratch = scratches.local();
       std::vector<int>& candidates = scratch.candidates;
@@ -239,18 +278,8 @@ class QuadratureMethod : public FormFactorMethod {
           }
         }
       }
-      ReceiverBound bound{receiver.v[0], nj, Vec3::Zero(), 0, 0};
-      Vec3 twice = Vec3::Zero();
-      for (int k = 0; k < receiver.count; ++k) {
-        bound.centre += receiver.v[static_cast<std::size_t>(k)];
-        twice += receiver.v[static_cast<std::size_t>(k)].cross(
-            receiver.v[static_cast<std::size_t>((k + 1) % receiver.count)]);
-      }
-      bound.centre /= receiver.count;
-      for (int k = 0; k < receiver.count; ++k)
-        bound.radius =
-            std::max(bound.radius, (receiver.v[static_cast<std::size_t>(k)] - bound.centre).norm());
-      bound.area = 0.5 * twice.norm();
+      const ReceiverBound bound =
+          receiverWhole ? measures[static_cast<std::size_t>(j)].bound : boundOf(receiver, nj);
 
       std::vector<SmallPolygon>&pieces = scratch.pieces, &next = scratch.next;
       pieces.assign(1, source);
@@ -269,7 +298,19 @@ class QuadratureMethod : public FormFactorMethod {
       }
       const int panelCount = static_cast<int>(panels.size());
       bool near = false;
-      for (int p = 0; p < panelCount && !near; ++p)
+      // The source whole (nothing cut off by the receiver's plane or a block it reaches under) and one panel:
+      // its gap from what is known of the element.
+      double topGap = -1, topEdge = -1;
+      if (sourceWhole && panelCount == 1 && elementSolids[static_cast<std::size_t>(i)].empty()) {
+        const ReceiverBound& own = measures[static_cast<std::size_t>(i)].bound;
+        double height = INFINITY;
+        for (int k = 0; k < source.count; ++k)
+          height = std::min(height, std::abs(nj.dot(source.v[static_cast<std::size_t>(k)] - bound.point)));
+        topGap = std::max((own.centre - bound.centre).norm() - own.radius - bound.radius, height);
+        topEdge = measures[static_cast<std::size_t>(i)].longest;
+        near = topGap < kNearSizes * topEdge;
+      }
+      for (int p = 0; p < panelCount && !near && topGap < 0; ++p)
         near = panelGap(panels[static_cast<std::size_t>(p)], bound) <
                kNearSizes * panels[static_cast<std::size_t>(p)].longestEdge();
       ShadowClipper* clipper = nullptr;
@@ -317,7 +358,7 @@ class QuadratureMethod : public FormFactorMethod {
       } else {
         for (int p = 0; p < panelCount; ++p)
           unoccluded += integrateUnoccluded(panels[static_cast<std::size_t>(p)], bound, receiver, ni,
-                                            unoccludedTolerance, 0, work);
+                                            unoccludedTolerance, 0, work, topGap, topEdge);
         unoccluded /= areaI;
       }
       result.value = unoccluded;

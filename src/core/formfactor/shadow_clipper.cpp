@@ -14,11 +14,11 @@ using shadow_detail::centreOf;
 using shadow_detail::copyPolygon;
 using shadow_detail::splitAt;
 
-void clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& normal, double eps,
+bool clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& normal, double eps,
                  SmallPolygon& out) {
   out.count = 0;
   const double length = normal.norm();
-  if (count < 3 || !(length > 0)) return;
+  if (count < 3 || !(length > 0)) return false;
   double side[SmallPolygon::kCapacity];
   bool anyBehind = false, anyFront = false;
   for (int k = 0; k < count; ++k) {
@@ -28,11 +28,11 @@ void clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& norm
     anyBehind |= d < 0;
     anyFront |= d > 0;
   }
-  if (!anyFront) return;
+  if (!anyFront) return false;
   if (!anyBehind) {
     for (int k = 0; k < count; ++k) out.v[static_cast<std::size_t>(k)] = in[k];
     out.count = count;
-    return;
+    return true;
   }
   for (int k = 0; k < count && out.count + 2 <= SmallPolygon::kCapacity; ++k) {
     const int next = (k + 1) % count;
@@ -42,6 +42,7 @@ void clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& norm
       out.v[static_cast<std::size_t>(out.count++)] = in[k] + (in[next] - in[k]) * (dp / (dp - dq));
   }
   if (out.count < 3) out.count = 0;
+  return false;
 }
 
 ShadowClipper::ShadowClipper(const std::vector<SolidPlanes>& solids, const std::vector<Vec3>* solidCentres,

@@ -32,8 +32,9 @@ struct SmallPolygon {
 };
 
 // The part of `in` with normal . (p - origin) >= 0, vertices within `eps` (a length) of the plane counting
-// as on it; normal need not be unit. Empty (count 0) when less than a triangle is left.
-void clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& normal, double eps,
+// as on it; normal need not be unit. Empty (count 0) when less than a triangle is left. Returns whether
+// `in` was kept whole (nothing of it behind), `out` then a copy.
+bool clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& normal, double eps,
                  SmallPolygon& out);
 
 // True when the convex polygon (counter-clockwise about its unit `normal`, its plane normal . p = offset)

@@ -79,17 +79,19 @@ double panelGap(const SourcePanel& panel, const ReceiverBound& receiver) {
 }
 
 int gaussOrderFor(const SourcePanel& panel, const ReceiverBound& receiver, double tolerance) {
-  const double gap = panelGap(panel, receiver);
+  return gaussOrderFor(panelGap(panel, receiver), panel.longestEdge(), panel.count, receiver.area, tolerance);
+}
+
+int gaussOrderFor(double gap, double h, int corners, double receiverArea, double tolerance) {
   if (!(gap > 0)) return 0;
-  const double h = panel.longestEdge();
   const double ratio = gap / h;
   const double rho = 2 * ratio + std::sqrt(1 + 4 * ratio * ratio);
-  const double size = std::min(1.0, receiver.area / (std::numbers::pi * gap * gap));
+  const double size = std::min(1.0, receiverArea / (std::numbers::pi * gap * gap));
   const double needed = kSafety * size / tolerance;
   if (needed <= 1) return 1;
   // A triangle's collapsed rule carries the Jacobian u in its integrand, which costs one power of rho (the
   // n x n rule is exact to degree 2n - 2 in u, not 2n - 1): M rho^(1 - 2n).
-  const double lost = panel.count == 3 ? 1 : 0;
+  const double lost = corners == 3 ? 1 : 0;
   const int n = static_cast<int>(std::ceil((std::log(needed) / std::log(rho) + lost) / 2));
   return n <= kMaxOrder ? std::max(1, n) : 0;
 }

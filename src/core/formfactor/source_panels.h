@@ -60,6 +60,8 @@ double panelGap(const SourcePanel& panel, const ReceiverBound& receiver);
 // (absolute, in units of F(dA -> j)); 0 when no order up to kMaxOrder suffices (split the panel).
 constexpr int kMaxOrder = 8;
 int gaussOrderFor(const SourcePanel& panel, const ReceiverBound& receiver, double tolerance);
+// The same from the panel's gap (panelGap()), longest edge and corner count, for callers that know them.
+int gaussOrderFor(double gap, double h, int corners, double receiverArea, double tolerance);
 
 // A convex polygon as panels: itself when it has 3 or 4 vertices, otherwise a fan of quadrilaterals (and
 // one triangle).
