@@ -1,0 +1,238 @@
+#include "core/formfactor/quadrature_pair.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "core/formfactor/analytic.h"
+#include "core/formfactor/closed_solids.h"
+#include "core/formfactor/hidden_integral.h"
+
+namespace rt {
+namespace {
+
+constexpr double kNearSizes = 1.0;  // closer than this many source sizes: exact contour integral
+constexpr int kMaxUnoccludedDepth = 6;
+constexpr int kMaxEventCells = 64;  // more, and the adaptive rules cost less than the cells
+constexpr int kHiddenOrder = 2;     // low: the hidden part has kinks and jumps where it is not cut into cells
+
+// `gap` and `edge`, where known (>= 0), are panelGap() and the longest edge of the panel.
+double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound, const SmallPolygon& receiver,
+                           const Vec3& normal, double tolerance, int depth, PairWork& work, double gap = -1,
+                           double edge = -1) {
+  int n = gap >= 0 ? gaussOrderFor(gap, edge, panel.count, bound.area, tolerance)
+                   : gaussOrderFor(panel, bound, tolerance);
+  if (n == 0 && depth < kMaxUnoccludedDepth) {
+    double sum = 0;
+    for (const SourcePanel& child : panel.split())
+      sum += integrateUnoccluded(child, bound, receiver, normal, tolerance, depth + 1, work);
+    return sum;
+  }
+  if (n == 0) n = kMaxOrder;
+  double sum = 0;
+  forEachGaussPoint(panel, n, [&](const Vec3& x, double w) {
+    sum += w * std::max(0.0, lambertContourSum(x, normal, receiver.v.data(), receiver.count));
+  });
+  work.points += n * n;
+  return sum;
+}
+
+}  // namespace
+
+QuadraturePair::QuadraturePair(const QuadratureScene& scene, double tolerance)
+    : scene_(scene),
+      tolerance_(tolerance),
+      clipper_(scene.solids, &scene.solidCentres, &scene.shapes),
+      rowRegions_(scene.shapes, scene.regionEps) {}
+
+bool QuadraturePair::judgeBlocks(int i, int j, int row, const ElementPolygon& a, const ElementPolygon& b,
+                                 const SmallPolygon& source, const SmallPolygon& receiver) {
+  const bool rowIsSource = row == i;
+  const ElementPolygon &rowPolygon = rowIsSource ? a : b, &otherFull = rowIsSource ? b : a;
+  const SmallPolygon& other = rowIsSource ? receiver : source;
+  const int otherElement = rowIsSource ? j : i;
+  const Vec3& otherNormal = scene_.mesh.elements[static_cast<std::size_t>(otherElement)].normal;
+  int last = -1;
+  BlockVerdict verdict = BlockVerdict::Unknown;
+  for (int& k : candidates_) {
+    const int solid = scene_.solidOf[static_cast<std::size_t>(k)];
+    if (solid < 0) continue;
+    if (solid != last) {
+      verdict = scene_.contactRegions->judge(solid, row, rowPolygon.v.data(), rowPolygon.count, otherElement);
+      if (verdict == BlockVerdict::Unknown)
+        verdict = scene_.contactRegions->judge(solid, otherElement, otherFull.v.data(), otherFull.count, row);
+      if (verdict == BlockVerdict::Unknown)
+        verdict = rowRegions_.judge(row, rowPolygon.v.data(), rowPolygon.count, solid, other.v.data(),
+                                    other.count, other.v[0], otherNormal);
+      if (verdict == BlockVerdict::HidesAll) return true;
+      if (verdict == BlockVerdict::Shades) shading_.push_back(solid);
+    }
+    last = solid;
+    if (verdict == BlockVerdict::Misses) k = -1;
+  }
+  std::erase(candidates_, -1);
+  return false;
+}
+
+PairResult QuadraturePair::operator()(int i, int j, int row) {
+  const Mesh& mesh = scene_.mesh;
+  PairResult result;
+  PairWork work;
+  const ElementPolygon a(mesh, i), b(mesh, j);
+  const Vec3 &ni = mesh.elements[static_cast<std::size_t>(i)].normal,
+             &nj = mesh.elements[static_cast<std::size_t>(j)].normal;
+  const double areaI = mesh.elements[static_cast<std::size_t>(i)].area;
+  const double scale = (mesh.elements[static_cast<std::size_t>(i)].centroid -
+                        mesh.elements[static_cast<std::size_t>(j)].centroid)
+                           .norm();
+  SmallPolygon source, receiver;
+  const bool receiverWhole = clipToFront(b.v.data(), b.count, a.v[0], ni, 1e-12 * scale, receiver);
+  const bool sourceWhole = clipToFront(a.v.data(), a.count, b.v[0], nj, 1e-12 * scale, source);
+  if (source.count < 3 || receiver.count < 3) return result;
+  candidates_.clear();
+  shading_.clear();
+  scene_.shafts.candidates(i, j, candidates_);
+  const std::vector<SolidPlanes>& solids = scene_.solids;
+  auto whollyHidden = [&]() {
+    result.needsVisibility = true;
+    ++counts_.occludedPairs;
+    ++counts_.hiddenPairs;
+    return result;
+  };
+  if (!candidates_.empty() && !solids.empty() && (row == i || row == j) &&
+      judgeBlocks(i, j, row, a, b, source, receiver))
+    return whollyHidden();
+  // A block between them that cuts every segment from one to the other, proven from its cross-sections
+  // alone, before anything else is prepared.
+  if (!candidates_.empty() && !solids.empty()) {
+    const double eps = shadowEps(source, receiver);
+    int last = -1;
+    for (int k : candidates_) {
+      const int solid = scene_.solidOf[static_cast<std::size_t>(k)];
+      if (solid < 0 || solid == last) continue;
+      last = solid;
+      if (solidCutsEverySegment(source.v.data(), source.count, receiver.v.data(), receiver.count,
+                                solids[static_cast<std::size_t>(solid)],
+                                scene_.solidCentres[static_cast<std::size_t>(solid)], eps))
+        return whollyHidden();
+    }
+  }
+  const ReceiverBound bound =
+      receiverWhole ? scene_.measures[static_cast<std::size_t>(j)].bound : boundOf(receiver, nj);
+  const std::vector<int>& reached = scene_.elementSolids[static_cast<std::size_t>(i)];
+  pieces_.assign(1, source);
+  for (int s : reached) {
+    next_.clear();
+    for (const SmallPolygon& piece : pieces_)
+      piecesOutside(piece, solids[static_cast<std::size_t>(s)], 1e-12 * scale, next_);
+    pieces_.swap(next_);
+  }
+  panels_.clear();
+  for (const SmallPolygon& piece : pieces_) {
+    std::array<SourcePanel, SmallPolygon::kCapacity> fan;
+    const int made = panelsOf(piece.v.data(), piece.count, fan.data(), SmallPolygon::kCapacity);
+    panels_.insert(panels_.end(), fan.begin(), fan.begin() + made);
+  }
+  const int panelCount = static_cast<int>(panels_.size());
+  bool near = false;
+  // The source whole (nothing cut off by the receiver's plane or a block it reaches under) and one panel: its
+  // gap from what is known of the element.
+  double topGap = -1, topEdge = -1;
+  if (sourceWhole && panelCount == 1 && reached.empty()) {
+    const ReceiverBound& own = scene_.measures[static_cast<std::size_t>(i)].bound;
+    double height = INFINITY;
+    for (int k = 0; k < source.count; ++k)
+      height = std::min(height, std::abs(nj.dot(source.v[static_cast<std::size_t>(k)] - bound.point)));
+    topGap = std::max((own.centre - bound.centre).norm() - own.radius - bound.radius, height);
+    topEdge = scene_.measures[static_cast<std::size_t>(i)].longest;
+    near = topGap < kNearSizes * topEdge;
+  }
+  for (int p = 0; p < panelCount && !near && topGap < 0; ++p)
+    near = panelGap(panels_[static_cast<std::size_t>(p)], bound) <
+           kNearSizes * panels_[static_cast<std::size_t>(p)].longestEdge();
+  bool occluded = false;
+  if (!candidates_.empty()) {
+    occluders_.clear();
+    for (int k : candidates_) {
+      const int solid = scene_.solidOf[static_cast<std::size_t>(k)];
+      if (scene_.convex[static_cast<std::size_t>(k)])
+        occluders_.push_back({&scene_.shafts.outline(k), solid,
+                              std::find(shading_.begin(), shading_.end(), solid) != shading_.end()});
+      else
+        for (int e : scene_.patchElements[static_cast<std::size_t>(k)])
+          occluders_.push_back({&scene_.elementPolygons[static_cast<std::size_t>(e)], -1});
+    }
+    clipper_.prepare(source, ni, receiver, nj, occluders_);
+    occluded = !clipper_.occluders().empty();
+  }
+  if (occluded) {
+    result.needsVisibility = true;
+    ++counts_.occludedPairs;
+    // Wholly hidden by one face (the blocks' cross-sections were tried above): nothing to integrate.
+    if (clipper_.hidesAll(source.v.data(), source.count, clipper_.occluders(), false)) {
+      ++counts_.hiddenPairs;
+      return result;
+    }
+  }
+  const double unoccludedTolerance = occluded ? 0.5 * tolerance_ : tolerance_;
+  double unoccluded = 0;
+  if (near) {
+    if (reached.empty()) {
+      unoccluded = polygonToPolygonFormFactor(a.v.data(), a.count, b.v.data(), b.count);
+    } else {
+      for (const SmallPolygon& piece : pieces_) {
+        Vec3 twicePiece = Vec3::Zero();
+        for (int k = 0; k < piece.count; ++k)
+          twicePiece += piece.v[static_cast<std::size_t>(k)].cross(
+              piece.v[static_cast<std::size_t>((k + 1) % piece.count)]);
+        unoccluded += polygonToPolygonFormFactor(piece.v.data(), piece.count, b.v.data(), b.count) * 0.5 *
+                      twicePiece.norm() / areaI;
+      }
+    }
+    ++work.contours;
+  } else {
+    for (int p = 0; p < panelCount; ++p)
+      unoccluded += integrateUnoccluded(panels_[static_cast<std::size_t>(p)], bound, receiver, ni,
+                                        unoccludedTolerance, 0, work, topGap, topEdge);
+    unoccluded /= areaI;
+  }
+  result.value = unoccluded;
+  if (occluded && unoccluded > 0) {
+    auto unoccludedOn = [&](const SourcePanel& panel, double pointTolerance) {
+      return integrateUnoccluded(panel, bound, receiver, ni, pointTolerance, 0, work);
+    };
+    HiddenIntegral hidden(clipper_, kHiddenOrder, unoccludedOn, areaI, work);
+    // One occluder: the source cut into cells along its visibility events, where the hidden part is
+    // analytic. Otherwise (or where the cells would be too many) the adaptive rules with their guards.
+    bool byCells = clipper_.eventPlanes(source, clipper_.occluders(), events_);
+    cells_.clear();
+    const double eps = shadowEps(source, receiver);
+    for (int p = 0; p < panelCount && byCells; ++p)
+      byCells = cutAlongEvents(panels_[static_cast<std::size_t>(p)], events_, eps,
+                               kMaxEventCells - static_cast<int>(cells_.size()), cells_);
+    double sum;
+    if (byCells) {
+      cellPanels_.clear();
+      for (const SmallPolygon& cell : cells_) {
+        std::array<SourcePanel, SmallPolygon::kCapacity> fan;
+        const int made = panelsOf(cell.v.data(), cell.count, fan.data(), SmallPolygon::kCapacity);
+        cellPanels_.insert(cellPanels_.end(), fan.begin(), fan.begin() + made);
+      }
+      sum = hidden.overCells(cellPanels_.data(), static_cast<int>(cellPanels_.size()),
+                             0.5 * tolerance_ * areaI);
+      ++counts_.eventPairs;
+    } else {
+      sum = hidden(panels_.data(), panelCount, 0.5 * tolerance_ * areaI);
+    }
+    result.value = std::max(0.0, unoccluded - sum / areaI);
+  }
+  counts_.points += work.points;
+  counts_.clipped += work.clipped;
+  counts_.contours += work.contours;
+  if (work.budgetReached) ++counts_.budgetPairs;
+  result.kernelEvaluations = static_cast<std::size_t>(work.points);
+  result.contourIntegrals = static_cast<std::size_t>(work.contours);
+  return result;
+}
+
+}  // namespace rt

@@ -1,0 +1,64 @@
+// One pair of the quadrature method (quadrature_method.cpp), on one thread: F_ij = U_ij - H_ij, from the
+// smaller element i.
+//
+// In order, each step cheaper than the next and ending the pair where it can:
+//  1. the shaft test's candidate occluders; each block among them judged from its penumbra and umbra
+//     regions (block_shadow_regions.h): dropped where it misses the pair, the pair done where it hides all;
+//  2. a block's cross-sections tried as a proof that it hides all (shadow_clipper.h);
+//  3. U: the exact contour integral for near pairs, Gauss quadrature of Lambert's formula with an a-priori
+//     order (source_panels.h) elsewhere;
+//  4. H, where occluders remain after the clipper's own tests: over cells cut along the visibility events
+//     where there is one occluder (visibility_events.h), by the guarded adaptive rules otherwise
+//     (hidden_integral.h).
+// Keeps its working vectors from pair to pair: millions of pairs would otherwise spend as long in the heap as
+// in the arithmetic.
+#pragma once
+
+#include <vector>
+
+#include "core/formfactor/block_shadow_regions.h"
+#include "core/formfactor/pair_matrix.h"
+#include "core/formfactor/quadrature_scene.h"
+#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/visibility.h"
+#include "core/formfactor/visibility_events.h"
+
+namespace rt {
+
+class QuadraturePair {
+ public:
+  // What the notes report, summed over threads at the end.
+  struct Counts {
+    long points = 0, clipped = 0, contours = 0, budgetPairs = 0, occludedPairs = 0, hiddenPairs = 0,
+         eventPairs = 0;
+  };
+
+  QuadraturePair(const QuadratureScene& scene, double tolerance);
+
+  // F_ij to the tolerance; `row` is the element the matrix's current row is fixed at (i or j), whose
+  // shadow regions are kept from pair to pair.
+  PairResult operator()(int i, int j, int row);
+
+  const Counts& counts() const { return counts_; }
+
+ private:
+  // Drops the blocks that miss the pair from candidates_; true when one hides all of it.
+  bool judgeBlocks(int i, int j, int row, const ElementPolygon& a, const ElementPolygon& b,
+                   const SmallPolygon& source, const SmallPolygon& receiver);
+
+  const QuadratureScene& scene_;
+  double tolerance_;
+  ShadowClipper clipper_;
+  RowShadowRegions rowRegions_;
+  Counts counts_;
+  std::vector<int> candidates_;
+  std::vector<int> shading_;  // solids a region says shade the pair
+  std::vector<SmallPolygon> pieces_, next_;
+  std::vector<SourcePanel> panels_;
+  std::vector<OccluderPolygon> occluders_;
+  std::vector<EventPlane> events_;
+  std::vector<SmallPolygon> cells_;
+  std::vector<SourcePanel> cellPanels_;
+};
+
+}  // namespace rt

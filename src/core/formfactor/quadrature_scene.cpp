@@ -1,0 +1,85 @@
+#include "core/formfactor/quadrature_scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/formfactor/closed_solids.h"
+#include "core/formfactor/visibility.h"
+
+namespace rt {
+
+ReceiverBound boundOf(const SmallPolygon& receiver, const Vec3& normal) {
+  ReceiverBound bound{receiver.v[0], normal, Vec3::Zero(), 0, 0};
+  Vec3 twice = Vec3::Zero();
+  for (int k = 0; k < receiver.count; ++k) {
+    bound.centre += receiver.v[static_cast<std::size_t>(k)];
+    twice += receiver.v[static_cast<std::size_t>(k)].cross(
+        receiver.v[static_cast<std::size_t>((k + 1) % receiver.count)]);
+  }
+  bound.centre /= receiver.count;
+  for (int k = 0; k < receiver.count; ++k)
+    bound.radius = std::max(bound.radius, (receiver.v[static_cast<std::size_t>(k)] - bound.centre).norm());
+  bound.area = 0.5 * twice.norm();
+  return bound;
+}
+
+QuadratureScene::QuadratureScene(const Mesh& mesh_, const ShaftCulling& shafts_)
+    : mesh(mesh_), shafts(shafts_) {
+  const std::size_t patches = shafts.patchCount();
+  std::vector<double> patchArea(patches, 0.0);
+  patchElements.resize(patches);
+  for (std::size_t e = 0; e < mesh.size(); ++e) {
+    patchArea[static_cast<std::size_t>(mesh.elements[e].patch)] += mesh.elements[e].area;
+    patchElements[static_cast<std::size_t>(mesh.elements[e].patch)].push_back(static_cast<int>(e));
+  }
+  convex.assign(patches, false);
+  elementPolygons.resize(mesh.size());
+  for (std::size_t k = 0; k < patches; ++k) {
+    const std::vector<Vec3>& outline = shafts.outline(static_cast<int>(k));
+    Vec3 sum = Vec3::Zero();
+    for (std::size_t v = 0; v < outline.size(); ++v)
+      sum += outline[v].cross(outline[(v + 1) % outline.size()]);
+    convex[k] = std::abs(0.5 * sum.norm() - patchArea[k]) <= 1e-9 * patchArea[k];
+    if (!convex[k])
+      for (int e : patchElements[k]) elementPolygons[static_cast<std::size_t>(e)] = mesh.polygon(e);
+  }
+  static const std::vector<Vec3> none;
+  std::vector<const std::vector<Vec3>*> outlines;
+  for (std::size_t k = 0; k < patches; ++k)
+    outlines.push_back(convex[k] ? &shafts.outline(static_cast<int>(k)) : &none);
+  solidOf = closedConvexSolids(outlines, solids);
+  shapes = solidShapes(outlines, solidOf, static_cast<int>(solids.size()));
+  for (const SolidShape& shape : shapes) solidCentres.push_back(shape.centre);
+
+  elementSolids.resize(mesh.size());
+  measures.resize(mesh.size());
+  std::vector<std::vector<Vec3>> polygons;
+  std::vector<Vec3> normals;
+  for (std::size_t e = 0; e < mesh.size(); ++e) {
+    const ElementPolygon polygon(mesh, static_cast<int>(e));
+    SmallPolygon small;
+    small.count = polygon.count;
+    std::copy(polygon.v.begin(), polygon.v.begin() + polygon.count, small.v.begin());
+    measures[e].bound = boundOf(small, mesh.elements[e].normal);
+    for (int k = 0; k < polygon.count; ++k)
+      measures[e].longest =
+          std::max(measures[e].longest, (polygon.v[static_cast<std::size_t>((k + 1) % polygon.count)] -
+                                         polygon.v[static_cast<std::size_t>(k)])
+                                            .norm());
+    if (solids.empty()) continue;
+    const double eps = 1e-9 * std::sqrt(mesh.elements[e].area);
+    const int own = solidOf[static_cast<std::size_t>(mesh.elements[e].patch)];
+    for (std::size_t s = 0; s < solids.size(); ++s)
+      if (static_cast<int>(s) != own && areaInside(small, solids[s], eps) > 1e-9 * mesh.elements[e].area)
+        elementSolids[e].push_back(static_cast<int>(s));
+    polygons.emplace_back(polygon.v.begin(), polygon.v.begin() + polygon.count);
+    normals.push_back(mesh.elements[e].normal);
+  }
+  double size = 0;
+  for (const Vec3& v : mesh.vertices) size = std::max(size, v.cwiseAbs().maxCoeff());
+  regionEps = 1e-10 * size;
+  contactRegions = std::make_unique<ContactShadowRegions>(shapes, static_cast<int>(polygons.size()), polygons,
+                                                          normals, regionEps);
+}
+
+}  // namespace rt

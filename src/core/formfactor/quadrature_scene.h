@@ -1,0 +1,50 @@
+// What the quadrature method finds out about a mesh once, before any pair: which patches occlude as whole
+// convex polygons, the closed convex solids (blocks) among them, what each element reaches into, each
+// element's measures for the a-priori order, and the blocks' shadow regions on the planes they stand on.
+// Read by every thread (quadrature_pair.h).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "core/formfactor/block_shadow_regions.h"
+#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/shaft_culling.h"
+#include "core/formfactor/solid_silhouette.h"
+#include "core/formfactor/source_panels.h"
+#include "core/mesh.h"
+
+namespace rt {
+
+struct QuadratureScene {
+  QuadratureScene(const Mesh& mesh, const ShaftCulling& shafts);
+
+  const Mesh& mesh;
+  const ShaftCulling& shafts;
+  // Occluders are whole patches where a patch is convex (its outline covers exactly its elements), the
+  // elements otherwise.
+  std::vector<bool> convex;                        // per patch
+  std::vector<std::vector<int>> patchElements;     // per patch
+  std::vector<std::vector<Vec3>> elementPolygons;  // per element of a patch that is not convex
+  std::vector<SolidPlanes> solids;
+  std::vector<int> solidOf;  // per patch: the solid it bounds, or -1
+  std::vector<SolidShape> shapes;
+  std::vector<Vec3> solidCentres;  // a point inside each solid, for the proofs by cross-sections
+  // The solids each element reaches into (a floor element partly under a block): that part sees nothing,
+  // and the jump at the block's edge is cut out of the source instead of left to the quadrature.
+  std::vector<std::vector<int>> elementSolids;
+  // Per element, what the a-priori order needs of it whole (most pairs clip neither element): its bound as
+  // a receiver, and (with the bound's centre and radius) its longest edge as a source panel.
+  struct Measure {
+    ReceiverBound bound;
+    double longest = 0;
+  };
+  std::vector<Measure> measures;
+  double regionEps = 0;  // a length: 1e-10 of the scene's size
+  std::unique_ptr<ContactShadowRegions> contactRegions;
+};
+
+// The receiver as the a-priori order sees it.
+ReceiverBound boundOf(const SmallPolygon& receiver, const Vec3& normal);
+
+}  // namespace rt
