@@ -64,12 +64,11 @@ class SourceRegion {
   }
 
   // The event plane's line where it matters: the projection of the segment ab from the centre c onto the
-  // source's plane (the points x from which c lies in line behind a point of ab). Lines from which c
-  // cannot be behind ab (ab no nearer the plane than c) are dropped; where only part of ab is nearer, the
-  // projection is unbounded and the whole line is tested.
-  bool matters(const Vec3& c, const Vec3& a, const Vec3& b, const Vec3& planeNormal) const {
-    const double hc = height(c), ha = height(a), hb = height(b);
-    if (ha >= hc - eps_ && hb >= hc - eps_) return false;
+  // source's plane (the points x from which c lies in line behind a point of ab), given the three heights.
+  // Lines from which c cannot be behind ab (ab no nearer the plane than c) are dropped before this; where
+  // only part of ab is nearer, the projection is unbounded and the whole line is tested.
+  bool matters(const Vec3& c, double hc, const Vec3& a, double ha, const Vec3& b, double hb,
+               const Vec3& planeNormal) const {
     if (ha < -eps_ || hb < -eps_ || ha >= hc - eps_ || hb >= hc - eps_) return crossedBy(c, planeNormal);
     const Vec3 pa = c + (a - c) * (hc / (hc - ha)), pb = c + (b - c) * (hc / (hc - hb));
     return meetsSegment(pa, pb);
@@ -95,30 +94,38 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
   const SourceRegion region(source, sourceNormal_, eps_);
   const double tiny = 1e-24 * (eps_ * 1e10) * (eps_ * 1e10);  // a cross product of no direction
   // Receiver corner r behind occluder edge ab (EV), and occluder corner v in front of receiver edge r1 r2
-  // (VE): from x the point nearer the source's plane hides the one farther.
+  // (VE): from x the point nearer the source's plane hides the one farther. Heights first: most candidates
+  // end there, before any cross product.
+  std::array<double, SmallPolygon::kCapacity> receiverHeight;
+  for (int k = 0; k < receiver_.count; ++k)
+    receiverHeight[static_cast<std::size_t>(k)] = region.height(receiver_.v[static_cast<std::size_t>(k)]);
   auto edgeEvents = [&](const Vec3& a, const Vec3& b) {
+    const double ha = region.height(a), hb = region.height(b);
     for (int k = 0; k < receiver_.count; ++k) {
+      const double hr = receiverHeight[static_cast<std::size_t>(k)];
+      if (ha >= hr - eps_ && hb >= hr - eps_) continue;  // ab no nearer the source than r: never in front
       const Vec3& r = receiver_.v[static_cast<std::size_t>(k)];
       const Vec3 n = (a - r).cross(b - r);
-      if (n.squaredNorm() > tiny * tiny && region.matters(r, a, b, n)) out.push_back({r, n});
+      if (n.squaredNorm() > tiny * tiny && region.matters(r, hr, a, ha, b, hb, n)) out.push_back({r, n});
     }
   };
   auto cornerEvents = [&](const Vec3& v) {
+    const double hv = region.height(v);
     for (int k = 0; k < receiver_.count; ++k) {
+      const int next = (k + 1) % receiver_.count;
+      const double h1 = receiverHeight[static_cast<std::size_t>(k)],
+                   h2 = receiverHeight[static_cast<std::size_t>(next)];
+      if (h1 <= hv + eps_ && h2 <= hv + eps_) continue;
       const Vec3 &r1 = receiver_.v[static_cast<std::size_t>(k)],
-                 &r2 = receiver_.v[static_cast<std::size_t>((k + 1) % receiver_.count)];
+                 &r2 = receiver_.v[static_cast<std::size_t>(next)];
       const Vec3 n = (r1 - v).cross(r2 - v);
       if (n.squaredNorm() <= tiny * tiny) continue;
       // From x, v hides a point p of r1 r2: x = p + (v - p) t, so x is p's projection through v, and the
       // segment of them is the projection of r1 r2 from each end's point through v.
-      const double hv = region.height(v), h1 = region.height(r1), h2 = region.height(r2);
-      bool keep;
-      if (h1 <= hv + eps_ && h2 <= hv + eps_)
-        keep = false;
-      else if (hv < -eps_ || h1 <= hv + eps_ || h2 <= hv + eps_)
-        keep = region.crossedBy(v, n);
-      else
-        keep = region.meetsSegment(r1 + (v - r1) * (h1 / (h1 - hv)), r2 + (v - r2) * (h2 / (h2 - hv)));
+      const bool keep =
+          hv < -eps_ || h1 <= hv + eps_ || h2 <= hv + eps_
+              ? region.crossedBy(v, n)
+              : region.meetsSegment(r1 + (v - r1) * (h1 / (h1 - hv)), r2 + (v - r2) * (h2 / (h2 - hv)));
       if (keep) out.push_back({v, n});
     }
   };
