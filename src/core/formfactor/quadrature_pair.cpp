@@ -64,6 +64,12 @@ bool QuadraturePair::judgeBlocks(int i, int j, int row, const ElementPolygon& a,
       if (verdict == BlockVerdict::Unknown)
         verdict = rowRegions_.judge(row, rowPolygon.v.data(), rowPolygon.count, solid, other.v.data(),
                                     other.count, other.v[0], otherNormal);
+      // No region from either side (the block reaches as high as one of them over the other's plane): one
+      // of its faces with both elements in front of it still proves it misses.
+      if (verdict == BlockVerdict::Unknown &&
+          solidMissesEverySegment(source.v.data(), source.count, receiver.v.data(), receiver.count,
+                                  scene_.solids[static_cast<std::size_t>(solid)], scene_.regionEps))
+        verdict = BlockVerdict::Misses;
       if (verdict == BlockVerdict::HidesAll) return true;
       if (verdict == BlockVerdict::Shades) shading_.push_back(solid);
     }

@@ -55,6 +55,11 @@ using SolidPlanes = std::vector<std::pair<Vec3, double>>;
 bool solidCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
                            const SolidPlanes& solid, const Vec3& centre, double eps);
 
+// True when one face plane of the closed convex solid has both polygons strictly in front of it (by more
+// than `eps`): every segment from one to the other stays in front of it too, so the solid hides nothing.
+bool solidMissesEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
+                             const SolidPlanes& solid, double eps);
+
 // The margin (a length) the shadow clipper's tests use between a source and a receiver: 1e-10 of the pair's
 // size.
 double shadowEps(const SmallPolygon& source, const SmallPolygon& receiver);

@@ -41,6 +41,17 @@ double shadowEps(const SmallPolygon& source, const SmallPolygon& receiver) {
   return 1e-10 * size;
 }
 
+bool solidMissesEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
+                             const SolidPlanes& solid, double eps) {
+  for (const auto& [n, offset] : solid) {
+    bool front = true;
+    for (int k = 0; k < fromCount && front; ++k) front = n.dot(from[k]) - offset > eps;
+    for (int k = 0; k < toCount && front; ++k) front = n.dot(to[k]) - offset > eps;
+    if (front) return true;
+  }
+  return false;
+}
+
 bool solidCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
                            const SolidPlanes& solid, const Vec3& centre, double eps) {
   if (fromCount < 1 || toCount < 1 || toCount > SmallPolygon::kCapacity) return false;
