@@ -14,23 +14,6 @@
 namespace rt {
 namespace {
 
-bool segmentMeetsBox(const Vec3& p, const Vec3& q, const Vec3& lo, const Vec3& hi) {
-  double t0 = 0, t1 = 1;
-  for (int axis = 0; axis < 3; ++axis) {
-    const double d = q[axis] - p[axis];
-    if (std::abs(d) < 1e-15) {
-      if (p[axis] < lo[axis] || p[axis] > hi[axis]) return false;
-      continue;
-    }
-    double a = (lo[axis] - p[axis]) / d, b = (hi[axis] - p[axis]) / d;
-    if (a > b) std::swap(a, b);
-    t0 = std::max(t0, a);
-    t1 = std::min(t1, b);
-    if (t0 > t1) return false;
-  }
-  return true;
-}
-
 std::vector<Vec3> grid(const std::vector<Vec3>& square, int n) {
   std::vector<Vec3> points;
   for (int s = 0; s <= n; ++s)

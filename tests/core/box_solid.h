@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -51,6 +52,25 @@ inline Box box(const Vec3& lo, const Vec3& hi) {
   for (const auto& face : b.faces) outlines.push_back(&face);
   b.shapes = solidShapes(outlines, std::vector<int>(b.faces.size(), 0), 1);
   return b;
+}
+
+// Whether the segment pq meets the axis-aligned box [lo, hi] (slabs): the brute-force reference of the
+// tests that prove a block hides nothing or all of a pair.
+inline bool segmentMeetsBox(const Vec3& p, const Vec3& q, const Vec3& lo, const Vec3& hi) {
+  double t0 = 0, t1 = 1;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double d = q[axis] - p[axis];
+    if (std::abs(d) < 1e-15) {
+      if (p[axis] < lo[axis] || p[axis] > hi[axis]) return false;
+      continue;
+    }
+    double a = (lo[axis] - p[axis]) / d, b = (hi[axis] - p[axis]) / d;
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+    if (t0 > t1) return false;
+  }
+  return true;
 }
 
 }  // namespace rt
