@@ -125,6 +125,39 @@ TEST(SolidSilhouette, HidesWhatTheFacesHideOneByOne) {
     }
 }
 
+// A block given without its bottom (the Cornell box's) is closed by the face its open edges outline, and
+// is then a solid; a closed box needs no such face; a lone flat patch gets one but is no solid (no volume).
+TEST(ClosingFaces, ABlockWithoutItsBottomIsASolid) {
+  const Box block = box({0, 0, 0}, {1, 2, 3});
+  std::vector<const std::vector<Vec3>*> open, closed;
+  for (const auto& face : block.faces) {
+    closed.push_back(&face);
+    if (!(face[0].z() == 0 && face[1].z() == 0 && face[2].z() == 0)) open.push_back(&face);  // no bottom
+  }
+  ASSERT_EQ(open.size(), 5u);
+  EXPECT_TRUE(closingFaces(closed).empty());
+  const std::vector<std::vector<Vec3>> closing = closingFaces(open);
+  ASSERT_EQ(closing.size(), 1u);
+  for (const Vec3& v : closing[0]) EXPECT_EQ(v.z(), 0.0);
+  std::vector<const std::vector<Vec3>*> completed = open;
+  completed.push_back(&closing[0]);
+  std::vector<SolidPlanes> planes;
+  const std::vector<int> solidOf = closedConvexSolids(completed, planes);
+  ASSERT_EQ(planes.size(), 1u);
+  for (int s : solidOf) EXPECT_EQ(s, 0);
+  // The closing face faces out of the block: down.
+  const std::vector<Vec3>& c = closing[0];
+  EXPECT_LT((c[1] - c[0]).cross(c[2] - c[1]).z(), 0.0);
+
+  const std::vector<Vec3> flat{{0, 0, 5}, {1, 0, 5}, {1, 1, 5}, {0, 1, 5}};
+  std::vector<const std::vector<Vec3>*> lone{&flat};
+  const std::vector<std::vector<Vec3>> lid = closingFaces(lone);
+  ASSERT_EQ(lid.size(), 1u);
+  lone.push_back(&lid[0]);
+  closedConvexSolids(lone, planes);
+  EXPECT_TRUE(planes.empty());
+}
+
 // solidMissesEverySegment: true only where no segment between the two squares meets the block (checked on
 // grids of points), and it does say so for squares that share the side of one of the block's faces.
 TEST(SolidMissesEverySegment, OnlyWhereNoSegmentMeetsTheBlock) {

@@ -83,11 +83,84 @@ std::vector<int> closedConvexSolids(const std::vector<const std::vector<Vec3>*>&
     for (int k : members)
       for (const Vec3& v : *outlines[static_cast<std::size_t>(k)])
         for (const auto& [n, offset] : faces) convex = convex && n.dot(v) - offset <= 1e-9 * size;
+    // And of some volume: every face has a corner well behind it (faces lying on one plane, a patch and the
+    // face closing it, would pass the test above).
+    for (const auto& [n, offset] : faces) {
+      bool behind = false;
+      for (int k : members)
+        for (const Vec3& v : *outlines[static_cast<std::size_t>(k)])
+          behind = behind || n.dot(v) - offset < -1e-6 * size;
+      convex = convex && behind;
+    }
     if (!convex) continue;
     for (int k : members) solid[static_cast<std::size_t>(k)] = static_cast<int>(planes.size());
     planes.push_back(std::move(faces));
   }
   return solid;
+}
+
+std::vector<std::vector<Vec3>> closingFaces(const std::vector<const std::vector<Vec3>*>& outlines) {
+  std::vector<std::vector<Vec3>> faces;
+  const std::size_t P = outlines.size();
+  double size = 0;
+  for (const auto* outline : outlines)
+    for (const Vec3& v : *outline) size = std::max(size, v.cwiseAbs().maxCoeff());
+  if (!(size > 0)) return faces;
+  const double quantum = 1e-9 * size;
+  auto key = [&](const Vec3& v) {
+    return Key{std::llround(v.x() / quantum), std::llround(v.y() / quantum), std::llround(v.z() / quantum)};
+  };
+  std::map<std::pair<Key, Key>, int> edges, owner;
+  for (std::size_t k = 0; k < P; ++k)
+    for (std::size_t v = 0; v < outlines[k]->size(); ++v) {
+      const std::pair<Key, Key> edge{key((*outlines[k])[v]),
+                                     key((*outlines[k])[(v + 1) % outlines[k]->size()])};
+      ++edges[edge];
+      owner[edge] = static_cast<int>(k);
+    }
+  std::vector<int> parent(P);
+  std::iota(parent.begin(), parent.end(), 0);
+  // Per group: its unshared edges, start -> (end, the start's position).
+  for (const auto& [edge, count] : edges) {
+    const auto reverse = owner.find({edge.second, edge.first});
+    if (reverse != owner.end())
+      parent[static_cast<std::size_t>(findRoot(parent, owner[edge]))] = findRoot(parent, reverse->second);
+  }
+  std::map<int, std::map<Key, std::pair<Key, Vec3>>> open;
+  std::map<int, bool> broken;
+  for (std::size_t k = 0; k < P; ++k)
+    for (std::size_t v = 0; v < outlines[k]->size(); ++v) {
+      const Vec3& a = (*outlines[k])[v];
+      const Key ka = key(a), kb = key((*outlines[k])[(v + 1) % outlines[k]->size()]);
+      if (edges.count({kb, ka})) continue;
+      const int root = findRoot(parent, static_cast<int>(k));
+      if (edges[{ka, kb}] != 1 || open[root].count(ka)) broken[root] = true;  // not a simple loop
+      open[root][ka] = {kb, a};
+    }
+  for (const auto& [root, loop] : open) {
+    if (broken[root] || loop.size() < 3) continue;
+    // Walk the loop once; it must use every unshared edge.
+    std::vector<Vec3> corners;
+    Key at = loop.begin()->first;
+    for (std::size_t step = 0; step < loop.size(); ++step) {
+      const auto next = loop.find(at);
+      if (next == loop.end()) break;
+      corners.push_back(next->second.second);
+      at = next->second.first;
+    }
+    if (corners.size() != loop.size() || at != loop.begin()->first) continue;
+    // Planar: every corner on the plane of the loop's area vector.
+    Vec3 n = Vec3::Zero();
+    for (std::size_t v = 0; v < corners.size(); ++v) n += corners[v].cross(corners[(v + 1) % corners.size()]);
+    if (!(n.norm() > 0)) continue;
+    n.normalize();
+    bool planar = true;
+    for (const Vec3& c : corners) planar = planar && std::abs(n.dot(c - corners[0])) <= 1e-9 * size;
+    if (!planar) continue;
+    std::reverse(corners.begin(), corners.end());
+    faces.push_back(std::move(corners));
+  }
+  return faces;
 }
 
 namespace {

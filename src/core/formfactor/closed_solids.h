@@ -17,6 +17,14 @@ namespace rt {
 std::vector<int> closedConvexSolids(const std::vector<const std::vector<Vec3>*>& outlines,
                                     std::vector<SolidPlanes>& planes);
 
+// For each group of patches joined by shared edges whose unshared edges form one planar loop (a block given
+// without its bottom, as the Cornell box's are), that loop reversed: the face that would close it, to be
+// passed to closedConvexSolids() and solidShapes() after the patches (never an occluder itself). Segments
+// see a convex solid missing one face as the closed one: one that enters through the missing face leaves
+// through another (not through the same plane), which blocks it, one-sided polygons being opaque from
+// behind; and a point under the missing face (the floor under such a block) sees only the faces' backs.
+std::vector<std::vector<Vec3>> closingFaces(const std::vector<const std::vector<Vec3>*>& outlines);
+
 // The area of the part of a convex polygon inside the solid (on or behind every face plane, within eps).
 // A floor element partly under a block: that part sees nothing at all.
 double areaInside(const SmallPolygon& polygon, const SolidPlanes& solid, double eps);

@@ -47,8 +47,12 @@ QuadratureScene::QuadratureScene(const Mesh& mesh_, const ShaftCulling& shafts_)
   std::vector<const std::vector<Vec3>*> outlines;
   for (std::size_t k = 0; k < patches; ++k)
     outlines.push_back(convex[k] ? &shafts.outline(static_cast<int>(k)) : &none);
+  // Blocks given without a bottom are closed by a face of their own (closingFaces()), after the patches.
+  const std::vector<std::vector<Vec3>> closing = closingFaces(outlines);
+  for (const std::vector<Vec3>& face : closing) outlines.push_back(&face);
   solidOf = closedConvexSolids(outlines, solids);
   shapes = solidShapes(outlines, solidOf, static_cast<int>(solids.size()));
+  solidOf.resize(patches);
   for (const SolidShape& shape : shapes) solidCentres.push_back(shape.centre);
 
   elementSolids.resize(mesh.size());
