@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <utility>
 #include <vector>
 
@@ -13,6 +14,13 @@
 #include "core/formfactor/solid_silhouette.h"
 
 namespace rt {
+
+// A SmallPolygon from its corners.
+inline SmallPolygon polygon(std::initializer_list<Vec3> corners) {
+  SmallPolygon p;
+  for (const Vec3& c : corners) p.v[static_cast<std::size_t>(p.count++)] = c;
+  return p;
+}
 
 struct Box {
   std::vector<std::vector<Vec3>> faces;

@@ -14,12 +14,6 @@
 namespace rt {
 namespace {
 
-SmallPolygon polygon(std::initializer_list<Vec3> corners) {
-  SmallPolygon p;
-  for (const Vec3& c : corners) p.v[static_cast<std::size_t>(p.count++)] = c;
-  return p;
-}
-
 const SmallPolygon kSource = polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});  // faces +z
 const Vec3 kUp{0, 0, 1}, kDown{0, 0, -1};
 

@@ -9,7 +9,7 @@
 namespace rt {
 namespace {
 
-using Key = std::tuple<long long, long long, long long>;
+using Key = CornerKey::Key;
 
 int findRoot(std::vector<int>& parent, int k) {
   while (parent[static_cast<std::size_t>(k)] != k)
@@ -20,20 +20,20 @@ int findRoot(std::vector<int>& parent, int k) {
 
 }  // namespace
 
+CornerKey::CornerKey(const std::vector<const std::vector<Vec3>*>& outlines) {
+  for (const auto* outline : outlines)
+    for (const Vec3& v : *outline) size_ = std::max(size_, v.cwiseAbs().maxCoeff());
+  quantum_ = 1e-9 * std::max(size_, 1e-300);
+}
+
 std::vector<int> closedConvexSolids(const std::vector<const std::vector<Vec3>*>& outlines,
                                     std::vector<SolidPlanes>& planes) {
   const std::size_t P = outlines.size();
   std::vector<int> solid(P, -1);
   planes.clear();
-  double size = 0;
-  for (const auto* outline : outlines)
-    for (const Vec3& v : *outline) size = std::max(size, v.cwiseAbs().maxCoeff());
+  const CornerKey key(outlines);
+  const double size = key.size();
   if (!(size > 0)) return solid;
-  // Corners that agree to 1e-9 of the scene's size are the same corner.
-  const double quantum = 1e-9 * size;
-  auto key = [&](const Vec3& v) {
-    return Key{std::llround(v.x() / quantum), std::llround(v.y() / quantum), std::llround(v.z() / quantum)};
-  };
   // Directed edge -> how many patches use it.
   std::map<std::pair<Key, Key>, int> edges;
   for (const auto* outline : outlines)
@@ -102,14 +102,9 @@ std::vector<int> closedConvexSolids(const std::vector<const std::vector<Vec3>*>&
 std::vector<std::vector<Vec3>> closingFaces(const std::vector<const std::vector<Vec3>*>& outlines) {
   std::vector<std::vector<Vec3>> faces;
   const std::size_t P = outlines.size();
-  double size = 0;
-  for (const auto* outline : outlines)
-    for (const Vec3& v : *outline) size = std::max(size, v.cwiseAbs().maxCoeff());
+  const CornerKey key(outlines);
+  const double size = key.size();
   if (!(size > 0)) return faces;
-  const double quantum = 1e-9 * size;
-  auto key = [&](const Vec3& v) {
-    return Key{std::llround(v.x() / quantum), std::llround(v.y() / quantum), std::llround(v.z() / quantum)};
-  };
   std::map<std::pair<Key, Key>, int> edges, owner;
   for (std::size_t k = 0; k < P; ++k)
     for (std::size_t v = 0; v < outlines[k]->size(); ++v) {

@@ -2,12 +2,30 @@
 // faces need no clipping from outside (shadow_clipper.h), which halves the occluders of a block.
 #pragma once
 
+#include <cmath>
+#include <tuple>
 #include <vector>
 
 #include "core/formfactor/shadow_clipper.h"
 #include "core/vec.h"
 
 namespace rt {
+
+// Corners that agree to 1e-9 of the outlines' size are the same corner: this gives each its key, as every
+// function here and solidShapes() have it.
+class CornerKey {
+ public:
+  using Key = std::tuple<long long, long long, long long>;
+  explicit CornerKey(const std::vector<const std::vector<Vec3>*>& outlines);
+  double size() const { return size_; }  // the largest coordinate; 0 when there is nothing
+  Key operator()(const Vec3& v) const {
+    return Key{std::llround(v.x() / quantum_), std::llround(v.y() / quantum_),
+               std::llround(v.z() / quantum_)};
+  }
+
+ private:
+  double size_ = 0, quantum_ = 1;
+};
 
 // outlines[k]: patch k's convex outline, counter-clockwise seen from its front. Returns per patch the index
 // of the solid it bounds, or -1, and fills `planes` with each solid's outward face planes. A group of

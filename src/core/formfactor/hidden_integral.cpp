@@ -36,17 +36,34 @@ double HiddenIntegral::operator()(const SourcePanel* panels, int count, double t
     }
     push(heap, std::move(top), estimate, allHidden);
   }
-  auto byError = [](const Item& a, const Item& b) { return a.error < b.error; };
+  return done + refine(heap, tolerance, [&](Item& worst, std::vector<Item>& into) {
+           double finished = 0;  // children that no occluder touches or that are wholly hidden
+           for (std::size_t c = 0; c < 4; ++c) {
+             Child& child = worst.children[c];
+             if (child.state != Child::Mixed) {
+               finished += child.value;
+               continue;
+             }
+             Item next{child.panel, std::move(child.occluders), 0, 0, worst.depth + 1};
+             push(into, std::move(next), child.value, child.allHidden);
+           }
+           return finished;
+         });
+}
+
+template <class T, class Split>
+double HiddenIntegral::refine(std::vector<T>& heap, double tolerance, Split&& split) {
+  auto byError = [](const T& a, const T& b) { return a.error < b.error; };
   std::make_heap(heap.begin(), heap.end(), byError);
-  double error = 0;
-  for (const Item& item : heap) error += item.error;
+  double error = 0, done = 0;
+  for (const T& item : heap) error += item.error;
   while (!heap.empty() && error > tolerance) {
     if (work_.points >= kMaxPoints) {
       work_.budgetReached = true;
       break;
     }
     std::pop_heap(heap.begin(), heap.end(), byError);
-    Item worst = std::move(heap.back());
+    T worst = std::move(heap.back());
     heap.pop_back();
     error -= worst.error;
     if (worst.depth + 1 >= kMaxDepth) {
@@ -54,19 +71,14 @@ double HiddenIntegral::operator()(const SourcePanel* panels, int count, double t
       work_.budgetReached = true;
       continue;
     }
-    for (std::size_t c = 0; c < 4; ++c) {
-      Child& child = worst.children[c];
-      if (child.state != Child::Mixed) {
-        done += child.value;
-        continue;
-      }
-      Item next{child.panel, std::move(child.occluders), 0, 0, worst.depth + 1};
-      push(heap, std::move(next), child.value, child.allHidden);
-      error += heap.back().error;
-      std::push_heap(heap.begin(), heap.end(), byError);
+    const std::size_t before = heap.size();
+    done += split(worst, heap);
+    for (std::size_t k = before; k < heap.size(); ++k) {
+      error += heap[k].error;
+      std::push_heap(heap.begin(), heap.begin() + static_cast<std::ptrdiff_t>(k) + 1, byError);
     }
   }
-  for (const Item& item : heap) done += item.value;
+  for (const T& item : heap) done += item.value;
   return done;
 }
 
@@ -90,50 +102,31 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
     rate(cell);
     heap.push_back(std::move(cell));
   }
-  auto byError = [](const Smooth& a, const Smooth& b) { return a.error < b.error; };
-  std::make_heap(heap.begin(), heap.end(), byError);
-  double error = 0;
-  for (const Smooth& cell : heap) error += cell.error;
-  while (!heap.empty() && error > tolerance) {
-    if (work_.points >= kMaxPoints) {
-      work_.budgetReached = true;
-      break;
-    }
-    std::pop_heap(heap.begin(), heap.end(), byError);
-    Smooth worst = std::move(heap.back());
-    heap.pop_back();
-    error -= worst.error;
-    if (worst.depth + 1 >= kMaxDepth) {
-      done += worst.value;
-      work_.budgetReached = true;
-      continue;
-    }
-    // The children's 2 x 2 rules against the parent's: for an analytic integrand that difference is about
-    // the parent's error, and the children's together about a sixteenth of it. It replaces their own
-    // one-point estimates (which fall only four times per split), shared out in their proportions.
-    std::array<Smooth, 4> children;
-    const std::array<SourcePanel, 4> parts = worst.panel.split();
-    double sum = 0, own = 0;
-    for (std::size_t c = 0; c < 4; ++c) {
-      Smooth& child = children[c];
-      child = {parts[c], 0, 0, worst.depth + 1};
-      child.value = clipper_.hidden(parts[c].centre(), clipper_.occluders()) * parts[c].area();
-      ++work_.points;
-      ++work_.clipped;
-      rate(child);
-      sum += child.value;
-      own += child.error;
-    }
-    const double difference = std::abs(sum - worst.value);
-    for (Smooth& child : children) {
-      child.error = own > 0 ? std::min(child.error, difference * child.error / own) : 0.25 * difference;
-      error += child.error;
-      heap.push_back(std::move(child));
-      std::push_heap(heap.begin(), heap.end(), byError);
-    }
-  }
-  for (const Smooth& cell : heap) done += cell.value;
-  return done;
+  return done + refine(heap, tolerance, [&](Smooth& worst, std::vector<Smooth>& into) {
+           // The children's 2 x 2 rules against the parent's: for an analytic integrand that difference is
+           // about the parent's error, and the children's together about a sixteenth of it. It replaces their
+           // own one-point estimates (which fall only four times per split), shared out in their proportions.
+           std::array<Smooth, 4> children;
+           const std::array<SourcePanel, 4> parts = worst.panel.split();
+           double sum = 0, own = 0;
+           for (std::size_t c = 0; c < 4; ++c) {
+             Smooth& child = children[c];
+             child = {parts[c], 0, 0, worst.depth + 1};
+             child.value = clipper_.hidden(parts[c].centre(), clipper_.occluders()) * parts[c].area();
+             ++work_.points;
+             ++work_.clipped;
+             rate(child);
+             sum += child.value;
+             own += child.error;
+           }
+           const double difference = std::abs(sum - worst.value);
+           for (Smooth& child : children) {
+             child.error =
+                 own > 0 ? std::min(child.error, difference * child.error / own) : 0.25 * difference;
+             into.push_back(std::move(child));
+           }
+           return 0.0;
+         });
 }
 
 void HiddenIntegral::rate(Smooth& cell) {

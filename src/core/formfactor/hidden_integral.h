@@ -78,6 +78,12 @@ class HiddenIntegral {
     double value = 0, error = 0;
     int depth = 0;
   };
+  // The global refinement both integrals share: the item with the largest error estimate is split
+  // (`split(worst, heap)` appends its parts and returns the value of those finished outright) until the
+  // estimates add up to less than `tolerance` or a work bound is reached. Returns the sum of every value.
+  template <class T, class Split>
+  double refine(std::vector<T>& heap, double tolerance, Split&& split);
+
   // From `value` holding the one-point rule: the 2 x 2 rule's value and the difference as its error.
   void rate(Smooth& cell);
 

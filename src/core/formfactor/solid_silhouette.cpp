@@ -5,24 +5,19 @@
 #include <map>
 #include <tuple>
 
+#include "core/formfactor/closed_solids.h"
+
 namespace rt {
 namespace {
 
-using Key = std::tuple<long long, long long, long long>;
+using Key = CornerKey::Key;
 
 }  // namespace
 
 std::vector<SolidShape> solidShapes(const std::vector<const std::vector<Vec3>*>& outlines,
                                     const std::vector<int>& solidOf, int solidCount) {
   std::vector<SolidShape> shapes(static_cast<std::size_t>(std::max(0, solidCount)));
-  double size = 0;
-  for (const auto* outline : outlines)
-    for (const Vec3& v : *outline) size = std::max(size, v.cwiseAbs().maxCoeff());
-  // Corners that agree to 1e-9 of the scene's size are the same corner, as closedConvexSolids() has it.
-  const double quantum = 1e-9 * std::max(size, 1e-300);
-  auto key = [&](const Vec3& v) {
-    return Key{std::llround(v.x() / quantum), std::llround(v.y() / quantum), std::llround(v.z() / quantum)};
-  };
+  const CornerKey key(outlines);
   std::vector<std::map<Key, int>> cornerIndex(shapes.size());
   std::vector<std::map<std::pair<int, int>, int>> edgeOwner(shapes.size());  // directed edge -> face
   for (std::size_t k = 0; k < outlines.size() && k < solidOf.size(); ++k) {
