@@ -63,16 +63,7 @@ class QuadratureMethod : public FormFactorMethod {
           return fromSmallerElement(mesh, i, j, [&](int a, int b) { return pair(a, b, i); });
         });
     QuadraturePair::Counts total;
-    for (const QuadraturePair& pair : pairs) {
-      const QuadraturePair::Counts& c = pair.counts();
-      total.points += c.points;
-      total.clipped += c.clipped;
-      total.contours += c.contours;
-      total.budgetPairs += c.budgetPairs;
-      total.occludedPairs += c.occludedPairs;
-      total.hiddenPairs += c.hiddenPairs;
-      total.eventPairs += c.eventPairs;
-    }
+    for (const QuadraturePair& pair : pairs) total += pair.counts();
     char line[256];
     std::snprintf(line, sizeof line,
                   "absolute tolerance %.3g: %ld point evaluations (%ld with the receiver clipped), %ld exact "

@@ -37,6 +37,16 @@ double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound,
   return sum;
 }
 
+// Convex polygons as panels (panelsOf()), appended to `out`.
+void appendPanels(const std::vector<SmallPolygon>& polygons, std::vector<SourcePanel>& out) {
+  out.clear();
+  for (const SmallPolygon& polygon : polygons) {
+    std::array<SourcePanel, SmallPolygon::kCapacity> fan;
+    const int made = panelsOf(polygon.v.data(), polygon.count, fan.data(), SmallPolygon::kCapacity);
+    out.insert(out.end(), fan.begin(), fan.begin() + made);
+  }
+}
+
 }  // namespace
 
 QuadraturePair::QuadraturePair(const QuadratureScene& scene, double tolerance)
@@ -133,12 +143,7 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
       piecesOutside(piece, solids[static_cast<std::size_t>(s)], 1e-12 * scale, next_);
     pieces_.swap(next_);
   }
-  panels_.clear();
-  for (const SmallPolygon& piece : pieces_) {
-    std::array<SourcePanel, SmallPolygon::kCapacity> fan;
-    const int made = panelsOf(piece.v.data(), piece.count, fan.data(), SmallPolygon::kCapacity);
-    panels_.insert(panels_.end(), fan.begin(), fan.begin() + made);
-  }
+  appendPanels(pieces_, panels_);
   const int panelCount = static_cast<int>(panels_.size());
   bool near = false;
   // The source whole (nothing cut off by the receiver's plane or a block it reaches under) and one panel: its
@@ -218,12 +223,7 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
                                kMaxEventCells - static_cast<int>(cells_.size()), cells_);
     double sum;
     if (byCells) {
-      cellPanels_.clear();
-      for (const SmallPolygon& cell : cells_) {
-        std::array<SourcePanel, SmallPolygon::kCapacity> fan;
-        const int made = panelsOf(cell.v.data(), cell.count, fan.data(), SmallPolygon::kCapacity);
-        cellPanels_.insert(cellPanels_.end(), fan.begin(), fan.begin() + made);
-      }
+      appendPanels(cells_, cellPanels_);
       sum = hidden.overCells(cellPanels_.data(), static_cast<int>(cellPanels_.size()),
                              0.5 * tolerance_ * areaI);
       ++counts_.eventPairs;

@@ -31,6 +31,16 @@ class QuadraturePair {
   struct Counts {
     long points = 0, clipped = 0, contours = 0, budgetPairs = 0, occludedPairs = 0, hiddenPairs = 0,
          eventPairs = 0;
+    Counts& operator+=(const Counts& o) {
+      points += o.points;
+      clipped += o.clipped;
+      contours += o.contours;
+      budgetPairs += o.budgetPairs;
+      occludedPairs += o.occludedPairs;
+      hiddenPairs += o.hiddenPairs;
+      eventPairs += o.eventPairs;
+      return *this;
+    }
   };
 
   QuadraturePair(const QuadratureScene& scene, double tolerance);
