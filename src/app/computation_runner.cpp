@@ -3,6 +3,8 @@
 #include <QMetaObject>
 #include <QThread>
 
+#include "core/vector_state.h"
+
 namespace rt::app {
 
 // Forwards progress to the GUI thread (queued) at most once per percent, and can be cancelled from it.
@@ -62,6 +64,7 @@ void ComputationRunner::launch(Job job) {
   wasCancelled_ = false;
   auto progress = currentProgress_;
   thread_ = QThread::create([this, job = std::move(job), progress] {
+    clearUpperVectorState();  // the GUI thread's libraries may have left it dirty (core/vector_state.h)
     try {
       outcome_ = std::make_shared<PipelineResult>(job(*progress));
     } catch (const Cancelled&) {

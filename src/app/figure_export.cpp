@@ -8,6 +8,7 @@
 #include "app/lesson_session.h"
 #include "core/input_error.h"
 #include "core/progress.h"
+#include "core/vector_state.h"
 #include "lesson/step_result.h"
 #include "viz/lesson_figures.h"
 
@@ -72,6 +73,7 @@ void LessonFigureExport::start() {
   std::filesystem::create_directories(folder_.toStdString(), ignored);
   auto progress = progress_;
   thread_ = QThread::create([this, progress, steps] {
+    clearUpperVectorState();  // the GUI thread's libraries may have left it dirty (core/vector_state.h)
     const lesson::Lesson& lesson = library_.lessons().at(static_cast<std::size_t>(lesson_));
     try {
       for (int s = 0; s < steps; ++s) {

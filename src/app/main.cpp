@@ -9,9 +9,12 @@
 #include "app/main_window.h"
 #include "app/screenshot.h"
 #include "app/vtk_widget.h"
+#include "core/vector_state.h"
 #include "typeset/web_engine.h"
 
 int main(int argc, char** argv) {
+  // Before any thread exists: the threads made later start from this state (core/vector_state.h).
+  rt::clearUpperVectorState();
   // VTK needs its GL context profile decided before any Qt GL object exists.
   rt::app::VtkWidget::setDefaultSurfaceFormat();
   // The text pane is a web view (typeset maths): WebEngine's settings come before the application object too.

@@ -10,6 +10,7 @@
 #include "cli/commands.h"
 #include "core/check.h"
 #include "core/input_error.h"
+#include "core/vector_state.h"
 #include "plugins/optional_methods.h"
 
 namespace {
@@ -39,6 +40,8 @@ void reportMissingFilesAsInputErrors(CLI::App& app) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Before any thread exists: the threads made later start from this state (core/vector_state.h).
+  rt::clearUpperVectorState();
   using rt::cli::ExitCode;
   CLI::App app{"radiosity: the Radiosity Textbook's command line (form factors, solvers, figures, lessons)"};
   app.require_subcommand(1);

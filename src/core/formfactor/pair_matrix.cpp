@@ -10,6 +10,8 @@
 #include <cmath>
 #include <mutex>
 
+#include "core/vector_state.h"
+
 namespace rt {
 
 bool elementsFaceEachOther(const Mesh& mesh, int i, int j) {
@@ -37,6 +39,9 @@ void forEachRow(std::size_t rows, const FormFactorOptions& options, Progress& pr
   const std::size_t reportEvery = std::max<std::size_t>(1, rows / 100);
   progress.report(0.0, stage);
   auto body = [&](const tbb::blocked_range<std::size_t>& range) {
+    // The worker may have been created from a thread whose vector state a library left dirty
+    // (vector_state.h).
+    clearUpperVectorState();
     RowCounters local;
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       if (cancelled.load(std::memory_order_relaxed)) return;
