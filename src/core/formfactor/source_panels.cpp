@@ -91,9 +91,13 @@ int gaussOrderFor(double gap, double h, int corners, double receiverArea, double
   if (needed <= 1) return 1;
   // A triangle's collapsed rule carries the Jacobian u in its integrand, which costs one power of rho (the
   // n x n rule is exact to degree 2n - 2 in u, not 2n - 1): M rho^(1 - 2n).
-  const double lost = corners == 3 ? 1 : 0;
-  const int n = static_cast<int>(std::ceil((std::log(needed) / std::log(rho) + lost) / 2));
-  return n <= kMaxOrder ? std::max(1, n) : 0;
+  // The least n with rho^(2n - lost) >= needed, by multiplication: a logarithm per pair cost more than the
+  // rest of the choice.
+  double power = corners == 3 ? rho : rho * rho;  // rho^(2n - lost) for n = 1
+  const double step = rho * rho;
+  for (int n = 1; n <= kMaxOrder; ++n, power *= step)
+    if (power >= needed) return n;
+  return 0;
 }
 
 int panelsOf(const Vec3* polygon, int count, SourcePanel* out, int capacity) {
