@@ -76,6 +76,41 @@ TEST(QuadratureMethod, UnoccludedEntriesWithinTheTolerance) {
     }
 }
 
+// Far pairs may be integrated by one point on each side (the kernel at both one-point nodes) where the
+// a-priori bound allows it on both: a small source facing a larger receiver (a square or a triangle), level
+// or tilted, from near to far. The receiver's own size must count: with the source's alone, the larger
+// receivers here would be off by several times the tolerance.
+TEST(QuadratureMethod, FarPairsOnOnePointEachSideMeetTheTolerance) {
+  for (double side : {0.1, 1.0})
+    for (bool triangle : {false, true})
+      for (double tilt : {0.0, 0.5})
+        for (double height : {1.5, 3.0, 6.0, 12.0, 30.0}) {
+          Scene s = test::emptyScene();
+          test::addQuad(s, {0, 0, 0}, {side, 0, 0}, {side, side, 0}, {0, side, 0});
+          // Facing down (towards the source), tilted about the x axis by `tilt` (rise over run).
+          const Vec3 a(0.3, -0.5, height), b(0.3, 0.5, height + tilt), c(1.3, 0.5, height + tilt),
+              d(1.3, -0.5, height);
+          if (triangle) {
+            Patch p;
+            p.vertices = {a, b, c};
+            const Vec3 n = newellNormal(p.vertices);
+            p.normal = n.normalized();
+            p.area = 0.5 * n.norm();
+            s.patches.push_back(p);
+          } else {
+            test::addQuad(s, a, b, c, d);
+          }
+          const Mesh mesh = test::meshOf(s, 1);
+          const FormFactorMatrix exact = runMethod("analytic", mesh);
+          for (double tolerance : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7}) {
+            const FormFactorMatrix F = runMethod("quadrature", mesh, withTolerance(tolerance));
+            EXPECT_LE(maxAbsDifference(F, exact), tolerance)
+                << "source " << side << (triangle ? ", triangle" : ", square") << " tilted " << tilt
+                << " at height " << height << ", tolerance " << tolerance << ": F = " << exact(0, 1);
+          }
+        }
+}
+
 TEST(QuadratureMethod, ClosedBoxRowsSumToOne) {
   const Mesh mesh = test::meshOf(test::closedBox(1, 2, 3), 4);
   const double tolerance = 1e-6;

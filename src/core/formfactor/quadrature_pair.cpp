@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/closed_solids.h"
@@ -16,10 +17,48 @@ constexpr int kMaxUnoccludedDepth = 6;
 constexpr int kMaxEventCells = 64;  // more, and the adaptive rules cost less than the cells
 constexpr int kHiddenOrder = 2;     // low: the hidden part has kinks and jumps where it is not cut into cells
 
+// The receiver as a panel of its own, where it is one (a whole triangle or quadrilateral), for the far
+// pairs that one point on each side integrates to the tolerance.
+struct FarReceiver {
+  SourcePanel panel;
+  double longest = 0;
+  bool usable = false;
+};
+
+// F(dA_x -> receiver) dA_x over a far panel by one point on each side: the kernel cos cos / (pi r^2) at the
+// panels' one-point Gauss nodes, times both weights. The a-priori bound (source_panels.h) is symmetric in
+// the two elements: the receiver's one-point rule from a fixed x errs by the same M rho^-2 as the source's,
+// with rho from the receiver's own edge. Each side gets half the tolerance; the pair must face itself at
+// both nodes. A fifth of the cost of Lambert's formula, whose four arctangents dominate far pairs.
+bool farFieldPair(const SourcePanel& panel, const FarReceiver& far, const ReceiverBound& bound,
+                  const Vec3& normal, double gap, double edge, double tolerance, double& sum) {
+  if (!far.usable || !(gap > 0)) return false;
+  if (gaussOrderFor(gap, std::max(edge, far.longest), std::min(panel.count, far.panel.count), bound.area,
+                    0.5 * tolerance) != 1)
+    return false;
+  Vec3 x = Vec3::Zero(), y = Vec3::Zero();
+  double wx = 0, wy = 0;
+  forEachGaussPoint(panel, 1, [&](const Vec3& p, double w) { x = p, wx = w; });
+  forEachGaussPoint(far.panel, 1, [&](const Vec3& p, double w) { y = p, wy = w; });
+  const Vec3 d = y - x;
+  const double r2 = d.squaredNorm(), cx = normal.dot(d), cy = -bound.normal.dot(d);
+  if (!(cx > 0 && cy > 0)) return false;
+  sum = wx * wy * cx * cy / (std::numbers::pi * r2 * r2);
+  return true;
+}
+
 // `gap` and `edge`, where known (>= 0), are panelGap() and the longest edge of the panel.
 double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound, const SmallPolygon& receiver,
                            const Vec3& normal, double tolerance, int depth, PairWork& work, double gap = -1,
-                           double edge = -1) {
+                           double edge = -1, const FarReceiver* far = nullptr) {
+  if (far) {
+    double sum = 0;
+    if (farFieldPair(panel, *far, bound, normal, gap >= 0 ? gap : panelGap(panel, bound),
+                     edge >= 0 ? edge : panel.longestEdge(), tolerance, sum)) {
+      ++work.points;
+      return sum;
+    }
+  }
   int n = gap >= 0 ? gaussOrderFor(gap, edge, panel.count, bound.area, tolerance)
                    : gaussOrderFor(panel, bound, tolerance);
   if (n == 0 && depth < kMaxUnoccludedDepth) {
@@ -202,9 +241,16 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
     }
     ++work.contours;
   } else {
+    FarReceiver far;
+    if (receiverWhole && receiver.count <= 4) {
+      far.panel.count = receiver.count;
+      std::copy(receiver.v.begin(), receiver.v.begin() + receiver.count, far.panel.v.begin());
+      far.longest = scene_.measures[static_cast<std::size_t>(j)].longest;
+      far.usable = true;
+    }
     for (int p = 0; p < panelCount; ++p)
       unoccluded += integrateUnoccluded(panels_[static_cast<std::size_t>(p)], bound, receiver, ni,
-                                        unoccludedTolerance, 0, work, topGap, topEdge);
+                                        unoccludedTolerance, 0, work, topGap, topEdge, &far);
     unoccluded /= areaI;
   }
   result.value = unoccluded;
