@@ -185,5 +185,50 @@ TEST(SolidMissesEverySegment, OnlyWhereNoSegmentMeetsTheBlock) {
                                        square(0.9, 0.45, 1, 0.1).v.data(), 4, block.planes, 1e-12));
 }
 
+// Planes through an edge of one element and a corner of the other (faces of their hull) settle pairs that the
+// block's own faces do not: a floor element beside the block and a wall element lower than its top, where
+// no shadow region is bounded either way. Never where a segment between them meets the block.
+TEST(SolidOutsideHullOf, OnlyWhereNoSegmentMeetsTheBlock) {
+  const Vec3 lo{0.4, 0.4, 0}, hi{0.6, 0.6, 0.5};
+  const Box block = box(lo, hi);
+  const std::vector<Vec3>& corners = block.shapes[0].corners;
+  auto floorSquare = [](double x, double y) {
+    return polygon({{x, y, 0}, {x + 0.1, y, 0}, {x + 0.1, y + 0.1, 0}, {x, y + 0.1, 0}});
+  };
+  auto wallSquare = [](double y, double z) {  // on the wall x = 0, facing +x
+    return polygon({{0, y, z}, {0, y + 0.1, z}, {0, y + 0.1, z + 0.1}, {0, y, z + 0.1}});
+  };
+  auto meetsAny = [&](const SmallPolygon& a, const SmallPolygon& b) {
+    for (double s = 0; s <= 1; s += 0.125)
+      for (double t = 0; t <= 1; t += 0.125)
+        for (double u = 0; u <= 1; u += 0.125)
+          for (double v = 0; v <= 1; v += 0.125) {
+            const Vec3 p = (1 - s) * ((1 - t) * a.v[0] + t * a.v[3]) + s * ((1 - t) * a.v[1] + t * a.v[2]);
+            const Vec3 q = (1 - u) * ((1 - v) * b.v[0] + v * b.v[3]) + u * ((1 - v) * b.v[1] + v * b.v[2]);
+            if (segmentMeetsBox(p, q, lo, hi)) return true;
+          }
+    return false;
+  };
+  int proven = 0, onlyByTheHull = 0, meeting = 0;
+  for (double x = 0.05; x < 1; x += 0.1)
+    for (double y = 0.05; y < 1; y += 0.1)
+      for (double wallY : {0.0, 0.45, 0.8})
+        for (double wallZ : {0.1, 0.3, 0.7}) {
+          if (x + 0.1 > lo.x() && x < hi.x() && y + 0.1 > lo.y() && y < hi.y()) continue;  // under the block
+          const SmallPolygon floor = floorSquare(x, y), wall = wallSquare(wallY, wallZ);
+          const bool outside = solidOutsideHullOf(floor.v.data(), 4, wall.v.data(), 4, corners.data(),
+                                                  static_cast<int>(corners.size()), 1e-12);
+          const bool meets = meetsAny(floor, wall);
+          meeting += meets;
+          if (!outside) continue;
+          ++proven;
+          onlyByTheHull += !solidMissesEverySegment(floor.v.data(), 4, wall.v.data(), 4, block.planes, 1e-12);
+          EXPECT_FALSE(meets) << "floor at " << x << ", " << y << ", wall at " << wallY << ", " << wallZ;
+        }
+  EXPECT_GT(proven, 200);
+  EXPECT_GT(onlyByTheHull, 50);
+  EXPECT_GT(meeting, 50);  // and the block does stand between many of them
+}
+
 }  // namespace
 }  // namespace rt

@@ -115,10 +115,15 @@ bool QuadraturePair::judgeBlocks(int i, int j, int row, const ElementPolygon& a,
                                     other.count, other.v[0], otherNormal);
       // No region from either side (the block reaches as high as one of them over the other's plane): one
       // of its faces with both elements in front of it still proves it misses.
-      if (verdict == BlockVerdict::Unknown &&
-          solidMissesEverySegment(source.v.data(), source.count, receiver.v.data(), receiver.count,
-                                  scene_.solids[static_cast<std::size_t>(solid)], scene_.regionEps))
-        verdict = BlockVerdict::Misses;
+      if (verdict == BlockVerdict::Unknown) {
+        const SolidShape& shape = scene_.shapes[static_cast<std::size_t>(solid)];
+        if (solidMissesEverySegment(source.v.data(), source.count, receiver.v.data(), receiver.count,
+                                    scene_.solids[static_cast<std::size_t>(solid)], scene_.regionEps) ||
+            solidOutsideHullOf(source.v.data(), source.count, receiver.v.data(), receiver.count,
+                               shape.corners.data(), static_cast<int>(shape.corners.size()),
+                               scene_.regionEps))
+          verdict = BlockVerdict::Misses;
+      }
       if (verdict == BlockVerdict::HidesAll) return true;
       if (verdict == BlockVerdict::Shades) shading_.push_back(solid);
     }

@@ -60,6 +60,14 @@ bool solidCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int 
 bool solidMissesEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
                              const SolidPlanes& solid, double eps);
 
+// True when a plane through an edge of one polygon and a corner of the other has both polygons on or behind
+// it and every corner of the solid strictly in front (by more than `eps`): such a plane is a face of the
+// polygons' convex hull, which holds every segment from one to the other, so the solid (the convex hull of
+// `corners`) meets none of them. With solidMissesEverySegment() (the solid's own faces) it settles most
+// pairs whose blocks have no shadow region (block_shadow_regions.h) before the clipper is prepared.
+bool solidOutsideHullOf(const Vec3* a, int na, const Vec3* b, int nb, const Vec3* corners, int cornerCount,
+                        double eps);
+
 // The margin (a length) the shadow clipper's tests use between a source and a receiver: 1e-10 of the pair's
 // size.
 double shadowEps(const SmallPolygon& source, const SmallPolygon& receiver);

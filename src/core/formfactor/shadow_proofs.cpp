@@ -52,6 +52,39 @@ bool solidMissesEverySegment(const Vec3* from, int fromCount, const Vec3* to, in
   return false;
 }
 
+bool solidOutsideHullOf(const Vec3* a, int na, const Vec3* b, int nb, const Vec3* corners, int cornerCount,
+                        double eps) {
+  auto centreOf = [](const Vec3* p, int n) {
+    Vec3 c = Vec3::Zero();
+    for (int k = 0; k < n; ++k) c += p[k];
+    return Vec3(c / n);
+  };
+  // Planes through an edge of one polygon and a corner of the other: all of the edge's polygon lies on its
+  // centre's side. The solid's corners are tested first, as most planes have some on that side.
+  auto separates = [&](const Vec3* edges, int ne, const Vec3& centre, const Vec3* others, int no) {
+    for (int e = 0; e < ne; ++e) {
+      const Vec3& p = edges[e];
+      const Vec3 edge = edges[(e + 1) % ne] - p;
+      for (int k = 0; k < no; ++k) {
+        Vec3 n = edge.cross(others[k] - p);
+        const double length2 = n.squaredNorm();
+        if (!(length2 > 0)) continue;
+        const double margin = eps * std::sqrt(length2);
+        const double side = n.dot(centre - p);
+        if (std::abs(side) <= margin) continue;  // the polygon edge-on to it: no side to hold
+        if (side > 0) n = -n;                    // the polygons behind n, the solid to be wholly in front
+        bool apart = true;
+        for (int c = 0; c < cornerCount && apart; ++c) apart = n.dot(corners[c] - p) > margin;
+        for (int j = 0; j < no && apart; ++j) apart = n.dot(others[j] - p) <= margin;
+        if (apart) return true;
+      }
+    }
+    return false;
+  };
+  if (na < 3 || nb < 3 || cornerCount < 1) return false;
+  return separates(a, na, centreOf(a, na), b, nb) || separates(b, nb, centreOf(b, nb), a, na);
+}
+
 bool solidCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
                            const SolidPlanes& solid, const Vec3& centre, double eps) {
   if (fromCount < 1 || toCount < 1 || toCount > SmallPolygon::kCapacity) return false;
