@@ -230,5 +230,16 @@ TEST(SolidOutsideHullOf, OnlyWhereNoSegmentMeetsTheBlock) {
   EXPECT_GT(meeting, 50);  // and the block does stand between many of them
 }
 
+TEST(SegmentEntersSolid, ThroughBesideAndGrazing) {
+  const Box block = box({0.4, 0.4, 0}, {0.6, 0.6, 0.5});
+  EXPECT_TRUE(segmentEntersSolid({0, 0.5, 0.25}, {1, 0.5, 0.25}, block.planes, 1e-9));     // through
+  EXPECT_FALSE(segmentEntersSolid({0, 0.7, 0.25}, {1, 0.7, 0.25}, block.planes, 1e-9));    // beside
+  EXPECT_FALSE(segmentEntersSolid({0, 0.5, 0.25}, {0.3, 0.5, 0.25}, block.planes, 1e-9));  // ends before it
+  // Along the top face: inside by nothing, within any eps of it.
+  EXPECT_FALSE(segmentEntersSolid({0, 0.5, 0.5}, {1, 0.5, 0.5}, block.planes, 1e-9));
+  EXPECT_TRUE(segmentEntersSolid({0, 0.5, 0.5}, {1, 0.5, 0.5}, block.planes, -1e-9));
+  EXPECT_TRUE(segmentEntersSolid({0.5, 0.5, 0.2}, {0.5, 0.5, 0.3}, block.planes, 1e-9));  // wholly inside
+}
+
 }  // namespace
 }  // namespace rt

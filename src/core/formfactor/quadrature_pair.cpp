@@ -8,6 +8,7 @@
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/closed_solids.h"
 #include "core/formfactor/hidden_integral.h"
+#include "core/formfactor/shadow_clipper_detail.h"
 
 namespace rt {
 namespace {
@@ -103,6 +104,8 @@ bool QuadraturePair::judgeBlocks(int i, int j, int row, const ElementPolygon& a,
   const Vec3& otherNormal = scene_.mesh.elements[static_cast<std::size_t>(otherElement)].normal;
   int last = -1;
   BlockVerdict verdict = BlockVerdict::Unknown;
+  const Vec3 sourceCentre = shadow_detail::centreOf(source),
+             receiverCentre = shadow_detail::centreOf(receiver);
   for (int& k : candidates_) {
     const int solid = scene_.solidOf[static_cast<std::size_t>(k)];
     if (solid < 0) continue;
@@ -115,7 +118,9 @@ bool QuadraturePair::judgeBlocks(int i, int j, int row, const ElementPolygon& a,
                                     other.count, other.v[0], otherNormal);
       // No region from either side (the block reaches as high as one of them over the other's plane): one
       // of its faces with both elements in front of it still proves it misses.
-      if (verdict == BlockVerdict::Unknown) {
+      if (verdict == BlockVerdict::Unknown &&
+          !segmentEntersSolid(sourceCentre, receiverCentre, scene_.solids[static_cast<std::size_t>(solid)],
+                              scene_.regionEps)) {
         const SolidShape& shape = scene_.shapes[static_cast<std::size_t>(solid)];
         if (solidMissesEverySegment(source.v.data(), source.count, receiver.v.data(), receiver.count,
                                     scene_.solids[static_cast<std::size_t>(solid)], scene_.regionEps) ||
@@ -166,11 +171,17 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
   // alone, before anything else is prepared.
   if (!candidates_.empty() && !solids.empty()) {
     const double eps = shadowEps(source, receiver);
+    const Vec3 sourceCentre = shadow_detail::centreOf(source),
+               receiverCentre = shadow_detail::centreOf(receiver);
     int last = -1;
     for (int k : candidates_) {
       const int solid = scene_.solidOf[static_cast<std::size_t>(k)];
       if (solid < 0 || solid == last) continue;
       last = solid;
+      // The centres' segment passing clear of the block (not even within eps of it): one segment it does not
+      // cut, so no proof that it cuts them all.
+      if (!segmentEntersSolid(sourceCentre, receiverCentre, solids[static_cast<std::size_t>(solid)], -eps))
+        continue;
       if (solidCutsEverySegment(source.v.data(), source.count, receiver.v.data(), receiver.count,
                                 solids[static_cast<std::size_t>(solid)],
                                 scene_.solidCentres[static_cast<std::size_t>(solid)], eps))

@@ -60,6 +60,10 @@ bool solidCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int 
 bool solidMissesEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
                              const SolidPlanes& solid, double eps);
 
+// Whether the segment pq passes through the closed convex solid's inside by more than `eps` (each face's
+// plane): a pair whose centres' segment does cannot be proven missed, and the proofs are not tried.
+bool segmentEntersSolid(const Vec3& p, const Vec3& q, const SolidPlanes& solid, double eps);
+
 // True when a plane through an edge of one polygon and a corner of the other has both polygons on or behind
 // it and every corner of the solid strictly in front (by more than `eps`): such a plane is a face of the
 // polygons' convex hull, which holds every segment from one to the other, so the solid (the convex hull of

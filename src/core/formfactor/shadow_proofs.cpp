@@ -52,6 +52,25 @@ bool solidMissesEverySegment(const Vec3* from, int fromCount, const Vec3* to, in
   return false;
 }
 
+bool segmentEntersSolid(const Vec3& p, const Vec3& q, const SolidPlanes& solid, double eps) {
+  double t0 = 0, t1 = 1;
+  const Vec3 d = q - p;
+  for (const auto& [n, offset] : solid) {
+    const double start = n.dot(p) - offset + eps, rate = n.dot(d);  // inside where start + rate t < 0
+    if (rate == 0) {
+      if (start >= 0) return false;
+      continue;
+    }
+    const double t = -start / rate;
+    if (rate > 0)
+      t1 = std::min(t1, t);
+    else
+      t0 = std::max(t0, t);
+    if (t0 >= t1) return false;
+  }
+  return true;
+}
+
 bool solidOutsideHullOf(const Vec3* a, int na, const Vec3* b, int nb, const Vec3* corners, int cornerCount,
                         double eps) {
   auto centreOf = [](const Vec3* p, int n) {
