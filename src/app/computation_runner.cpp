@@ -100,6 +100,7 @@ void ComputationRunner::onThreadDone() {
 }
 
 void ComputationRunner::runBlocking(const Job& job) {
+  clearUpperVectorState();  // on the GUI thread, whose libraries may have left it dirty (core/vector_state.h)
   try {
     auto result = std::make_shared<PipelineResult>(job(noProgress()));
     emit finished(std::move(result));

@@ -12,15 +12,22 @@
 using rt::app::ComputationRunner;
 using rt::app::PipelineResult;
 
-TEST(AppVectorState, ComputationsStartWithTheUpperHalvesUnused) {
-  if (rt::upperVectorStateInUse() < 0) GTEST_SKIP() << "this CPU cannot tell whether the state is in use";
+namespace {
+
+void dirtyUpperState() {
 #if defined(__x86_64__) || defined(__i386__)
-  // As the libraries leave the GUI thread (and every thread created from it).
   __asm__ volatile(
       "vpcmpeqd %%xmm7, %%xmm7, %%xmm7\n\t"
       "vinsertf128 $1, %%xmm7, %%ymm7, %%ymm7" ::
           : "xmm7");
 #endif
+}
+
+}  // namespace
+
+TEST(AppVectorState, ComputationsStartWithTheUpperHalvesUnused) {
+  if (rt::upperVectorStateInUse() < 0) GTEST_SKIP() << "this CPU cannot tell whether the state is in use";
+  dirtyUpperState();  // as the libraries leave the GUI thread (and every thread created from it)
   ASSERT_EQ(rt::upperVectorStateInUse(), 1);
   ComputationRunner runner;
   QSignalSpy finished(&runner, &ComputationRunner::finished);
@@ -31,5 +38,14 @@ TEST(AppVectorState, ComputationsStartWithTheUpperHalvesUnused) {
   });
   ASSERT_TRUE(finished.wait(10000));
   EXPECT_EQ(seen.load(), 0);
-  rt::clearUpperVectorState();
+
+  // On the calling thread too (screenshots and tests run the pipeline there).
+  dirtyUpperState();
+  ASSERT_EQ(rt::upperVectorStateInUse(), 1);
+  seen = -2;
+  runner.runBlocking([&](rt::Progress&) {
+    seen = rt::upperVectorStateInUse();
+    return PipelineResult{};
+  });
+  EXPECT_EQ(seen.load(), 0);
 }
