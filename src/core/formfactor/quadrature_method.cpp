@@ -56,7 +56,10 @@ class QuadratureMethod : public FormFactorMethod {
     const ShaftCulling shafts(mesh);
     const QuadratureScene scene(mesh, shafts);
     const double tolerance = std::clamp(options.tolerance, 1e-12, 0.5);
-    tbb::enumerable_thread_specific<QuadraturePair> pairs(std::cref(scene), tolerance);
+    // Looked up once per pair: a native thread-local key, not the default hash table keyed by thread id.
+    tbb::enumerable_thread_specific<QuadraturePair, tbb::cache_aligned_allocator<QuadraturePair>,
+                                    tbb::ets_key_per_instance>
+        pairs(std::cref(scene), tolerance);
     FormFactorMatrix F = computeReciprocalMatrix(
         mesh, options, progress, stats, "form factors (quadrature)", [&](int i, int j) {
           QuadraturePair& pair = pairs.local();
