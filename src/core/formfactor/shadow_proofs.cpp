@@ -88,13 +88,15 @@ bool solidOutsideHullOf(const Vec3* a, int na, const Vec3* b, int nb, const Vec3
         Vec3 n = edge.cross(others[k] - p);
         const double length2 = n.squaredNorm();
         if (!(length2 > 0)) continue;
-        const double margin = eps * std::sqrt(length2);
+        // d > eps |n| as d > 0 and d^2 > eps^2 |n|^2: no square root for the many planes rejected.
+        const double margin2 = eps * eps * length2;
+        auto beyond = [&](double d) { return d > 0 && d * d > margin2; };
         const double side = n.dot(centre - p);
-        if (std::abs(side) <= margin) continue;  // the polygon edge-on to it: no side to hold
-        if (side > 0) n = -n;                    // the polygons behind n, the solid to be wholly in front
+        if (side * side <= margin2) continue;  // the polygon edge-on to it: no side to hold
+        if (side > 0) n = -n;                  // the polygons behind n, the solid to be wholly in front
         bool apart = true;
-        for (int c = 0; c < cornerCount && apart; ++c) apart = n.dot(corners[c] - p) > margin;
-        for (int j = 0; j < no && apart; ++j) apart = n.dot(others[j] - p) <= margin;
+        for (int c = 0; c < cornerCount && apart; ++c) apart = beyond(n.dot(corners[c] - p));
+        for (int j = 0; j < no && apart; ++j) apart = !beyond(n.dot(others[j] - p));
         if (apart) return true;
       }
     }
