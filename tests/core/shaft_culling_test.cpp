@@ -154,5 +154,18 @@ TEST(ShaftCulling, AConvexRoomHasNoOccluder) {
     for (int j = 0; j < static_cast<int>(mesh.size()); j += 5) EXPECT_FALSE(shafts.mayBeOccluded(i, j));
 }
 
+// A patch's outline is its corners, however finely it is meshed: the elements' vertices along its edges are
+// on them only to rounding, and outlines that kept some did not share edges with their neighbours (the
+// Cornell box's tall block at --max-edge 50 was then no closed solid).
+TEST(ShaftCulling, FinelyMeshedPatchesKeepTheirCornersOnly) {
+  for (int subdivide : {1, 3, 7, 10, 24}) {
+    const Mesh mesh = test::meshOf(test::roomWithBlock(), subdivide);
+    const ShaftCulling shafts(mesh);
+    for (std::size_t k = 0; k < shafts.patchCount(); ++k)
+      EXPECT_EQ(shafts.outline(static_cast<int>(k)).size(), 4u)
+          << "patch " << k << ", " << subdivide << " a side";
+  }
+}
+
 }  // namespace
 }  // namespace rt

@@ -44,8 +44,28 @@ std::vector<Vec3> convexOutline(std::vector<Vec3> points, const Vec3& normal) {
     while (h >= lower && cross2(hull[h - 2].first, hull[h - 1].first, flat[k].first) <= 0) --h;
     hull[h++] = flat[k];
   }
+  hull.resize(h - 1);
+  // The elements' vertices along a patch's edge are on it only to rounding: some stick out by 1e-17 and are
+  // corners of the exact hull. Dropped, round the closed outline, where a corner lies between its neighbours
+  // on their line to rounding: an outline that kept some would not share its edges with the next face's (a
+  // block of finely meshed faces was then no closed solid).
+  Eigen::AlignedBox2d extent;
+  for (const auto& [p, index] : flat) extent.extend(p);
+  const double straight = 1e-12 * extent.diagonal().squaredNorm();
+  for (bool dropped = true; dropped && hull.size() > 3;) {
+    dropped = false;
+    for (std::size_t k = 0; k < hull.size() && hull.size() > 3; ++k) {
+      const Eigen::Vector2d &a = hull[(k + hull.size() - 1) % hull.size()].first, &p = hull[k].first,
+                            &b = hull[(k + 1) % hull.size()].first;
+      const double along = (p - a).dot(b - a);
+      if (std::abs(cross2(a, p, b)) <= straight && along > 0 && along < (b - a).squaredNorm()) {
+        hull.erase(hull.begin() + static_cast<std::ptrdiff_t>(k));
+        dropped = true;
+      }
+    }
+  }
   std::vector<Vec3> out;
-  for (std::size_t k = 0; k + 1 < h; ++k) out.push_back(points[static_cast<std::size_t>(hull[k].second)]);
+  for (const auto& [p, index] : hull) out.push_back(points[static_cast<std::size_t>(index)]);
   return out.size() >= 3 ? out : points;
 }
 
