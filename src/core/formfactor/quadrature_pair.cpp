@@ -143,6 +143,12 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
   const Mesh& mesh = scene_.mesh;
   PairResult result;
   PairWork work;
+  if (scene_.enclosed[static_cast<std::size_t>(i)] || scene_.enclosed[static_cast<std::size_t>(j)]) {
+    result.needsVisibility = true;
+    ++counts_.occludedPairs;
+    ++counts_.hiddenPairs;
+    return result;
+  }
   const ElementPolygon a(mesh, i), b(mesh, j);
   const Vec3 &ni = mesh.elements[static_cast<std::size_t>(i)].normal,
              &nj = mesh.elements[static_cast<std::size_t>(j)].normal;

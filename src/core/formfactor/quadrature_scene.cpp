@@ -56,6 +56,7 @@ QuadratureScene::QuadratureScene(const Mesh& mesh_, const ShaftCulling& shafts_)
   for (const SolidShape& shape : shapes) solidCentres.push_back(shape.centre);
 
   elementSolids.resize(mesh.size());
+  enclosed.assign(mesh.size(), 0);
   measures.resize(mesh.size());
   std::vector<std::vector<Vec3>> polygons;
   std::vector<Vec3> normals;
@@ -73,9 +74,12 @@ QuadratureScene::QuadratureScene(const Mesh& mesh_, const ShaftCulling& shafts_)
     if (solids.empty()) continue;
     const double eps = 1e-9 * std::sqrt(mesh.elements[e].area);
     const int own = solidOf[static_cast<std::size_t>(mesh.elements[e].patch)];
-    for (std::size_t s = 0; s < solids.size(); ++s)
-      if (static_cast<int>(s) != own && areaInside(small, solids[s], eps) > 1e-9 * mesh.elements[e].area)
-        elementSolids[e].push_back(static_cast<int>(s));
+    for (std::size_t s = 0; s < solids.size(); ++s) {
+      if (static_cast<int>(s) == own) continue;
+      const double inside = areaInside(small, solids[s], eps);
+      if (inside > 1e-9 * mesh.elements[e].area) elementSolids[e].push_back(static_cast<int>(s));
+      if (inside >= (1 - 1e-9) * mesh.elements[e].area) enclosed[e] = 1;
+    }
     polygons.emplace_back(polygon.v.begin(), polygon.v.begin() + polygon.count);
     normals.push_back(mesh.elements[e].normal);
   }

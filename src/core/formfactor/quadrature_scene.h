@@ -33,6 +33,9 @@ struct QuadratureScene {
   // The solids each element reaches into (a floor element partly under a block): that part sees nothing,
   // and the jump at the block's edge is cut out of the source instead of left to the quadrature.
   std::vector<std::vector<int>> elementSolids;
+  // Per element: wholly inside one of them (a floor element under a block standing on it). It sees nothing
+  // and nothing sees it: every pair it is in is 0 before anything else is looked at.
+  std::vector<char> enclosed;
   // Per element, what the a-priori order needs of it whole (most pairs clip neither element): its bound as
   // a receiver, and (with the bound's centre and radius) its longest edge as a source panel.
   struct Measure {
