@@ -18,12 +18,11 @@ constexpr int kMaxUnoccludedDepth = 6;
 constexpr int kMaxEventCells = 64;  // more, and the adaptive rules cost less than the cells
 constexpr int kHiddenOrder = 2;     // low: the hidden part has kinks and jumps where it is not cut into cells
 
-// The receiver as a panel of its own, where it is one (a whole triangle or quadrilateral), for the far
-// pairs that one point on each side integrates to the tolerance.
-struct FarReceiver {
-  SourcePanel panel;
-  double longest = 0;
-  bool usable = false;
+// One side of a far pair as its one-point rule sees it: the node and weight, and the longest edge.
+struct OnePoint {
+  Vec3 node = Vec3::Zero();
+  double weight = 0, longest = 0;
+  int corners = 0;  // 0: none (not a single triangle or quadrilateral)
 };
 
 // F(dA_x -> receiver) dA_x over a far panel by one point on each side: the kernel cos cos / (pi r^2) at the
@@ -31,31 +30,37 @@ struct FarReceiver {
 // the two elements: the receiver's one-point rule from a fixed x errs by the same M rho^-2 as the source's,
 // with rho from the receiver's own edge. Each side gets half the tolerance; the pair must face itself at
 // both nodes. A fifth of the cost of Lambert's formula, whose four arctangents dominate far pairs.
-bool farFieldPair(const SourcePanel& panel, const FarReceiver& far, const ReceiverBound& bound,
-                  const Vec3& normal, double gap, double edge, double tolerance, double& sum) {
-  if (!far.usable || !(gap > 0)) return false;
-  if (gaussOrderFor(gap, std::max(edge, far.longest), std::min(panel.count, far.panel.count), bound.area,
-                    0.5 * tolerance) != 1)
+bool farFieldPair(const OnePoint& source, const OnePoint& receiver, const ReceiverBound& bound,
+                  const Vec3& normal, double gap, double tolerance, double& sum) {
+  if (receiver.corners == 0 || source.corners == 0 || !(gap > 0)) return false;
+  if (gaussOrderFor(gap, std::max(source.longest, receiver.longest),
+                    std::min(source.corners, receiver.corners), bound.area, 0.5 * tolerance) != 1)
     return false;
-  Vec3 x = Vec3::Zero(), y = Vec3::Zero();
-  double wx = 0, wy = 0;
-  forEachGaussPoint(panel, 1, [&](const Vec3& p, double w) { x = p, wx = w; });
-  forEachGaussPoint(far.panel, 1, [&](const Vec3& p, double w) { y = p, wy = w; });
-  const Vec3 d = y - x;
+  const Vec3 d = receiver.node - source.node;
   const double r2 = d.squaredNorm(), cx = normal.dot(d), cy = -bound.normal.dot(d);
   if (!(cx > 0 && cy > 0)) return false;
-  sum = wx * wy * cx * cy / (std::numbers::pi * r2 * r2);
+  sum = source.weight * receiver.weight * cx * cy / (std::numbers::pi * r2 * r2);
   return true;
 }
 
+OnePoint onePointOf(const SourcePanel& panel) {
+  OnePoint side;
+  forEachGaussPoint(panel, 1, [&](const Vec3& x, double w) { side.node = x, side.weight = w; });
+  side.longest = panel.longestEdge();
+  side.corners = panel.count;
+  return side;
+}
+
 // `gap` and `edge`, where known (>= 0), are panelGap() and the longest edge of the panel.
+// `far`, where given, is the receiver's one-point rule, and `own` the panel's where known (the element
+// whole).
 double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound, const SmallPolygon& receiver,
                            const Vec3& normal, double tolerance, int depth, PairWork& work, double gap = -1,
-                           double edge = -1, const FarReceiver* far = nullptr) {
-  if (far) {
+                           double edge = -1, const OnePoint* far = nullptr, const OnePoint* own = nullptr) {
+  if (far && far->corners > 0) {
     double sum = 0;
-    if (farFieldPair(panel, *far, bound, normal, gap >= 0 ? gap : panelGap(panel, bound),
-                     edge >= 0 ? edge : panel.longestEdge(), tolerance, sum)) {
+    if (farFieldPair(own ? *own : onePointOf(panel), *far, bound, normal,
+                     gap >= 0 ? gap : panelGap(panel, bound), tolerance, sum)) {
       ++work.points;
       return sum;
     }
@@ -197,14 +202,20 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
   const ReceiverBound bound =
       receiverWhole ? scene_.measures[static_cast<std::size_t>(j)].bound : boundOf(receiver, nj);
   const std::vector<int>& reached = scene_.elementSolids[static_cast<std::size_t>(i)];
-  pieces_.assign(1, source);
-  for (int s : reached) {
-    next_.clear();
-    for (const SmallPolygon& piece : pieces_)
-      piecesOutside(piece, solids[static_cast<std::size_t>(s)], 1e-12 * scale, next_);
-    pieces_.swap(next_);
+  if (reached.empty()) {
+    panels_.resize(SmallPolygon::kCapacity);
+    panels_.resize(static_cast<std::size_t>(
+        panelsOf(source.v.data(), source.count, panels_.data(), SmallPolygon::kCapacity)));
+  } else {
+    pieces_.assign(1, source);
+    for (int s : reached) {
+      next_.clear();
+      for (const SmallPolygon& piece : pieces_)
+        piecesOutside(piece, solids[static_cast<std::size_t>(s)], 1e-12 * scale, next_);
+      pieces_.swap(next_);
+    }
+    appendPanels(pieces_, panels_);
   }
-  appendPanels(pieces_, panels_);
   const int panelCount = static_cast<int>(panels_.size());
   bool near = false;
   // The source whole (nothing cut off by the receiver's plane or a block it reaches under) and one panel: its
@@ -263,16 +274,19 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
     }
     ++work.contours;
   } else {
-    FarReceiver far;
-    if (receiverWhole && receiver.count <= 4) {
-      far.panel.count = receiver.count;
-      std::copy(receiver.v.begin(), receiver.v.begin() + receiver.count, far.panel.v.begin());
-      far.longest = scene_.measures[static_cast<std::size_t>(j)].longest;
-      far.usable = true;
-    }
+    // The elements' own one-point rules where they are whole.
+    auto onePointOfElement = [&](int e) {
+      const QuadratureScene::Measure& m = scene_.measures[static_cast<std::size_t>(e)];
+      return m.onePoint ? OnePoint{m.node, m.weight, m.longest,
+                                   mesh.elements[static_cast<std::size_t>(e)].vertices.size() == 3 ? 3 : 4}
+                        : OnePoint{};
+    };
+    const OnePoint far = receiverWhole ? onePointOfElement(j) : OnePoint{};
+    const OnePoint own = topGap >= 0 ? onePointOfElement(i) : OnePoint{};
     for (int p = 0; p < panelCount; ++p)
-      unoccluded += integrateUnoccluded(panels_[static_cast<std::size_t>(p)], bound, receiver, ni,
-                                        unoccludedTolerance, 0, work, topGap, topEdge, &far);
+      unoccluded +=
+          integrateUnoccluded(panels_[static_cast<std::size_t>(p)], bound, receiver, ni, unoccludedTolerance,
+                              0, work, topGap, topEdge, &far, own.corners > 0 ? &own : nullptr);
     unoccluded /= areaI;
   }
   result.value = unoccluded;

@@ -71,6 +71,14 @@ QuadratureScene::QuadratureScene(const Mesh& mesh_, const ShaftCulling& shafts_)
           std::max(measures[e].longest, (polygon.v[static_cast<std::size_t>((k + 1) % polygon.count)] -
                                          polygon.v[static_cast<std::size_t>(k)])
                                             .norm());
+    if (polygon.count <= 4) {
+      SourcePanel panel;
+      panel.count = polygon.count;
+      std::copy(polygon.v.begin(), polygon.v.begin() + polygon.count, panel.v.begin());
+      forEachGaussPoint(panel, 1,
+                        [&](const Vec3& x, double w) { measures[e].node = x, measures[e].weight = w; });
+      measures[e].onePoint = true;
+    }
     if (solids.empty()) continue;
     const double eps = 1e-9 * std::sqrt(mesh.elements[e].area);
     const int own = solidOf[static_cast<std::size_t>(mesh.elements[e].patch)];
