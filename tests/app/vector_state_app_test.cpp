@@ -8,26 +8,15 @@
 
 #include "app/computation_runner.h"
 #include "core/vector_state.h"
+#include "support/dirty_vector_state.h"
 
 using rt::app::ComputationRunner;
 using rt::app::PipelineResult;
 
-namespace {
-
-void dirtyUpperState() {
-#if defined(__x86_64__) || defined(__i386__)
-  __asm__ volatile(
-      "vpcmpeqd %%xmm7, %%xmm7, %%xmm7\n\t"
-      "vinsertf128 $1, %%xmm7, %%ymm7, %%ymm7" ::
-          : "xmm7");
-#endif
-}
-
-}  // namespace
-
 TEST(AppVectorState, ComputationsStartWithTheUpperHalvesUnused) {
   if (rt::upperVectorStateInUse() < 0) GTEST_SKIP() << "this CPU cannot tell whether the state is in use";
-  dirtyUpperState();  // as the libraries leave the GUI thread (and every thread created from it)
+  rt::test::dirtyUpperVectorState();  // as the libraries leave the GUI thread (and every thread created from
+                                      // it)
   ASSERT_EQ(rt::upperVectorStateInUse(), 1);
   ComputationRunner runner;
   QSignalSpy finished(&runner, &ComputationRunner::finished);
@@ -40,7 +29,7 @@ TEST(AppVectorState, ComputationsStartWithTheUpperHalvesUnused) {
   EXPECT_EQ(seen.load(), 0);
 
   // On the calling thread too (screenshots and tests run the pipeline there).
-  dirtyUpperState();
+  rt::test::dirtyUpperVectorState();
   ASSERT_EQ(rt::upperVectorStateInUse(), 1);
   seen = -2;
   runner.runBlocking([&](rt::Progress&) {

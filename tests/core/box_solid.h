@@ -81,4 +81,21 @@ inline bool segmentMeetsBox(const Vec3& p, const Vec3& q, const Vec3& lo, const 
   return true;
 }
 
+// Whether some segment between grids of points (steps x steps each, bilinear over the corners 0..3) on two
+// quadrilaterals meets the box: what a proof that a block misses a pair is checked against.
+inline bool someSegmentMeetsBox(const SmallPolygon& a, const SmallPolygon& b, const Vec3& lo, const Vec3& hi,
+                                int steps) {
+  auto at = [](const SmallPolygon& q, double s, double t) {
+    return Vec3((1 - s) * ((1 - t) * q.v[0] + t * q.v[3]) + s * ((1 - t) * q.v[1] + t * q.v[2]));
+  };
+  for (int s = 0; s <= steps; ++s)
+    for (int t = 0; t <= steps; ++t)
+      for (int u = 0; u <= steps; ++u)
+        for (int v = 0; v <= steps; ++v)
+          if (segmentMeetsBox(at(a, double(s) / steps, double(t) / steps),
+                              at(b, double(u) / steps, double(v) / steps), lo, hi))
+            return true;
+  return false;
+}
+
 }  // namespace rt

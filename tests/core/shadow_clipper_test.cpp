@@ -161,15 +161,7 @@ TEST(SolidMissesEverySegment, OnlyWhereNoSegmentMeetsTheBlock) {
     return polygon({{x, y, z}, {x + size, y, z}, {x + size, y + size, z}, {x, y + size, z}});
   };
   auto meetsAny = [&](const SmallPolygon& a, const SmallPolygon& b) {
-    for (double s = 0; s <= 1; s += 0.2)
-      for (double t = 0; t <= 1; t += 0.2)
-        for (double u = 0; u <= 1; u += 0.2)
-          for (double v = 0; v <= 1; v += 0.2) {
-            const Vec3 p = (1 - s) * ((1 - t) * a.v[0] + t * a.v[3]) + s * ((1 - t) * a.v[1] + t * a.v[2]);
-            const Vec3 q = (1 - u) * ((1 - v) * b.v[0] + v * b.v[3]) + u * ((1 - v) * b.v[1] + v * b.v[2]);
-            if (segmentMeetsBox(p, q, lo, hi)) return true;
-          }
-    return false;
+    return someSegmentMeetsBox(a, b, lo, hi, 5);
   };
   int misses = 0;
   for (double x = 0; x < 1; x += 0.1)
@@ -199,15 +191,7 @@ TEST(SolidOutsideHullOf, OnlyWhereNoSegmentMeetsTheBlock) {
     return polygon({{0, y, z}, {0, y + 0.1, z}, {0, y + 0.1, z + 0.1}, {0, y, z + 0.1}});
   };
   auto meetsAny = [&](const SmallPolygon& a, const SmallPolygon& b) {
-    for (double s = 0; s <= 1; s += 0.125)
-      for (double t = 0; t <= 1; t += 0.125)
-        for (double u = 0; u <= 1; u += 0.125)
-          for (double v = 0; v <= 1; v += 0.125) {
-            const Vec3 p = (1 - s) * ((1 - t) * a.v[0] + t * a.v[3]) + s * ((1 - t) * a.v[1] + t * a.v[2]);
-            const Vec3 q = (1 - u) * ((1 - v) * b.v[0] + v * b.v[3]) + u * ((1 - v) * b.v[1] + v * b.v[2]);
-            if (segmentMeetsBox(p, q, lo, hi)) return true;
-          }
-    return false;
+    return someSegmentMeetsBox(a, b, lo, hi, 8);
   };
   int proven = 0, onlyByTheHull = 0, meeting = 0;
   for (double x = 0.05; x < 1; x += 0.1)

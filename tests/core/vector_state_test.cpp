@@ -7,24 +7,11 @@
 #include "core/formfactor/pair_matrix.h"
 #include "core/progress.h"
 #include "core/vector_state.h"
-
-namespace {
-
-// Puts something in the upper halves of the YMM registers, as a library returning without `vzeroupper` does.
-void dirtyUpperState() {
-#if defined(__x86_64__) || defined(__i386__)
-  __asm__ volatile(
-      "vpcmpeqd %%xmm7, %%xmm7, %%xmm7\n\t"
-      "vinsertf128 $1, %%xmm7, %%ymm7, %%ymm7" ::
-          : "xmm7");
-#endif
-}
-
-}  // namespace
+#include "support/dirty_vector_state.h"
 
 TEST(VectorState, ClearingLeavesTheUpperHalvesUnused) {
   if (rt::upperVectorStateInUse() < 0) GTEST_SKIP() << "this CPU cannot tell whether the state is in use";
-  dirtyUpperState();
+  rt::test::dirtyUpperVectorState();
   EXPECT_EQ(rt::upperVectorStateInUse(), 1);
   rt::clearUpperVectorState();
   EXPECT_EQ(rt::upperVectorStateInUse(), 0);
@@ -35,11 +22,11 @@ TEST(VectorState, EveryRowOfAPairMatrixStartsClean) {
   std::atomic<int> rows{0}, dirty{0};
   rt::Progress progress;
   rt::FormFactorStats stats;
-  dirtyUpperState();  // the calling thread, as a program's libraries leave it
+  rt::test::dirtyUpperVectorState();  // the calling thread, as a program's libraries leave it
   rt::forEachRow(200, {}, progress, "test", stats, [&](int, rt::RowCounters&) {
     ++rows;
     if (rt::upperVectorStateInUse() != 0) ++dirty;
-    dirtyUpperState();  // and the next row on this thread must start clean again
+    rt::test::dirtyUpperVectorState();  // and the next row on this thread must start clean again
   });
   rt::clearUpperVectorState();
   EXPECT_EQ(rows.load(), 200);

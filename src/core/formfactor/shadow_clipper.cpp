@@ -142,41 +142,28 @@ void ShadowClipper::prepare(const SmallPolygon& source, const Vec3& sourceNormal
 
 void ShadowClipper::hullPlanes(const Vec3* a, int na, const Vec3* b, int nb) const {
   planes_.clear();
-  // Faces of the hull of two convex polygons other than their own planes hold an edge of one and a vertex
-  // of the other. A plane through an edge of a convex polygon has all of that polygon on one side, the side
-  // of its centre, so only the other polygon's corners are tested one by one. The sides are decided on the
-  // unnormalised normal (scaling eps by its length) and only a face kept is normalised: most candidates have
+  // Planes through an edge of one polygon and a corner of the other (forEachEdgeCornerPlane): a face of the
+  // hull when no corner of the other polygon lies strictly on the far side from the edge's own polygon. The
+  // sides are decided on the unnormalised normal and only a face kept is normalised: most candidates have
   // corners on both sides, found within two or three.
-  auto centre = [](const Vec3* p, int n) {
-    Vec3 c = Vec3::Zero();
-    for (int k = 0; k < n; ++k) c += p[k];
-    return Vec3(c / n);
-  };
   auto tryEdges = [&](const Vec3* edges, int ne, const Vec3& edgesCentre, const Vec3* others, int no) {
-    for (int e = 0; e < ne; ++e) {
-      const Vec3& p = edges[e];
-      const Vec3 edge = edges[(e + 1) % ne] - p;
-      for (int k = 0; k < no; ++k) {
-        const Vec3 n = edge.cross(others[k] - p);
-        const double length2 = n.squaredNorm();
-        if (!(length2 > 0)) continue;
-        // |d| > eps |n|, squared: no square root for the many candidates rejected.
-        const double margin2 = eps_ * eps_ * length2;
-        const double c = n.dot(edgesCentre - p);
-        bool above = c > 0 && c * c > margin2, below = c < 0 && c * c > margin2;
-        for (int j = 0; j < no && !(above && below); ++j) {
-          const double d = n.dot(others[j] - p);
-          above |= d > 0 && d * d > margin2;
-          below |= d < 0 && d * d > margin2;
-        }
-        if (above && below) continue;
-        const Vec3 unit = (above ? -n : n) / std::sqrt(length2);  // outward: every hull point on or below
-        planes_.push_back({unit, unit.dot(p)});
-      }
-    }
+    shadow_detail::forEachEdgeCornerPlane(
+        edges, ne, others, no, eps_, [&](const Vec3& p, const Vec3& n, double margin2) {
+          const double c = n.dot(edgesCentre - p);
+          bool above = c > 0 && c * c > margin2, below = c < 0 && c * c > margin2;
+          for (int j = 0; j < no && !(above && below); ++j) {
+            const double d = n.dot(others[j] - p);
+            above |= d > 0 && d * d > margin2;
+            below |= d < 0 && d * d > margin2;
+          }
+          if (above && below) return false;
+          const Vec3 unit = (above ? -n : n) / n.norm();  // outward: every hull point on or below
+          planes_.push_back({unit, unit.dot(p)});
+          return false;
+        });
   };
-  tryEdges(a, na, centre(a, na), b, nb);
-  tryEdges(b, nb, centre(b, nb), a, na);
+  tryEdges(a, na, shadow_detail::centreOf(a, na), b, nb);
+  tryEdges(b, nb, shadow_detail::centreOf(b, nb), a, na);
 }
 
 bool ShadowClipper::outsideHull(const Occluder& o) const {

@@ -73,37 +73,24 @@ bool segmentEntersSolid(const Vec3& p, const Vec3& q, const SolidPlanes& solid, 
 
 bool solidOutsideHullOf(const Vec3* a, int na, const Vec3* b, int nb, const Vec3* corners, int cornerCount,
                         double eps) {
-  auto centreOf = [](const Vec3* p, int n) {
-    Vec3 c = Vec3::Zero();
-    for (int k = 0; k < n; ++k) c += p[k];
-    return Vec3(c / n);
-  };
-  // Planes through an edge of one polygon and a corner of the other: all of the edge's polygon lies on its
-  // centre's side. The solid's corners are tested first, as most planes have some on that side.
-  auto separates = [&](const Vec3* edges, int ne, const Vec3& centre, const Vec3* others, int no) {
-    for (int e = 0; e < ne; ++e) {
-      const Vec3& p = edges[e];
-      const Vec3 edge = edges[(e + 1) % ne] - p;
-      for (int k = 0; k < no; ++k) {
-        Vec3 n = edge.cross(others[k] - p);
-        const double length2 = n.squaredNorm();
-        if (!(length2 > 0)) continue;
-        // d > eps |n| as d > 0 and d^2 > eps^2 |n|^2: no square root for the many planes rejected.
-        const double margin2 = eps * eps * length2;
-        auto beyond = [&](double d) { return d > 0 && d * d > margin2; };
-        const double side = n.dot(centre - p);
-        if (side * side <= margin2) continue;  // the polygon edge-on to it: no side to hold
-        if (side > 0) n = -n;                  // the polygons behind n, the solid to be wholly in front
-        bool apart = true;
-        for (int c = 0; c < cornerCount && apart; ++c) apart = beyond(n.dot(corners[c] - p));
-        for (int j = 0; j < no && apart; ++j) apart = !beyond(n.dot(others[j] - p));
-        if (apart) return true;
-      }
-    }
-    return false;
-  };
   if (na < 3 || nb < 3 || cornerCount < 1) return false;
-  return separates(a, na, centreOf(a, na), b, nb) || separates(b, nb, centreOf(b, nb), a, na);
+  // All of the edge's polygon lies on its centre's side of each plane; the solid's corners are tested first,
+  // as most planes have some on that side.
+  auto separates = [&](const Vec3* edges, int ne, const Vec3* others, int no) {
+    const Vec3 centre = centreOf(edges, ne);
+    return shadow_detail::forEachEdgeCornerPlane(
+        edges, ne, others, no, eps, [&](const Vec3& p, Vec3 n, double margin2) {
+          auto beyond = [&](double d) { return d > 0 && d * d > margin2; };
+          const double side = n.dot(centre - p);
+          if (side * side <= margin2) return false;  // the polygon edge-on to it: no side to hold
+          if (side > 0) n = -n;                      // the polygons behind n, the solid to be wholly in front
+          bool apart = true;
+          for (int c = 0; c < cornerCount && apart; ++c) apart = beyond(n.dot(corners[c] - p));
+          for (int j = 0; j < no && apart; ++j) apart = !beyond(n.dot(others[j] - p));
+          return apart;
+        });
+  };
+  return separates(a, na, b, nb) || separates(b, nb, a, na);
 }
 
 bool solidCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
