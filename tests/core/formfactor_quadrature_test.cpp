@@ -97,6 +97,7 @@ TEST(QuadratureMethod, FarPairsOnOnePointEachSideMeetTheTolerance) {
             const Vec3 n = newellNormal(p.vertices);
             p.normal = n.normalized();
             p.area = 0.5 * n.norm();
+            p.surface = 0;
             s.patches.push_back(p);
           } else {
             test::addQuad(s, a, b, c, d);
