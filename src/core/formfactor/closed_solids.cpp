@@ -83,10 +83,12 @@ std::vector<int> closedConvexSolids(const std::vector<const std::vector<Vec3>*>&
     // lying on one plane, a patch and the face closing it, would pass the first test). Each test stops at
     // its first failure: a closed room of 9,600 inward-facing quads fails at once, where testing every
     // corner against every face took a second.
+    const std::vector<int>& group =
+        members;  // a structured binding cannot be captured before C++20's clang 16
     auto convex = [&]() {
       for (const auto& [n, offset] : faces) {
         bool behind = false;
-        for (int k : members)
+        for (int k : group)
           for (const Vec3& v : *outlines[static_cast<std::size_t>(k)]) {
             const double height = n.dot(v) - offset;
             if (height > 1e-9 * size) return false;
