@@ -83,8 +83,8 @@ std::vector<int> closedConvexSolids(const std::vector<const std::vector<Vec3>*>&
     // lying on one plane, a patch and the face closing it, would pass the first test). Each test stops at
     // its first failure: a closed room of 9,600 inward-facing quads fails at once, where testing every
     // corner against every face took a second.
-    const std::vector<int>& group =
-        members;  // a structured binding cannot be captured before C++20's clang 16
+    // The group by a plain reference: clang 14, the fuzzers' compiler, cannot capture a structured binding.
+    const std::vector<int>& group = members;
     auto convex = [&]() {
       for (const auto& [n, offset] : faces) {
         bool behind = false;
