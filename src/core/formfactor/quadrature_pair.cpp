@@ -101,7 +101,8 @@ QuadraturePair::QuadraturePair(const QuadratureScene& scene, double tolerance)
       rowRegions_(scene.shapes, scene.regionEps) {}
 
 bool QuadraturePair::judgeBlocks(int i, int j, int row, const ElementPolygon& a, const ElementPolygon& b,
-                                 const SmallPolygon& source, const SmallPolygon& receiver) {
+                                 const SmallPolygon& source, const SmallPolygon& receiver,
+                                 const Vec3& sourceCentre, const Vec3& receiverCentre) {
   const bool rowIsSource = row == i;
   const ElementPolygon &rowPolygon = rowIsSource ? a : b, &otherFull = rowIsSource ? b : a;
   const SmallPolygon& other = rowIsSource ? receiver : source;
@@ -109,8 +110,6 @@ bool QuadraturePair::judgeBlocks(int i, int j, int row, const ElementPolygon& a,
   const Vec3& otherNormal = scene_.mesh.elements[static_cast<std::size_t>(otherElement)].normal;
   int last = -1;
   BlockVerdict verdict = BlockVerdict::Unknown;
-  const Vec3 sourceCentre = shadow_detail::centreOf(source),
-             receiverCentre = shadow_detail::centreOf(receiver);
   for (int& k : candidates_) {
     const int solid = scene_.solidOf[static_cast<std::size_t>(k)];
     if (solid < 0) continue;
@@ -168,6 +167,13 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
   candidates_.clear();
   shading_.clear();
   scene_.shafts.candidates(i, j, candidates_);
+  // The centres' segment rules the blocks' proofs in or out (judgeBlocks and the cross-sections below); only
+  // pairs with candidates need it.
+  Vec3 sourceCentre = Vec3::Zero(), receiverCentre = Vec3::Zero();
+  if (!candidates_.empty()) {
+    sourceCentre = shadow_detail::centreOf(source);
+    receiverCentre = shadow_detail::centreOf(receiver);
+  }
   const std::vector<SolidPlanes>& solids = scene_.solids;
   auto whollyHidden = [&]() {
     result.needsVisibility = true;
@@ -176,14 +182,12 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
     return result;
   };
   if (!candidates_.empty() && !solids.empty() && (row == i || row == j) &&
-      judgeBlocks(i, j, row, a, b, source, receiver))
+      judgeBlocks(i, j, row, a, b, source, receiver, sourceCentre, receiverCentre))
     return whollyHidden();
   // A block between them that cuts every segment from one to the other, proven from its cross-sections
   // alone, before anything else is prepared.
   if (!candidates_.empty() && !solids.empty()) {
     const double eps = shadowEps(source, receiver);
-    const Vec3 sourceCentre = shadow_detail::centreOf(source),
-               receiverCentre = shadow_detail::centreOf(receiver);
     int last = -1;
     for (int k : candidates_) {
       const int solid = scene_.solidOf[static_cast<std::size_t>(k)];
@@ -277,9 +281,7 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
     // The elements' own one-point rules where they are whole.
     auto onePointOfElement = [&](int e) {
       const QuadratureScene::Measure& m = scene_.measures[static_cast<std::size_t>(e)];
-      return m.onePoint ? OnePoint{m.node, m.weight, m.longest,
-                                   mesh.elements[static_cast<std::size_t>(e)].vertices.size() == 3 ? 3 : 4}
-                        : OnePoint{};
+      return OnePoint{m.node, m.weight, m.longest, m.corners};
     };
     const OnePoint far = receiverWhole ? onePointOfElement(j) : OnePoint{};
     const OnePoint own = topGap >= 0 ? onePointOfElement(i) : OnePoint{};

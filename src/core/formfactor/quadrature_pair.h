@@ -52,9 +52,11 @@ class QuadraturePair {
   const Counts& counts() const { return counts_; }
 
  private:
-  // Drops the blocks that miss the pair from candidates_; true when one hides all of it.
+  // Drops the blocks that miss the pair from candidates_; true when one hides all of it. `sourceCentre` and
+  // `receiverCentre` are the clipped polygons' centres.
   bool judgeBlocks(int i, int j, int row, const ElementPolygon& a, const ElementPolygon& b,
-                   const SmallPolygon& source, const SmallPolygon& receiver);
+                   const SmallPolygon& source, const SmallPolygon& receiver, const Vec3& sourceCentre,
+                   const Vec3& receiverCentre);
 
   const QuadratureScene& scene_;
   double tolerance_;

@@ -77,7 +77,7 @@ QuadratureScene::QuadratureScene(const Mesh& mesh_, const ShaftCulling& shafts_)
       std::copy(polygon.v.begin(), polygon.v.begin() + polygon.count, panel.v.begin());
       forEachGaussPoint(panel, 1,
                         [&](const Vec3& x, double w) { measures[e].node = x, measures[e].weight = w; });
-      measures[e].onePoint = true;
+      measures[e].corners = polygon.count;
     }
     if (solids.empty()) continue;
     const double eps = 1e-9 * std::sqrt(mesh.elements[e].area);

@@ -41,11 +41,11 @@ struct QuadratureScene {
   struct Measure {
     ReceiverBound bound;
     double longest = 0;
-    // Its one-point Gauss rule (node and weight), for far pairs taken at one point on each side; none for
-    // elements of more than four corners.
+    // Its one-point Gauss rule (node and weight), for far pairs taken at one point on each side, and its
+    // corner count (3 or 4; 0, and no rule, for elements of more corners).
     Vec3 node = Vec3::Zero();
     double weight = 0;
-    bool onePoint = false;
+    int corners = 0;
   };
   std::vector<Measure> measures;
   double regionEps = 0;  // a length: 1e-10 of the scene's size
