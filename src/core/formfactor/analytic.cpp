@@ -210,7 +210,7 @@ double contourArea(const Vec3* from, int m, const Vec3* to, int n) {
 double lambertSum(const Vec3& point, const Vec3& normal, const Vec3* v, int n) {
   double sum = 0;
   for (int k = 0; k < n; ++k) {
-    const Vec3 a = v[k] - point, b = v[(k + 1) % n] - point;
+    const Vec3 a = v[k] - point, b = v[k + 1 == n ? 0 : k + 1] - point;  // (no modulo: a division each)
     const Vec3 c = a.cross(b);
     const double sine = c.norm();  // |a||b| sin(theta)
     if (sine == 0) continue;       // edge seen edge-on (or through the point): no solid angle

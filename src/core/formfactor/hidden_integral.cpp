@@ -86,11 +86,25 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
   tolerance_ = tolerance;
   std::vector<Smooth> heap;
   double done = 0;
+  std::size_t formCount = 0;
   for (int c = 0; c < count; ++c) {
     // Not culled: the centre tells as well whether anything is hidden there, for about the cost of the test.
+    // Its form, where there is one, tells it without Lambert's sum, and places the cell's other points.
     Smooth cell{cells[c], 0, 0, 0};
     bool wholly = false;
-    const double centre = clipper_.hidden(cells[c].centre(), clipper_.occluders(), &wholly);
+    double centre = 0;
+    const Vec3 x = cells[c].centre();
+    if (forms_.size() <= formCount) forms_.resize(formCount + 1);
+    ShadowClipper::HiddenForm& form = forms_[formCount];
+    if (clipper_.formOf(x, clipper_.occluders(), form)) {
+      wholly = form.wholly;
+      if (!wholly && form.count >= 3) {
+        cell.form = static_cast<int>(formCount++);
+        centre = hiddenIn(x, cell.form);
+      }
+    } else {
+      centre = clipper_.hidden(x, clipper_.occluders(), &wholly);
+    }
     ++work_.points;
     ++work_.clipped;
     if (wholly) {
@@ -111,8 +125,8 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
            double sum = 0, own = 0;
            for (std::size_t c = 0; c < 4; ++c) {
              Smooth& child = children[c];
-             child = {parts[c], 0, 0, worst.depth + 1};
-             child.value = clipper_.hidden(parts[c].centre(), clipper_.occluders()) * parts[c].area();
+             child = {parts[c], 0, 0, worst.depth + 1, worst.form};
+             child.value = hiddenIn(parts[c].centre(), child.form) * parts[c].area();
              ++work_.points;
              ++work_.clipped;
              rate(child);
@@ -131,12 +145,33 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
 
 void HiddenIntegral::rate(Smooth& cell) {
   double fine = 0;
-  forEachGaussPoint(cell.panel, 2,
-                    [&](const Vec3& x, double w) { fine += w * clipper_.hidden(x, clipper_.occluders()); });
+  std::array<Vec3, 4> x;
+  std::array<double, 4> weight, value;
+  int n = 0;
+  forEachGaussPoint(cell.panel, 2, [&](const Vec3& point, double w) {
+    x[static_cast<std::size_t>(n)] = point;
+    weight[static_cast<std::size_t>(n++)] = w;
+  });
+  if (cell.form >= 0 &&
+      clipper_.hidden4(x.data(), forms_[static_cast<std::size_t>(cell.form)], value.data())) {
+    work_.placed += 4;
+  } else {
+    for (std::size_t p = 0; p < 4; ++p) value[p] = hiddenIn(x[p], cell.form);
+  }
+  for (std::size_t p = 0; p < 4; ++p) fine += weight[p] * value[p];
   work_.points += 4;
   work_.clipped += 4;
   cell.error = std::abs(fine - cell.value);
   cell.value = fine;
+}
+
+double HiddenIntegral::hiddenIn(const Vec3& x, int form) {
+  double value = 0;
+  if (form >= 0 && clipper_.hidden(x, forms_[static_cast<std::size_t>(form)], value)) {
+    ++work_.placed;
+    return value;
+  }
+  return clipper_.hidden(x, clipper_.occluders());
 }
 
 double HiddenIntegral::evaluate(const SourcePanel& panel, const std::vector<int>& occluders,

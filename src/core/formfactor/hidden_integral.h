@@ -16,6 +16,7 @@ namespace rt {
 struct PairWork {
   long points = 0;    // Lambert evaluations
   long clipped = 0;   // of them, at points where the receiver was clipped by occluders
+  long placed = 0;    // of those, placed from their cell's hidden form without clipping
   long contours = 0;  // exact contour integrals
   bool budgetReached = false;
 };
@@ -32,13 +33,15 @@ class HiddenIntegral {
   // whole receiver is hidden (there the hidden part is all of it).
   using Unoccluded = std::function<double(const SourcePanel&, double)>;
   // `sourceArea` turns the tolerance of the integral into one of F(dA -> receiver) at each point.
+  // `forms`: scratch for overCells(), kept by the caller from pair to pair.
   HiddenIntegral(const ShadowClipper& clipper, int order, Unoccluded unoccluded, double sourceArea,
-                 PairWork& work)
+                 PairWork& work, std::vector<ShadowClipper::HiddenForm>& forms)
       : clipper_(clipper),
         order_(order),
         unoccluded_(std::move(unoccluded)),
         sourceArea_(sourceArea),
-        work_(work) {}
+        work_(work),
+        forms_(forms) {}
 
   // Work bounds per pair: panel depth and points.
   static constexpr int kMaxDepth = 10;
@@ -52,7 +55,8 @@ class HiddenIntegral {
   // tells which. Only cells hiding part of it are integrated: the 2 x 2 rule, its difference from the
   // centre's one-point rule as the error estimate (which for an analytic integrand overstates the 2 x 2
   // rule's error by far), split where the estimates add up to more than the tolerance. None of the guards
-  // against shadows the points miss is needed.
+  // against shadows the points miss is needed. Where the occluder is one convex solid, the hidden part's
+  // form is found at each cell's centre and its other points are placed from it (ShadowClipper::formOf).
   double overCells(const SourcePanel* cells, int count, double tolerance);
 
  private:
@@ -77,6 +81,7 @@ class HiddenIntegral {
     SourcePanel panel;
     double value = 0, error = 0;
     int depth = 0;
+    int form = -1;  // the cell's hidden form in forms_, or -1 (clipped at every point)
   };
   // The global refinement both integrals share: the item with the largest error estimate is split
   // (`split(worst, heap)` appends its parts and returns the value of those finished outright) until the
@@ -86,6 +91,8 @@ class HiddenIntegral {
 
   // From `value` holding the one-point rule: the 2 x 2 rule's value and the difference as its error.
   void rate(Smooth& cell);
+  // F(dA_x -> hidden part) at a point of a cell: from the cell's form where it has one that fits x.
+  double hiddenIn(const Vec3& x, int form);
 
   // Clears `allHidden` when some point of the rule sees part of the receiver.
   double evaluate(const SourcePanel& panel, const std::vector<int>& occluders, bool& allHidden);
@@ -103,6 +110,7 @@ class HiddenIntegral {
   Unoccluded unoccluded_;
   double sourceArea_;
   PairWork& work_;
+  std::vector<ShadowClipper::HiddenForm>& forms_;
   double tolerance_ = 0;
 };
 

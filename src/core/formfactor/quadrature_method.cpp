@@ -68,11 +68,13 @@ class QuadratureMethod : public FormFactorMethod {
     QuadraturePair::Counts total;
     for (const QuadraturePair& pair : pairs) total += pair.counts();
     char line[256];
-    std::snprintf(line, sizeof line,
-                  "absolute tolerance %.3g: %ld point evaluations (%ld with the receiver clipped), %ld exact "
-                  "contour integrals, %ld pairs with occluders clipped per point (%ld of them wholly hidden)",
-                  tolerance, total.points, total.clipped, total.contours, total.occludedPairs,
-                  total.hiddenPairs);
+    std::snprintf(
+        line, sizeof line,
+        "absolute tolerance %.3g: %ld point evaluations (%ld with the receiver clipped, %ld of them "
+        "placed from their cell's hidden form), %ld exact "
+        "contour integrals, %ld pairs with occluders clipped per point (%ld of them wholly hidden)",
+        tolerance, total.points, total.clipped, total.placed, total.contours, total.occludedPairs,
+        total.hiddenPairs);
     stats.notes = line;
     stats.notes += ", " + std::to_string(scene.solids.size()) + " closed convex solids, " +
                    std::to_string(total.eventPairs) +

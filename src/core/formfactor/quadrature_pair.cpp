@@ -8,6 +8,7 @@
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/closed_solids.h"
 #include "core/formfactor/hidden_integral.h"
+#include "core/formfactor/lambert_four.h"
 #include "core/formfactor/shadow_clipper_detail.h"
 
 namespace rt {
@@ -74,10 +75,22 @@ double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound,
     return sum;
   }
   if (n == 0) n = kMaxOrder;
+  // Four points at a time (lambert_four.h), all over the one receiver.
+  PanelPoints points;
+  gaussPoints(panel, n, points);
   double sum = 0;
-  forEachGaussPoint(panel, n, [&](const Vec3& x, double w) {
-    sum += w * std::max(0.0, lambertContourSum(x, normal, receiver.v.data(), receiver.count));
-  });
+  int p = 0;
+  for (; p + 4 <= points.count; p += 4) {
+    std::array<double, 4> value;
+    lambertContourSum4(&points.x[static_cast<std::size_t>(p)], normal, receiver.v.data(), 0, receiver.count,
+                       value.data());
+    for (std::size_t k = 0; k < 4; ++k)
+      sum += points.weight[static_cast<std::size_t>(p) + k] * std::max(0.0, value[k]);
+  }
+  for (; p < points.count; ++p)
+    sum += points.weight[static_cast<std::size_t>(p)] *
+           std::max(0.0, lambertContourSum(points.x[static_cast<std::size_t>(p)], normal, receiver.v.data(),
+                                           receiver.count));
   work.points += n * n;
   return sum;
 }
@@ -296,7 +309,7 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
     auto unoccludedOn = [&](const SourcePanel& panel, double pointTolerance) {
       return integrateUnoccluded(panel, bound, receiver, ni, pointTolerance, 0, work);
     };
-    HiddenIntegral hidden(clipper_, kHiddenOrder, unoccludedOn, areaI, work);
+    HiddenIntegral hidden(clipper_, kHiddenOrder, unoccludedOn, areaI, work, forms_);
     // One occluder: the source cut into cells along its visibility events, where the hidden part is
     // analytic. Otherwise (or where the cells would be too many) the adaptive rules with their guards.
     bool byCells = clipper_.eventPlanes(source, clipper_.occluders(), events_);
@@ -318,6 +331,7 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
   }
   counts_.points += work.points;
   counts_.clipped += work.clipped;
+  counts_.placed += work.placed;
   counts_.contours += work.contours;
   if (work.budgetReached) ++counts_.budgetPairs;
   result.kernelEvaluations = static_cast<std::size_t>(work.points);

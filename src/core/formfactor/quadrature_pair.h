@@ -29,11 +29,12 @@ class QuadraturePair {
  public:
   // What the notes report, summed over threads at the end.
   struct Counts {
-    long points = 0, clipped = 0, contours = 0, budgetPairs = 0, occludedPairs = 0, hiddenPairs = 0,
-         eventPairs = 0;
+    long points = 0, clipped = 0, placed = 0, contours = 0, budgetPairs = 0, occludedPairs = 0,
+         hiddenPairs = 0, eventPairs = 0;
     Counts& operator+=(const Counts& o) {
       points += o.points;
       clipped += o.clipped;
+      placed += o.placed;
       contours += o.contours;
       budgetPairs += o.budgetPairs;
       occludedPairs += o.occludedPairs;
@@ -71,6 +72,7 @@ class QuadraturePair {
   std::vector<EventPlane> events_;
   std::vector<SmallPolygon> cells_;
   std::vector<SourcePanel> cellPanels_;
+  std::vector<ShadowClipper::HiddenForm> forms_;
 };
 
 }  // namespace rt

@@ -132,6 +132,33 @@ class ShadowClipper {
   double probeShadow(const SourcePanel& panel, const std::vector<int>& occluders, long& points) const;
   // F(dA_x -> the whole receiver).
   double unoccluded(const Vec3& x) const;
+
+  // The form of the part of the receiver one convex solid hides from x: its outline's corners, each a corner
+  // of the receiver, a corner of the solid's silhouette (the hidden part's corner lies behind it from x), or
+  // where the plane through x and a silhouette edge cuts an edge of the receiver. Over a cell of the source
+  // cut along the visibility events (visibility_events.h) the form stays the same and only the corners move,
+  // so hidden(x, form) places them without clipping: a fifth of the cost of a point (docs/formfactors.md).
+  struct HiddenForm {
+    enum Kind : signed char { ReceiverCorner, SolidCorner, EdgeCut };
+    struct Corner {
+      Kind kind = ReceiverCorner;
+      int a = 0;         // the receiver's or the solid's corner; for EdgeCut, the receiver edge from corner a
+      int b = 0, c = 0;  // EdgeCut: the silhouette edge's corners
+    };
+    std::array<Corner, SmallPolygon::kCapacity> corners;
+    int count = 0;        // 0: nothing hidden
+    bool wholly = false;  // the whole receiver hidden
+    int solid = -1;
+  };
+  // The form at x, for `occluders` that are faces of one solid wholly in front of both planes. False where
+  // there is none to tell: other occluders, or x within eps of an event (a corner on a side plane).
+  bool formOf(const Vec3& x, const std::vector<int>& occluders, HiddenForm& form) const;
+  // F(dA_x -> hidden part) from a form found at another point of the same cell. False (`value` unset) where
+  // the form does not fit x: a cut outside its receiver edge, or an outline that no longer turns one way.
+  bool hidden(const Vec3& x, const HiddenForm& form, double& value) const;
+  // The same at four points at once (a 2 x 2 rule, lambert_four.h); false where the form fits none or only
+  // some of them.
+  bool hidden4(const Vec3* x, const HiddenForm& form, double* values) const;
   // The planes along which the hidden part's form changes over the source (visibility_events.h), into
   // `out`. False when `occluders` are not one solid or one polygon: then the events are not all planes.
   bool eventPlanes(const SmallPolygon& source, const std::vector<int>& occluders,
@@ -151,6 +178,8 @@ class ShadowClipper {
   // cut parts to `sum`, and keeps the parts left for the next cone unless this one is the `last`. Returns
   // whether any part is left.
   bool cutCone(const Vec3& x, const Vec3* cone, int m, bool last, double& sum) const;
+  // The corners of a hidden form's outline from x, into `v`; false where the form does not fit x.
+  bool place(const Vec3& x, const HiddenForm& form, Vec3* v) const;
 
   // The region of the source's plane a whole solid can shade (null when unbounded or not a whole solid).
   const PenumbraRegion* penumbra(int solid) const;

@@ -54,7 +54,12 @@ std::vector<SolidShape> solidShapes(const std::vector<const std::vector<Vec3>*>&
   return shapes;
 }
 
-int silhouetteCone(const SolidShape& solid, const Vec3& x, double eps, Vec3* cone, int capacity) {
+namespace {
+
+// visit(a, b, n) for each silhouette edge from x (corners a, b; n the inward side plane). Returns false when
+// x is not outside the solid or the solid has too many faces.
+template <class Visit>
+int forEachSilhouetteEdge(const SolidShape& solid, const Vec3& x, double eps, Visit&& visit) {
   constexpr int kMaxFaces = 64;
   const int faceCount = static_cast<int>(solid.planes.size());
   if (faceCount > kMaxFaces) return -1;
@@ -76,10 +81,30 @@ int silhouetteCone(const SolidShape& solid, const Vec3& x, double eps, Vec3* con
     // End-on (x in line with the edge, to rounding): no plane of its own.
     if (!(n.squaredNorm() > 1e-24 * a.squaredNorm() * b.squaredNorm())) continue;
     if (n.dot(inside) < 0) n = -n;
-    if (count == capacity) return -1;
-    cone[count++] = n;
+    if (!visit(edge.a, edge.b, n)) return -1;
+    ++count;
   }
   return count;
+}
+
+}  // namespace
+
+int silhouetteEdges(const SolidShape& solid, const Vec3& x, double eps, SilhouetteEdge* out, int capacity) {
+  int count = 0;
+  return forEachSilhouetteEdge(solid, x, eps, [&](int a, int b, const Vec3& n) {
+    if (count == capacity) return false;
+    out[count++] = {n, a, b};
+    return true;
+  });
+}
+
+int silhouetteCone(const SolidShape& solid, const Vec3& x, double eps, Vec3* cone, int capacity) {
+  int count = 0;
+  return forEachSilhouetteEdge(solid, x, eps, [&](int, int, const Vec3& n) {
+    if (count == capacity) return false;
+    cone[count++] = n;
+    return true;
+  });
 }
 
 }  // namespace rt

@@ -32,6 +32,16 @@ struct SolidShape {
 std::vector<SolidShape> solidShapes(const std::vector<const std::vector<Vec3>*>& outlines,
                                     const std::vector<int>& solidOf, int solidCount);
 
+// A silhouette edge seen from x: its corners (indices into SolidShape::corners) and the inward side plane of
+// the cone through x and it (not normalised; the solid in front of it).
+struct SilhouetteEdge {
+  Vec3 normal;
+  int a = 0, b = 0;
+};
+
+// The edges of the silhouette from x, into `out`, as silhouetteCone() below counts them.
+int silhouetteEdges(const SolidShape& solid, const Vec3& x, double eps, SilhouetteEdge* out, int capacity);
+
 // The inward side planes (through x, not normalised; the solid in front of every one) of the cone from x
 // over the solid, into `cone`. Returns their number; 0 when x is not outside the solid (no face seen from
 // the front by more than `eps`, a length), -1 when there would be more than `capacity`. A silhouette edge

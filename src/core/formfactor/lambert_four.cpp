@@ -1,0 +1,77 @@
+#include "core/formfactor/lambert_four.h"
+
+#include <numbers>
+
+#include "core/formfactor/analytic.h"
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+// libmvec's four-lane atan2 for AVX2 (glibc 2.35 and later): the vector ABI name GCC itself would call.
+extern "C" __attribute__((target("avx2"))) __m256d _ZGVdN4vv_atan2(__m256d y, __m256d x);
+#endif
+
+namespace rt {
+namespace {
+
+#if defined(__x86_64__)
+const bool kVectorised = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+
+// Coordinate `axis` of corner k of each of the four polygons, from its point.
+__attribute__((target("avx2,fma"))) inline __m256d lanesOf(const Vec3* points, const Vec3* corners,
+                                                           int stride, int k, int axis) {
+  return _mm256_setr_pd(corners[k][axis] - points[0][axis], corners[stride + k][axis] - points[1][axis],
+                        corners[2 * stride + k][axis] - points[2][axis],
+                        corners[3 * stride + k][axis] - points[3][axis]);
+}
+
+__attribute__((target("avx2,fma"))) void sum4(const Vec3* points, const Vec3& normal, const Vec3* corners,
+                                              int stride, int count, double* out) {
+  const __m256d nx = _mm256_set1_pd(normal.x()), ny = _mm256_set1_pd(normal.y()),
+                nz = _mm256_set1_pd(normal.z()), zero = _mm256_setzero_pd();
+  __m256d sum = zero;
+  __m256d ax = lanesOf(points, corners, stride, 0, 0), ay = lanesOf(points, corners, stride, 0, 1),
+          az = lanesOf(points, corners, stride, 0, 2);
+  const __m256d firstX = ax, firstY = ay, firstZ = az;
+  for (int k = 0; k < count; ++k) {
+    const bool last = k + 1 == count;
+    const __m256d bx = last ? firstX : lanesOf(points, corners, stride, k + 1, 0),
+                  by = last ? firstY : lanesOf(points, corners, stride, k + 1, 1),
+                  bz = last ? firstZ : lanesOf(points, corners, stride, k + 1, 2);
+    // c = a x b, |c| = |a||b| sin(theta), a . b = |a||b| cos(theta): as lambertSum() has them.
+    const __m256d cx = _mm256_fmsub_pd(ay, bz, _mm256_mul_pd(az, by)),
+                  cy = _mm256_fmsub_pd(az, bx, _mm256_mul_pd(ax, bz)),
+                  cz = _mm256_fmsub_pd(ax, by, _mm256_mul_pd(ay, bx));
+    const __m256d sine =
+        _mm256_sqrt_pd(_mm256_fmadd_pd(cx, cx, _mm256_fmadd_pd(cy, cy, _mm256_mul_pd(cz, cz))));
+    const __m256d cosine = _mm256_fmadd_pd(ax, bx, _mm256_fmadd_pd(ay, by, _mm256_mul_pd(az, bz)));
+    const __m256d facing = _mm256_fmadd_pd(nx, cx, _mm256_fmadd_pd(ny, cy, _mm256_mul_pd(nz, cz)));
+    const __m256d theta = _ZGVdN4vv_atan2(sine, cosine);
+    // An edge seen edge-on (sine 0) adds nothing: masked, as lambertSum() skips it.
+    const __m256d term = _mm256_div_pd(_mm256_mul_pd(theta, facing), sine);
+    sum = _mm256_add_pd(sum, _mm256_and_pd(term, _mm256_cmp_pd(sine, zero, _CMP_NEQ_OQ)));
+    ax = bx, ay = by, az = bz;
+  }
+  _mm256_storeu_pd(out, _mm256_mul_pd(sum, _mm256_set1_pd(-0.5 / std::numbers::pi)));
+}
+#else
+const bool kVectorised = false;
+#endif
+
+}  // namespace
+
+bool lambertFourIsVectorised() {
+  return kVectorised;
+}
+
+void lambertContourSum4(const Vec3* points, const Vec3& normal, const Vec3* corners, int stride, int count,
+                        double* out) {
+#if defined(__x86_64__)
+  if (kVectorised && count >= 3) {
+    sum4(points, normal, corners, stride, count, out);
+    return;
+  }
+#endif
+  for (int p = 0; p < 4; ++p) out[p] = lambertContourSum(points[p], normal, corners + p * stride, count);
+}
+
+}  // namespace rt
