@@ -156,6 +156,15 @@ bool QuadraturePair::judgeBlocks(int i, int j, int row, const ElementPolygon& a,
   return false;
 }
 
+double QuadraturePair::gapOf(int i, const SmallPolygon& source, const ReceiverBound& receiver) const {
+  const ReceiverBound& own = scene_.measures[static_cast<std::size_t>(i)].bound;
+  double height = INFINITY;
+  for (int k = 0; k < source.count; ++k)
+    height = std::min(height,
+                      std::abs(receiver.normal.dot(source.v[static_cast<std::size_t>(k)] - receiver.point)));
+  return std::max((own.centre - receiver.centre).norm() - own.radius - receiver.radius, height);
+}
+
 PairResult QuadraturePair::operator()(int i, int j, int row) {
   const Mesh& mesh = scene_.mesh;
   PairResult result;
@@ -186,6 +195,24 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
   if (!candidates_.empty()) {
     sourceCentre = shadow_detail::centreOf(source);
     receiverCentre = shadow_detail::centreOf(receiver);
+  }
+  // Nothing between them, both whole and far apart: one point on each side settles most such pairs, before
+  // any panel is made.
+  if (candidates_.empty() && sourceWhole && receiverWhole &&
+      scene_.elementSolids[static_cast<std::size_t>(i)].empty()) {
+    const QuadratureScene::Measure &mi = scene_.measures[static_cast<std::size_t>(i)],
+                                   &mj = scene_.measures[static_cast<std::size_t>(j)];
+    const double gap = gapOf(i, source, mj.bound);
+    double sum = 0;
+    if (mi.corners > 0 && !(gap < kNearSizes * mi.longest) &&
+        farFieldPair(OnePoint{mi.node, mi.weight, mi.longest, mi.corners},
+                     OnePoint{mj.node, mj.weight, mj.longest, mj.corners}, mj.bound, ni, gap, tolerance_,
+                     sum)) {
+      ++counts_.points;
+      result.kernelEvaluations = 1;
+      result.value = sum / areaI;
+      return result;
+    }
   }
   const std::vector<SolidPlanes>& solids = scene_.solids;
   auto whollyHidden = [&]() {
@@ -239,11 +266,7 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
   // gap from what is known of the element.
   double topGap = -1, topEdge = -1;
   if (sourceWhole && panelCount == 1 && reached.empty()) {
-    const ReceiverBound& own = scene_.measures[static_cast<std::size_t>(i)].bound;
-    double height = INFINITY;
-    for (int k = 0; k < source.count; ++k)
-      height = std::min(height, std::abs(nj.dot(source.v[static_cast<std::size_t>(k)] - bound.point)));
-    topGap = std::max((own.centre - bound.centre).norm() - own.radius - bound.radius, height);
+    topGap = gapOf(i, source, bound);
     topEdge = scene_.measures[static_cast<std::size_t>(i)].longest;
     near = topGap < kNearSizes * topEdge;
   }

@@ -59,6 +59,10 @@ class QuadraturePair {
                    const SmallPolygon& source, const SmallPolygon& receiver, const Vec3& sourceCentre,
                    const Vec3& receiverCentre);
 
+  // The gap between element i, whole (`source` its corners), and the receiver: the distance between their
+  // bounding spheres, or the source's height over the receiver's plane where that is more.
+  double gapOf(int i, const SmallPolygon& source, const ReceiverBound& receiver) const;
+
   const QuadratureScene& scene_;
   double tolerance_;
   ShadowClipper clipper_;
