@@ -82,7 +82,8 @@ double HiddenIntegral::refine(std::vector<T>& heap, double tolerance, Split&& sp
   return done;
 }
 
-double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tolerance) {
+double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tolerance,
+                                 const std::vector<int>& occluders) {
   tolerance_ = tolerance;
   std::vector<Smooth> heap;
   double done = 0;
@@ -96,14 +97,14 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
     const Vec3 x = cells[c].centre();
     if (forms_.size() <= formCount) forms_.resize(formCount + 1);
     ShadowClipper::HiddenForm& form = forms_[formCount];
-    if (clipper_.formOf(x, clipper_.occluders(), form)) {
+    if (clipper_.formOf(x, occluders, form)) {
       wholly = form.wholly;
       if (!wholly && form.count >= 3) {
         cell.form = static_cast<int>(formCount++);
-        centre = hiddenIn(x, cell.form);
+        centre = hiddenIn(x, cell.form, occluders);
       }
     } else {
-      centre = clipper_.hidden(x, clipper_.occluders(), &wholly);
+      centre = clipper_.hidden(x, occluders, &wholly);
     }
     ++work_.points;
     ++work_.clipped;
@@ -113,7 +114,7 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
     }
     if (centre <= 0) continue;
     cell.value = centre * cells[c].area();
-    rate(cell);
+    rate(cell, occluders);
     heap.push_back(std::move(cell));
   }
   return done + refine(heap, tolerance, [&](Smooth& worst, std::vector<Smooth>& into) {
@@ -126,10 +127,10 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
            for (std::size_t c = 0; c < 4; ++c) {
              Smooth& child = children[c];
              child = {parts[c], 0, 0, worst.depth + 1, worst.form};
-             child.value = hiddenIn(parts[c].centre(), child.form) * parts[c].area();
+             child.value = hiddenIn(parts[c].centre(), child.form, occluders) * parts[c].area();
              ++work_.points;
              ++work_.clipped;
-             rate(child);
+             rate(child, occluders);
              sum += child.value;
              own += child.error;
            }
@@ -143,7 +144,7 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
          });
 }
 
-void HiddenIntegral::rate(Smooth& cell) {
+void HiddenIntegral::rate(Smooth& cell, const std::vector<int>& occluders) {
   double fine = 0;
   std::array<Vec3, 4> x;
   std::array<double, 4> weight, value;
@@ -156,7 +157,7 @@ void HiddenIntegral::rate(Smooth& cell) {
       clipper_.hidden4(x.data(), forms_[static_cast<std::size_t>(cell.form)], value.data())) {
     work_.placed += 4;
   } else {
-    for (std::size_t p = 0; p < 4; ++p) value[p] = hiddenIn(x[p], cell.form);
+    for (std::size_t p = 0; p < 4; ++p) value[p] = hiddenIn(x[p], cell.form, occluders);
   }
   for (std::size_t p = 0; p < 4; ++p) fine += weight[p] * value[p];
   work_.points += 4;
@@ -165,13 +166,13 @@ void HiddenIntegral::rate(Smooth& cell) {
   cell.value = fine;
 }
 
-double HiddenIntegral::hiddenIn(const Vec3& x, int form) {
+double HiddenIntegral::hiddenIn(const Vec3& x, int form, const std::vector<int>& occluders) {
   double value = 0;
   if (form >= 0 && clipper_.hidden(x, forms_[static_cast<std::size_t>(form)], value)) {
     ++work_.placed;
     return value;
   }
-  return clipper_.hidden(x, clipper_.occluders());
+  return clipper_.hidden(x, occluders);
 }
 
 double HiddenIntegral::evaluate(const SourcePanel& panel, const std::vector<int>& occluders,

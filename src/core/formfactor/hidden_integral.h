@@ -57,7 +57,8 @@ class HiddenIntegral {
   // rule's error by far), split where the estimates add up to more than the tolerance. None of the guards
   // against shadows the points miss is needed. Where the occluder is one convex solid, the hidden part's
   // form is found at each cell's centre and its other points are placed from it (ShadowClipper::formOf).
-  double overCells(const SourcePanel* cells, int count, double tolerance);
+  // `occluders`: those the cells were cut for (one solid or polygon).
+  double overCells(const SourcePanel* cells, int count, double tolerance, const std::vector<int>& occluders);
 
  private:
   struct Child {
@@ -90,9 +91,9 @@ class HiddenIntegral {
   double refine(std::vector<T>& heap, double tolerance, Split&& split);
 
   // From `value` holding the one-point rule: the 2 x 2 rule's value and the difference as its error.
-  void rate(Smooth& cell);
+  void rate(Smooth& cell, const std::vector<int>& occluders);
   // F(dA_x -> hidden part) at a point of a cell: from the cell's form where it has one that fits x.
-  double hiddenIn(const Vec3& x, int form);
+  double hiddenIn(const Vec3& x, int form, const std::vector<int>& occluders);
 
   // Clears `allHidden` when some point of the rule sees part of the receiver.
   double evaluate(const SourcePanel& panel, const std::vector<int>& occluders, bool& allHidden);

@@ -78,7 +78,8 @@ class QuadratureMethod : public FormFactorMethod {
     stats.notes = line;
     stats.notes += ", " + std::to_string(scene.solids.size()) + " closed convex solids, " +
                    std::to_string(total.eventPairs) +
-                   " pairs integrated over cells cut along visibility events";
+                   " pairs integrated over cells cut along visibility events (" +
+                   std::to_string(total.apartPairs) + " of them solid by solid, their shadows apart)";
     if (total.budgetPairs > 0)
       stats.notes += ", " + std::to_string(total.budgetPairs) + " pairs reached the work bound (depth " +
                      std::to_string(HiddenIntegral::kMaxDepth) + ", " +

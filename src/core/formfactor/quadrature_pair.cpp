@@ -156,6 +156,39 @@ bool QuadraturePair::judgeBlocks(int i, int j, int row, const ElementPolygon& a,
   return false;
 }
 
+bool QuadraturePair::hiddenSolidBySolid(int i, int j, const SmallPolygon& source, double eps,
+                                        HiddenIntegral& hidden, double tolerance, double& sum) {
+  solidsHere_.clear();
+  for (int k : clipper_.occluders()) {
+    const int solid = clipper_.solidOf(k);
+    if (solid < 0) return false;
+    if (std::find(solidsHere_.begin(), solidsHere_.end(), solid) == solidsHere_.end())
+      solidsHere_.push_back(solid);
+  }
+  if (solidsHere_.size() < 2) return false;
+  for (std::size_t a = 0; a < solidsHere_.size(); ++a)
+    for (std::size_t b = a + 1; b < solidsHere_.size(); ++b)
+      if (!scene_.shadowsApart(i, j, solidsHere_[a], solidsHere_[b])) return false;
+  // Each solid's share of the tolerance; its cells cut along its own events only.
+  const double share = tolerance / static_cast<double>(solidsHere_.size());
+  double total = 0;
+  for (int solid : solidsHere_) {
+    solidOccluders_.clear();
+    for (int k : clipper_.occluders())
+      if (clipper_.solidOf(k) == solid) solidOccluders_.push_back(k);
+    if (!clipper_.eventPlanes(source, solidOccluders_, events_)) return false;
+    cells_.clear();
+    for (const SourcePanel& panel : panels_)
+      if (!cutAlongEvents(panel, events_, eps, kMaxEventCells - static_cast<int>(cells_.size()), cells_))
+        return false;
+    appendPanels(cells_, cellPanels_);
+    total +=
+        hidden.overCells(cellPanels_.data(), static_cast<int>(cellPanels_.size()), share, solidOccluders_);
+  }
+  sum = total;
+  return true;
+}
+
 double QuadraturePair::gapOf(int i, const SmallPolygon& source, const ReceiverBound& receiver) const {
   const ReceiverBound& own = scene_.measures[static_cast<std::size_t>(i)].bound;
   double height = INFINITY;
@@ -345,8 +378,11 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
     if (byCells) {
       appendPanels(cells_, cellPanels_);
       sum = hidden.overCells(cellPanels_.data(), static_cast<int>(cellPanels_.size()),
-                             0.5 * tolerance_ * areaI);
+                             0.5 * tolerance_ * areaI, clipper_.occluders());
       ++counts_.eventPairs;
+    } else if (hiddenSolidBySolid(i, j, source, eps, hidden, 0.5 * tolerance_ * areaI, sum)) {
+      ++counts_.eventPairs;
+      ++counts_.apartPairs;
     } else {
       sum = hidden(panels_.data(), panelCount, 0.5 * tolerance_ * areaI);
     }

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/formfactor/block_shadow_regions.h"
+#include "core/formfactor/hidden_integral.h"
 #include "core/formfactor/pair_matrix.h"
 #include "core/formfactor/quadrature_scene.h"
 #include "core/formfactor/shadow_clipper.h"
@@ -30,7 +31,7 @@ class QuadraturePair {
   // What the notes report, summed over threads at the end.
   struct Counts {
     long points = 0, clipped = 0, placed = 0, contours = 0, budgetPairs = 0, occludedPairs = 0,
-         hiddenPairs = 0, eventPairs = 0;
+         hiddenPairs = 0, eventPairs = 0, apartPairs = 0;
     Counts& operator+=(const Counts& o) {
       points += o.points;
       clipped += o.clipped;
@@ -40,6 +41,7 @@ class QuadraturePair {
       occludedPairs += o.occludedPairs;
       hiddenPairs += o.hiddenPairs;
       eventPairs += o.eventPairs;
+      apartPairs += o.apartPairs;
       return *this;
     }
   };
@@ -59,6 +61,15 @@ class QuadraturePair {
                    const SmallPolygon& source, const SmallPolygon& receiver, const Vec3& sourceCentre,
                    const Vec3& receiverCentre);
 
+  // H solid by solid, where every occluder left bounds a convex solid, there are several, and no segment
+  // from i to j passes through two of them (QuadratureScene::shadowsApart): then H is the sum of what each
+  // hides alone, and each of those is integrated over cells cut along its own events (visibility_events.h
+  // leaves several occluders out: their shadows' crossings are events that are not planes, but apart they
+  // never cross). False (`sum` unset) where that does not hold or the cells would be too many; the adaptive
+  // rules take the pair then. `eps`: shadowEps() of the pair.
+  bool hiddenSolidBySolid(int i, int j, const SmallPolygon& source, double eps, HiddenIntegral& hidden,
+                          double tolerance, double& sum);
+
   // The gap between element i, whole (`source` its corners), and the receiver: the distance between their
   // bounding spheres, or the source's height over the receiver's plane where that is more.
   double gapOf(int i, const SmallPolygon& source, const ReceiverBound& receiver) const;
@@ -77,6 +88,7 @@ class QuadraturePair {
   std::vector<SmallPolygon> cells_;
   std::vector<SourcePanel> cellPanels_;
   std::vector<ShadowClipper::HiddenForm> forms_;
+  std::vector<int> solidsHere_, solidOccluders_;
 };
 
 }  // namespace rt

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/formfactor/closed_solids.h"
+#include "core/formfactor/shadow_overlap.h"
 #include "core/formfactor/visibility.h"
 
 namespace rt {
@@ -96,6 +97,33 @@ QuadratureScene::QuadratureScene(const Mesh& mesh_, const ShaftCulling& shafts_)
   regionEps = 1e-10 * size;
   contactRegions = std::make_unique<ContactShadowRegions>(shapes, static_cast<int>(polygons.size()), polygons,
                                                           normals, regionEps);
+  if (solids.size() >= 2 && solids.size() <= static_cast<std::size_t>(kMaxPairedSolids))
+    outsideHull_ = std::vector<std::atomic<signed char>>(mesh.size() * solids.size() * solids.size());
+}
+
+bool QuadratureScene::outsideHull(int element, int near, int other) const {
+  const std::size_t n = solids.size();
+  std::atomic<signed char>& known =
+      outsideHull_[(static_cast<std::size_t>(element) * n + static_cast<std::size_t>(near)) * n +
+                   static_cast<std::size_t>(other)];
+  signed char answer = known.load(std::memory_order_relaxed);
+  if (answer == 0) {
+    const ElementPolygon polygon(mesh, element);
+    answer = solidOutsideHullOfSolidAndPolygon(shapes[static_cast<std::size_t>(other)],
+                                               shapes[static_cast<std::size_t>(near)], polygon.v.data(),
+                                               polygon.count, regionEps)
+                 ? 1
+                 : 2;
+    known.store(answer, std::memory_order_relaxed);
+  }
+  return answer == 1;
+}
+
+bool QuadratureScene::shadowsApart(int source, int receiver, int a, int b) const {
+  if (outsideHull_.empty() || a == b) return false;
+  const int elements[2] = {source, receiver}, pair[2] = {a, b};
+  return shadowsApartBy(
+      [&](int e, int near, int other) { return outsideHull(elements[e], pair[near], pair[other]); });
 }
 
 }  // namespace rt

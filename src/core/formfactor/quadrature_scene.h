@@ -4,6 +4,7 @@
 // Read by every thread (quadrature_pair.h).
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <vector>
 
@@ -50,6 +51,20 @@ struct QuadratureScene {
   std::vector<Measure> measures;
   double regionEps = 0;  // a length: 1e-10 of the scene's size
   std::unique_ptr<ContactShadowRegions> contactRegions;
+
+  // Whether no segment from element `source` to element `receiver` passes through both solids (proven as
+  // shadow_overlap.h says): then what they hide of the pair is the sum of what each hides alone. The hull
+  // tests it rests on are each of one element and two solids, made on first use and kept; false (unproven)
+  // in scenes of more than kMaxPairedSolids solids.
+  bool shadowsApart(int source, int receiver, int a, int b) const;
+  static constexpr int kMaxPairedSolids = 16;
+
+ private:
+  // Whether solid `other` lies outside the convex hull of solid `near` and the element (kept).
+  bool outsideHull(int element, int near, int other) const;
+  // Per element and ordered pair of solids: 0 not yet known, 1 proven, 2 not. Threads that race to the same
+  // entry prove the same answer.
+  mutable std::vector<std::atomic<signed char>> outsideHull_;
 };
 
 // The receiver as the a-priori order sees it.

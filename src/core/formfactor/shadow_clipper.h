@@ -110,6 +110,8 @@ class ShadowClipper {
 
   // Indices of the occluders kept (all of them may block).
   const std::vector<int>& occluders() const { return all_; }
+  // The solid occluder `k` bounds, or -1.
+  int solidOf(int k) const { return prepared_[static_cast<std::size_t>(k)].solid; }
   // Of `in`, those that may cut a segment from `panel` to the receiver, into `out`.
   void cull(const SourcePanel& panel, const std::vector<int>& in, std::vector<int>& out) const;
   // True when one of `occluders`, or the solid one of them bounds, cuts every segment from the panel
