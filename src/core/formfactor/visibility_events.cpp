@@ -69,7 +69,10 @@ class SourceRegion {
   // only part of ab is nearer, the projection is unbounded and the whole line is tested.
   bool matters(const Vec3& c, double hc, const Vec3& a, double ha, const Vec3& b, double hb,
                const Vec3& planeNormal) const {
-    if (ha < -eps_ || hb < -eps_ || ha >= hc - eps_ || hb >= hc - eps_) return crossedBy(c, planeNormal);
+    // The line must cross the source at all: four products, where the segment's test takes divisions, and
+    // most event planes pass clear of a small source.
+    if (!crossedBy(c, planeNormal)) return false;
+    if (ha < -eps_ || hb < -eps_ || ha >= hc - eps_ || hb >= hc - eps_) return true;
     const Vec3 pa = c + (a - c) * (hc / (hc - ha)), pb = c + (b - c) * (hc / (hc - hb));
     return meetsSegment(pa, pb);
   }
@@ -123,9 +126,9 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
       // From x, v hides a point p of r1 r2: x = p + (v - p) t, so x is p's projection through v, and the
       // segment of them is the projection of r1 r2 from each end's point through v.
       const bool keep =
-          hv < -eps_ || h1 <= hv + eps_ || h2 <= hv + eps_
-              ? region.crossedBy(v, n)
-              : region.meetsSegment(r1 + (v - r1) * (h1 / (h1 - hv)), r2 + (v - r2) * (h2 / (h2 - hv)));
+          region.crossedBy(v, n) &&
+          (hv < -eps_ || h1 <= hv + eps_ || h2 <= hv + eps_ ||
+           region.meetsSegment(r1 + (v - r1) * (h1 / (h1 - hv)), r2 + (v - r2) * (h2 / (h2 - hv))));
       if (keep) out.push_back({v, n});
     }
   };
