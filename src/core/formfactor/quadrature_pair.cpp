@@ -229,21 +229,25 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
     sourceCentre = shadow_detail::centreOf(source);
     receiverCentre = shadow_detail::centreOf(receiver);
   }
-  // Nothing between them, both whole and far apart: one point on each side settles most such pairs, before
-  // any panel is made.
-  if (candidates_.empty() && sourceWhole && receiverWhole &&
+  // Nothing between them, both whole, a triangle or quadrilateral for source and not near: the source is one
+  // panel, integrated as the general path below would (one point on each side for most such pairs), before
+  // any of its machinery is set up.
+  const QuadratureScene::Measure &mi = scene_.measures[static_cast<std::size_t>(i)],
+                                 &mj = scene_.measures[static_cast<std::size_t>(j)];
+  if (candidates_.empty() && sourceWhole && receiverWhole && mi.corners > 0 &&
       scene_.elementSolids[static_cast<std::size_t>(i)].empty()) {
-    const QuadratureScene::Measure &mi = scene_.measures[static_cast<std::size_t>(i)],
-                                   &mj = scene_.measures[static_cast<std::size_t>(j)];
     const double gap = gapOf(i, source, mj.bound);
-    double sum = 0;
-    if (mi.corners > 0 && !(gap < kNearSizes * mi.longest) &&
-        farFieldPair(OnePoint{mi.node, mi.weight, mi.longest, mi.corners},
-                     OnePoint{mj.node, mj.weight, mj.longest, mj.corners}, mj.bound, ni, gap, tolerance_,
-                     sum)) {
-      ++counts_.points;
-      result.kernelEvaluations = 1;
-      result.value = sum / areaI;
+    if (!(gap < kNearSizes * mi.longest)) {
+      SourcePanel panel;
+      panel.count = source.count;
+      std::copy_n(source.v.begin(), source.count, panel.v.begin());
+      const OnePoint far{mj.node, mj.weight, mj.longest, mj.corners},
+          own{mi.node, mi.weight, mi.longest, mi.corners};
+      result.value = integrateUnoccluded(panel, mj.bound, receiver, ni, tolerance_, 0, work, gap, mi.longest,
+                                         &far, &own) /
+                     areaI;
+      counts_.points += work.points;
+      result.kernelEvaluations = static_cast<std::size_t>(work.points);
       return result;
     }
   }
