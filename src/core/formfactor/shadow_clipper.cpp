@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/formfactor/analytic.h"
+#include "core/formfactor/lambert_four.h"
 #include "core/formfactor/penumbra_region.h"
 #include "core/formfactor/shadow_clipper_detail.h"
 #include "core/formfactor/solid_silhouette.h"
@@ -275,7 +276,7 @@ bool ShadowClipper::cutCone(const Vec3& x, const Vec3* cone, int m, bool last, d
       inside = part.count > 0 ? &part : nullptr;
       which ^= 1;
     }
-    if (inside) sum += lambertContourSum(x, sourceNormal_, inside->v.data(), inside->count);
+    if (inside) addHidden(x, *inside, sum);
   }
   // The last cone needs no pieces left over, only whether any would be.
   if (last) return anyLeft;
@@ -284,12 +285,58 @@ bool ShadowClipper::cutCone(const Vec3& x, const Vec3* cone, int m, bool last, d
   return pieceCount_ > 0;
 }
 
+void ShadowClipper::addHidden(const Vec3& x, const SmallPolygon& piece, double& sum) const {
+  Pending& pending = pending_[static_cast<std::size_t>(pendingCount_++)];
+  copyPolygon(piece, pending.piece);
+  pending.x = x;
+  pending.sum = &sum;
+  if (pendingCount_ == static_cast<int>(pending_.size())) flushHidden();
+}
+
+void ShadowClipper::flushHidden() const {
+  if (pendingCount_ == 1) {
+    const Pending& only = pending_[0];
+    *only.sum += lambertContourSum(only.x, sourceNormal_, only.piece.v.data(), only.piece.count);
+  } else if (pendingCount_ > 1) {
+    Vec3 points[4];
+    const Vec3* polygons[4];
+    int counts[4];
+    double values[4];
+    for (std::size_t p = 0; p < 4; ++p) {
+      const bool used = static_cast<int>(p) < pendingCount_;
+      points[p] = pending_[used ? p : 0].x;
+      polygons[p] = pending_[p].piece.v.data();
+      counts[p] = used ? pending_[p].piece.count : 0;
+    }
+    lambertContourSum4(points, sourceNormal_, polygons, counts, values);
+    for (int p = 0; p < pendingCount_; ++p) *pending_[static_cast<std::size_t>(p)].sum += values[p];
+  }
+  pendingCount_ = 0;
+}
+
 double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders, bool* whollyHidden) const {
+  double sum = 0;
+  clipHidden(x, occluders, sum, whollyHidden);
+  flushHidden();
+  return std::max(0.0, sum);
+}
+
+void ShadowClipper::hidden4(const Vec3* x, const std::vector<int>& occluders, double* values,
+                            bool* whollyHidden) const {
+  for (int p = 0; p < 4; ++p) {
+    values[p] = 0;
+    clipHidden(x[p], occluders, values[p], whollyHidden ? whollyHidden + p : nullptr);
+  }
+  flushHidden();
+  for (int p = 0; p < 4; ++p) values[p] = std::max(0.0, values[p]);
+}
+
+void ShadowClipper::clipHidden(const Vec3& x, const std::vector<int>& occluders, double& sum,
+                               bool* whollyHidden) const {
   if (whollyHidden) *whollyHidden = false;
   if (pieces_.empty()) pieces_.emplace_back();
   copyPolygon(receiver_, pieces_[0]);
   pieceCount_ = 1;
-  double sum = 0;
   std::array<Vec3, SmallPolygon::kCapacity> cone;
   outside_.assign(solids_.size(), -1);
   if (shapes_) cut_.assign(whole_.size(), 0);
@@ -342,7 +389,6 @@ double ShadowClipper::hidden(const Vec3& x, const std::vector<int>& occluders, b
     anyLeft = cutCone(x, cone.data(), m, position == count - 1, sum);
   }
   if (whollyHidden) *whollyHidden = !anyLeft;
-  return std::max(0.0, sum);
 }
 
 }  // namespace rt

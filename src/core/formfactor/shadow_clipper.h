@@ -124,6 +124,9 @@ class ShadowClipper {
   // F(dA_x -> the part of the receiver hidden by `occluders`) for x on the source; `whollyHidden`, where
   // given, tells whether nothing of the receiver is left in view.
   double hidden(const Vec3& x, const std::vector<int>& occluders, bool* whollyHidden = nullptr) const;
+  // The same at four points, their hidden pieces' Lambert sums taken four at a time (lambert_four.h).
+  void hidden4(const Vec3* x, const std::vector<int>& occluders, double* values,
+               bool* whollyHidden = nullptr) const;
   // Where sample points of a panel saw no shadow although an occluder passed the hull test: the largest
   // hidden(x) over probe points x that aim at a shadow. From a point of the panel inside the projection of
   // an occluder from a receiver corner, that corner is hidden; from one inside the projection of the
@@ -180,6 +183,12 @@ class ShadowClipper {
   // cut parts to `sum`, and keeps the parts left for the next cone unless this one is the `last`. Returns
   // whether any part is left.
   bool cutCone(const Vec3& x, const Vec3* cone, int m, bool last, double& sum) const;
+  // hidden() without the last Lambert sums: the hidden pieces are added to `sum` by flushHidden().
+  void clipHidden(const Vec3& x, const std::vector<int>& occluders, double& sum, bool* whollyHidden) const;
+  // Hidden pieces wait in pending_ to have their Lambert sums taken four at a time, each added to the sum
+  // of its point when four are waiting or at flushHidden().
+  void addHidden(const Vec3& x, const SmallPolygon& piece, double& sum) const;
+  void flushHidden() const;
   // The corners of a hidden form's outline from x, into `v`; false where the form does not fit x.
   bool place(const Vec3& x, const HiddenForm& form, Vec3* v) const;
 
@@ -200,6 +209,13 @@ class ShadowClipper {
   mutable std::vector<std::pair<Vec3, double>> planes_;
   mutable std::vector<SmallPolygon> pieces_, next_;  // pools: the first pieceCount_ of pieces_ are in use
   mutable int pieceCount_ = 0;
+  struct Pending {
+    SmallPolygon piece;
+    Vec3 x;
+    double* sum = nullptr;
+  };
+  mutable std::array<Pending, 4> pending_;
+  mutable int pendingCount_ = 0;
   mutable std::vector<signed char> outside_;       // per solid, for the current point: -1 not yet known
   mutable std::vector<PenumbraRegion> penumbrae_;  // per solid, made on first use
   mutable std::vector<signed char> penumbraMade_;  // -1 not yet, 0 unbounded, 1 made
