@@ -146,5 +146,25 @@ TEST(LambertFour, AsFourScalarSums) {
   }
 }
 
+// Polygons of different corner counts in the four lanes (the shorter padded with their first corner), and a
+// lane with none.
+TEST(LambertFour, PolygonsOfDifferentCornerCounts) {
+  const std::array<Vec3, 4> points{Vec3(0.1, 0.2, 0), Vec3(0.5, -0.3, 0.1), Vec3(-2, 1, 0.5), Vec3(0, 0, 0)};
+  const Vec3 normal(0, 0, 1);
+  const std::array<Vec3, 5> pentagon{Vec3(0, 0, 2), Vec3(0, 1, 2.1), Vec3(1, 1.5, 2), Vec3(1.5, 0.5, 1.9),
+                                     Vec3(1, -0.5, 2)};
+  const std::array<Vec3, 3> triangle{Vec3(0, 0, 1), Vec3(0, 1, 1), Vec3(1, 0, 1.2)};
+  const std::array<Vec3, 4> quad{Vec3(-1, -1, 3), Vec3(-1, 1, 3), Vec3(1, 1, 3), Vec3(1, -1, 3)};
+  const Vec3* polygons[4] = {triangle.data(), pentagon.data(), quad.data(), quad.data()};
+  const int counts[4] = {3, 5, 4, 0};
+  std::array<double, 4> four;
+  lambertContourSum4(points.data(), normal, polygons, counts, four.data());
+  for (std::size_t p = 0; p < 3; ++p) {
+    const double one = lambertContourSum(points[p], normal, polygons[p], counts[p]);
+    EXPECT_NEAR(four[p], one, 2e-15 * std::abs(one)) << p;
+  }
+  EXPECT_EQ(four[3], 0.0);
+}
+
 }  // namespace
 }  // namespace rt

@@ -119,6 +119,37 @@ TEST(SolidSilhouette, HidesWhatTheFacesHideOneByOne) {
     }
 }
 
+// Four points at once (their hidden pieces' Lambert sums taken together) as one by one: two blocks, so that
+// a point's receiver falls into several pieces, and points that see nothing, part or all of it hidden.
+TEST(ShadowClipper, FourPointsAtOnceAsOneByOne) {
+  const SmallPolygon receiver = polygon({{0.2, 0.2, 3}, {0.2, 0.8, 3}, {0.8, 0.8, 3}, {0.8, 0.2, 3}});
+  const Box left = box({0.1, 0.1, 1.0}, {0.45, 0.9, 1.4}), right = box({0.55, 0.3, 1.8}, {0.8, 0.6, 2.2});
+  std::vector<OccluderPolygon> faces = left.occluders();
+  for (OccluderPolygon o : right.occluders()) faces.push_back({o.polygon, 1});
+  const std::vector<SolidPlanes> solids{left.planes, right.planes};
+  const std::vector<Vec3> centres{left.centre, right.centre};
+  std::vector<SolidShape> shapes{left.shapes[0], right.shapes[0]};
+  const ShadowClipper clipper(kSource, kUp, receiver, kDown, faces, solids, &centres, &shapes);
+  int partly = 0, wholly = 0;
+  for (double s = 0; s <= 1.0; s += 0.1)
+    for (double t = 0; t <= 1.0; t += 0.1) {
+      const std::array<Vec3, 4> x{Vec3(s, t, 0), Vec3(t, s, 0), Vec3(1 - s, t, 0), Vec3(s, 1 - t, 0)};
+      std::array<double, 4> four;
+      std::array<bool, 4> whollyFour;
+      clipper.hidden4(x.data(), clipper.occluders(), four.data(), whollyFour.data());
+      for (std::size_t p = 0; p < 4; ++p) {
+        bool whollyOne = false;
+        const double one = clipper.hidden(x[p], clipper.occluders(), &whollyOne);
+        EXPECT_NEAR(four[p], one, 1e-15 + 2e-15 * one) << x[p].transpose();
+        EXPECT_EQ(whollyFour[p], whollyOne) << x[p].transpose();
+        partly += one > 0 && !whollyOne;
+        wholly += whollyOne;
+      }
+    }
+  EXPECT_GT(partly, 100);
+  EXPECT_GT(wholly, 0);
+}
+
 // A block given without its bottom (the Cornell box's) is closed by the face its open edges outline, and
 // is then a solid; a closed box needs no such face; a lone flat patch gets one but is no solid (no volume).
 TEST(ClosingFaces, ABlockWithoutItsBottomIsASolid) {
