@@ -103,15 +103,22 @@ std::vector<Vertex> cornerVertices(const std::vector<Edge>& edges, double eps) {
 }
 
 // The parameter interval [lo, hi] of the line p + t d inside the convex polygon (in the line's plane).
+// Edges of no length to rounding are skipped: a cell cut along a line through one of its corners can keep
+// that corner twice, ~1e-12 apart, and the direction between the two copies is noise (it once bounded the
+// chord of an event line from that corner to nothing, and a block's contact corner went uncut).
 bool chord(const Polygon& polygon, const Vec3& normal, const Vec3& p, const Vec3& d, double& lo, double& hi) {
   lo = -INFINITY;
   hi = INFINITY;
   Vec3 centre = Vec3::Zero();
   for (const Vec3& c : polygon) centre += c;
   centre /= static_cast<double>(polygon.size());
+  double size2 = 0;
+  for (const Vec3& c : polygon) size2 = std::max(size2, (c - centre).squaredNorm());
   for (std::size_t k = 0; k < polygon.size(); ++k) {
     const Vec3& c = polygon[k];
-    Vec3 m = normal.cross(polygon[(k + 1) % polygon.size()] - c);
+    const Vec3 edge = polygon[(k + 1) % polygon.size()] - c;
+    if (edge.squaredNorm() <= 1e-18 * size2) continue;
+    Vec3 m = normal.cross(edge);
     if (m.dot(centre - c) < 0) m = -m;
     const double f0 = m.dot(p - c), f1 = m.dot(d);  // inside: f0 + t f1 >= 0
     if (f1 == 0) {
