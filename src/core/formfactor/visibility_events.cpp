@@ -125,10 +125,9 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
       if (n.squaredNorm() <= tiny * tiny) continue;
       // From x, v hides a point p of r1 r2: x = p + (v - p) t, so x is p's projection through v, and the
       // segment of them is the projection of r1 r2 from each end's point through v.
-      const bool keep =
-          region.crossedBy(v, n) &&
-          (hv < -eps_ || h1 <= hv + eps_ || h2 <= hv + eps_ ||
-           region.meetsSegment(r1 + (v - r1) * (h1 / (h1 - hv)), r2 + (v - r2) * (h2 / (h2 - hv))));
+      const bool keep = region.crossedBy(v, n) && (hv < -eps_ || h1 <= hv + eps_ || h2 <= hv + eps_ ||
+                                                   region.meetsSegment(r1 + (v - r1) * (h1 / (h1 - hv)),
+                                                                       r2 + (v - r2) * (h2 / (h2 - hv))));
       if (keep) out.push_back({v, n});
     }
   };
