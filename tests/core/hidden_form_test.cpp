@@ -7,7 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/box_solid.h"
+#include "core/event_scenes.h"
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/lambert_four.h"
 #include "core/formfactor/shadow_clipper.h"
@@ -16,15 +16,7 @@
 namespace rt {
 namespace {
 
-const SmallPolygon kSource = polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});  // faces +z
-const SourcePanel kPanel{{kSource.v[0], kSource.v[1], kSource.v[2], kSource.v[3]}, 4};
-const Vec3 kUp{0, 0, 1}, kDown{0, 0, -1};
-const SmallPolygon kReceiver =
-    polygon({{0.47, 0.37, 3}, {0.32, 0.52, 3}, {0.47, 0.67, 3}, {0.62, 0.52, 3}});  // faces -z
-// A slab whose edge sweeps the receiver, and a block whose corner's shadow crosses it; the planes of both
-// one's side faces cut the source (the silhouette changes there).
-const Box kSlab = box({0.5, -1, 1.4}, {1.5, 2, 1.6});
-const Box kCorner = box({0.5, 0.5, 1.4}, {1.5, 1.5, 1.6});
+using namespace event_scenes;
 
 struct BlockPair {
   explicit BlockPair(const Box& block)

@@ -9,23 +9,13 @@
 #include <cmath>
 #include <vector>
 
-#include "core/box_solid.h"
+#include "core/event_scenes.h"
 #include "core/formfactor/shadow_clipper.h"
 
 namespace rt {
 namespace {
 
-const SmallPolygon kSource = polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});  // faces +z
-const SourcePanel kPanel{{kSource.v[0], kSource.v[1], kSource.v[2], kSource.v[3]}, 4};
-const Vec3 kUp{0, 0, 1}, kDown{0, 0, -1};
-// A small receiver above the source: a diamond, and off the blocks' faces' planes, so that no event of one
-// kind falls on the line of another (the test would not tell them apart).
-const SmallPolygon kReceiver =
-    polygon({{0.47, 0.37, 3}, {0.32, 0.52, 3}, {0.47, 0.67, 3}, {0.62, 0.52, 3}});  // faces -z
-// A slab whose edge sweeps across the receiver as x crosses the source (from one side nothing of the
-// receiver is hidden, from the other all of it), and a block whose corner's shadow crosses it as well.
-const Box kSlab = box({0.5, -1, 1.4}, {1.5, 2, 1.6});
-const Box kCorner = box({0.5, 0.5, 1.4}, {1.5, 1.5, 1.6});
+using namespace event_scenes;
 
 enum class Seen { Nothing, Part, All };
 
