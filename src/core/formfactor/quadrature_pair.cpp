@@ -44,6 +44,11 @@ bool farFieldPair(const OnePoint& source, const OnePoint& receiver, const Receiv
   return true;
 }
 
+// An element's own one-point rule, made once with its other measures (it is whole).
+OnePoint onePointOf(const QuadratureScene::Measure& m) {
+  return OnePoint{m.node, m.weight, m.longest, m.corners};
+}
+
 OnePoint onePointOf(const SourcePanel& panel) {
   OnePoint side;
   forEachGaussPoint(panel, 1, [&](const Vec3& x, double w) { side.node = x, side.weight = w; });
@@ -241,8 +246,7 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
       SourcePanel panel;
       panel.count = source.count;
       std::copy_n(source.v.begin(), source.count, panel.v.begin());
-      const OnePoint far{mj.node, mj.weight, mj.longest, mj.corners},
-          own{mi.node, mi.weight, mi.longest, mi.corners};
+      const OnePoint far = onePointOf(mj), own = onePointOf(mi);
       result.value = integrateUnoccluded(panel, mj.bound, receiver, ni, tolerance_, 0, work, gap, mi.longest,
                                          &far, &own) /
                      areaI;
@@ -352,12 +356,8 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
     ++work.contours;
   } else {
     // The elements' own one-point rules where they are whole.
-    auto onePointOfElement = [&](int e) {
-      const QuadratureScene::Measure& m = scene_.measures[static_cast<std::size_t>(e)];
-      return OnePoint{m.node, m.weight, m.longest, m.corners};
-    };
-    const OnePoint far = receiverWhole ? onePointOfElement(j) : OnePoint{};
-    const OnePoint own = topGap >= 0 ? onePointOfElement(i) : OnePoint{};
+    const OnePoint far = receiverWhole ? onePointOf(mj) : OnePoint{};
+    const OnePoint own = topGap >= 0 ? onePointOf(mi) : OnePoint{};
     for (int p = 0; p < panelCount; ++p)
       unoccluded +=
           integrateUnoccluded(panels_[static_cast<std::size_t>(p)], bound, receiver, ni, unoccludedTolerance,
