@@ -56,8 +56,9 @@ std::vector<SolidShape> solidShapes(const std::vector<const std::vector<Vec3>*>&
 
 namespace {
 
-// visit(a, b, n) for each silhouette edge from x (corners a, b; n the inward side plane). Returns false when
-// x is not outside the solid or the solid has too many faces.
+// visit(a, b, n) for each silhouette edge from x (corners a, b; n the inward side plane). Returns their
+// number: 0 when x is not outside the solid, -1 when the solid has too many faces or `visit` refuses one
+// (full).
 template <class Visit>
 int forEachSilhouetteEdge(const SolidShape& solid, const Vec3& x, double eps, Visit&& visit) {
   constexpr int kMaxFaces = 64;
