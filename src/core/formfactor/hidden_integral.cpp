@@ -88,6 +88,8 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
   std::vector<Smooth> heap;
   double done = 0;
   std::size_t formCount = 0;
+  bool twoSolids = false;
+  for (int k : occluders) twoSolids |= clipper_.solidOf(k) != clipper_.solidOf(occluders.front());
   for (int c = 0; c < count; ++c) {
     // Not culled: the centre tells as well whether anything is hidden there, for about the cost of the test.
     // Its form, where there is one, tells it without Lambert's sum, and places the cell's other points.
@@ -108,6 +110,11 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
     }
     ++work_.points;
     ++work_.clipped;
+    // Between two solids a gap can open on the receiver inside a cell (visibility_events.h): a cell they
+    // hide all of it from at the centre is taken as wholly hidden only where one of them is proven to hide
+    // it from the whole cell; otherwise it is rated like any other.
+    if (wholly && twoSolids && !clipper_.hidesAll(cells[c].v.data(), cells[c].count, occluders))
+      wholly = false;
     if (wholly) {
       done += unoccluded_(cells[c], pointTolerance());
       continue;

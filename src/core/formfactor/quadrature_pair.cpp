@@ -370,23 +370,29 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
       return integrateUnoccluded(panel, bound, receiver, ni, pointTolerance, 0, work);
     };
     HiddenIntegral hidden(clipper_, kHiddenOrder, unoccludedOn, areaI, work, forms_);
-    // One occluder: the source cut into cells along its visibility events, where the hidden part is
-    // analytic. Otherwise (or where the cells would be too many) the adaptive rules with their guards.
-    bool byCells = clipper_.eventPlanes(source, clipper_.occluders(), events_);
-    cells_.clear();
+    // Two solids whose shadows never overlap: each over its own cells. One solid or polygon, or two whole
+    // solids: the source cut into cells along their visibility events, where the hidden part is analytic
+    // (between two solids, up to a gap opening between their shadows, which overCells() guards against).
+    // Otherwise (or where the cells would be too many) the adaptive rules with their guards.
     const double eps = shadowEps(source, receiver);
+    bool solids = false;  // occluders of more than one solid
+    for (int k : clipper_.occluders())
+      solids |= clipper_.solidOf(k) != clipper_.solidOf(clipper_.occluders()[0]);
+    double sum = 0;
+    const bool apart = solids && hiddenSolidBySolid(i, j, source, eps, hidden, 0.5 * tolerance_ * areaI, sum);
+    bool byCells = !apart && clipper_.eventPlanes(source, clipper_.occluders(), events_);
+    cells_.clear();
     for (int p = 0; p < panelCount && byCells; ++p)
       byCells = cutAlongEvents(panels_[static_cast<std::size_t>(p)], events_, eps,
                                kMaxEventCells - static_cast<int>(cells_.size()), cells_);
-    double sum;
-    if (byCells) {
+    if (apart) {
+      ++counts_.eventPairs;
+      ++counts_.apartPairs;
+    } else if (byCells) {
       appendPanels(cells_, cellPanels_);
       sum = hidden.overCells(cellPanels_.data(), static_cast<int>(cellPanels_.size()),
                              0.5 * tolerance_ * areaI, clipper_.occluders());
       ++counts_.eventPairs;
-    } else if (hiddenSolidBySolid(i, j, source, eps, hidden, 0.5 * tolerance_ * areaI, sum)) {
-      ++counts_.eventPairs;
-      ++counts_.apartPairs;
     } else {
       sum = hidden(panels_.data(), panelCount, 0.5 * tolerance_ * areaI);
     }

@@ -92,8 +92,15 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
   if (occluders.empty()) return true;
   const int solid = prepared_[static_cast<std::size_t>(occluders[0])].solid;
   if (solid < 0 && occluders.size() > 1) return false;
-  for (int k : occluders)
-    if (prepared_[static_cast<std::size_t>(k)].solid != solid) return false;
+  int second = -1;  // another whole solid
+  for (int k : occluders) {
+    const int other = prepared_[static_cast<std::size_t>(k)].solid;
+    if (other == solid || other == second) continue;
+    if (other < 0 || second >= 0) return false;
+    second = other;
+  }
+  auto isWhole = [&](int s) { return s >= 0 && shapes_ && whole_[static_cast<std::size_t>(s)] == 1; };
+  if (second >= 0 && !(isWhole(solid) && isWhole(second))) return false;
   const SourceRegion region(source, sourceNormal_, eps_);
   const double tiny = 1e-24 * (eps_ * 1e10) * (eps_ * 1e10);  // a cross product of no direction
   // Receiver corner r behind occluder edge ab (EV), and occluder corner v in front of receiver edge r1 r2
@@ -135,10 +142,11 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
     if (region.crossedBy(origin, normal)) out.push_back({origin, normal});
   };
 
-  if (solid >= 0 && shapes_ && whole_[static_cast<std::size_t>(solid)] == 1) {
-    // A whole solid: its edges that are on the silhouette from some point of the source (their two faces
-    // not both seen from the front, nor both from behind, from all of it), and their corners.
-    const SolidShape& shape = (*shapes_)[static_cast<std::size_t>(solid)];
+  // A whole solid: its edges that are on the silhouette from some point of the source (their two faces not
+  // both seen from the front, nor both from behind, from all of it), and their corners. Those edges and
+  // corners are marked in `edgeUsed` and `cornerUsed` for the events between two solids.
+  using Marks = std::array<bool, 64>;
+  auto solidEvents = [&](const SolidShape& shape, Marks& edgeUsed, Marks& cornerUsed) {
     std::array<signed char, 64> facing{};  // per face: 1 all front, -1 all behind, 0 mixed or edge-on
     const std::size_t faces = std::min<std::size_t>(shape.planes.size(), facing.size());
     for (std::size_t f = 0; f < faces; ++f) {
@@ -152,11 +160,12 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
       facing[f] = front ? 1 : behind ? -1 : 0;
       if (!front && !behind) faceEvent(n * offset, n);
     }
-    std::array<bool, 64> cornerUsed{};
-    for (const SolidShape::Edge& edge : shape.edges) {
+    for (std::size_t e = 0; e < shape.edges.size() && e < edgeUsed.size(); ++e) {
+      const SolidShape::Edge& edge = shape.edges[e];
       const signed char l = static_cast<std::size_t>(edge.left) < faces ? facing[edge.left] : 0,
                         r = static_cast<std::size_t>(edge.right) < faces ? facing[edge.right] : 0;
       if (l != 0 && l == r) continue;
+      edgeUsed[e] = true;
       edgeEvents(shape.corners[static_cast<std::size_t>(edge.a)],
                  shape.corners[static_cast<std::size_t>(edge.b)]);
       for (int c : {edge.a, edge.b})
@@ -164,6 +173,33 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
     }
     for (std::size_t c = 0; c < shape.corners.size() && c < cornerUsed.size(); ++c)
       if (cornerUsed[c]) cornerEvents(shape.corners[c]);
+  };
+  if (isWhole(solid) && second < 0) {
+    Marks edges{}, corners{};
+    solidEvents((*shapes_)[static_cast<std::size_t>(solid)], edges, corners);
+    return true;
+  }
+  if (second >= 0) {
+    // Two whole solids: each one's events, and where the shadow of a silhouette corner of one crosses the
+    // shadow of a silhouette edge of the other (x in the plane of that corner and edge). What is left, the
+    // crossing of two shadow edges sliding over a receiver edge, is not a plane (visibility_events.h).
+    const std::array<const SolidShape*, 2> shapes = {&(*shapes_)[static_cast<std::size_t>(solid)],
+                                                     &(*shapes_)[static_cast<std::size_t>(second)]};
+    std::array<Marks, 2> edges{}, corners{};
+    for (std::size_t s = 0; s < 2; ++s) solidEvents(*shapes[s], edges[s], corners[s]);
+    for (std::size_t s = 0; s < 2; ++s) {
+      const SolidShape &one = *shapes[s], &other = *shapes[1 - s];
+      for (std::size_t c = 0; c < one.corners.size() && c < corners[s].size(); ++c) {
+        if (!corners[s][c]) continue;
+        const Vec3& v = one.corners[c];
+        for (std::size_t e = 0; e < other.edges.size() && e < edges[1 - s].size(); ++e) {
+          if (!edges[1 - s][e]) continue;
+          const Vec3 n = (other.corners[static_cast<std::size_t>(other.edges[e].a)] - v)
+                             .cross(other.corners[static_cast<std::size_t>(other.edges[e].b)] - v);
+          if (n.squaredNorm() > tiny * tiny && region.crossedBy(v, n)) out.push_back({v, n});
+        }
+      }
+    }
     return true;
   }
   // A polygon, or a solid cut by the source's or the receiver's plane (its clipped faces): every edge and

@@ -10,8 +10,15 @@
 // Each is a plane, so each meets the source's plane in a line. Cut along those lines, the source falls into
 // cells in each of which the hidden form factor is analytic (a fixed formula in x), so Gauss rules converge
 // fast there, and whether anything or everything is hidden is the same throughout a cell. This holds for
-// one convex solid or one polygon: two occluders add events where their shadows' edges cross a receiver's
-// edge (three edges, a quadric), which no line cut captures; such pairs are left to the adaptive rules.
+// one convex solid or one polygon.
+//
+// Two whole convex solids add two kinds of event: the shadow of one's corner crosses the shadow of the
+// other's edge (x in the plane of that corner and edge: cut along it too), and the crossing of two shadow
+// edges slides over a receiver's edge (three edges: a quadric, which no line cut follows). Across the
+// quadric the hidden part changes smoothly (a corner of it appears or goes, as across the other events) but
+// a gap can open between the two shadows: the centre of a cell may see the receiver wholly hidden and its
+// edge not. HiddenIntegral::overCells() therefore takes such a cell as wholly hidden only where one solid is
+// proven to hide the receiver from all of it, and rates it like any other otherwise.
 //
 // Only the part of a line the event can happen on is kept (the shadow of edge ab falls on r from the
 // central projection of ab from r onto the source's plane), and a solid's edges only where they can be on
