@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <vector>
 
 #include "core/formfactor/formfactor_method.h"
@@ -71,6 +72,18 @@ std::vector<Polygon> withCornellBlocks(std::vector<Polygon> polygons) {
   return polygons;
 }
 
+// The exact value of F(0 -> 1) in `mesh` (to `digits`), and the quadrature method within each tolerance of
+// it.
+void expectEachToleranceMet(const Mesh& mesh, double expected, double digits,
+                            std::initializer_list<double> tolerances) {
+  const double exact = elementFormFactor(mesh, 0, 1, exactOptionsFor(1e-9)).value;
+  EXPECT_NEAR(exact, expected, digits);
+  for (double tolerance : tolerances) {
+    const FormFactorMatrix F = quadrature(mesh, tolerance);
+    EXPECT_LE(std::abs(F(0, 1) - exact), tolerance) << tolerance;
+  }
+}
+
 // Two blocks whose shadows overlap, seen along a grazing line: an element of the back wall just above the
 // short block's top and one of the front wall (the 612-wall grid room's elements 253 and 343, with the
 // blocks), where the guarded rules' estimates agreed by chance after one split and the entry settled 4.6e-6
@@ -80,12 +93,7 @@ TEST(QuadratureAgainstExact, TwoBlocksSeenAlongAGrazingLine) {
   const Mesh mesh = test::meshFromPolygons(withCornellBlocks(
       {{{278, 219.52, 559.2}, {333.6, 219.52, 559.2}, {333.6, 164.64, 559.2}, {278, 164.64, 559.2}},
        {{222.4, 164.64, 0}, {278, 164.64, 0}, {278, 219.52, 0}, {222.4, 219.52, 0}}}));
-  const double exact = elementFormFactor(mesh, 0, 1, exactOptionsFor(1e-9)).value;
-  EXPECT_NEAR(exact, 3.4177099e-4, 1e-10);
-  for (double tolerance : {1e-6, 1e-7}) {
-    const FormFactorMatrix F = quadrature(mesh, tolerance);
-    EXPECT_LE(std::abs(F(0, 1) - exact), tolerance) << tolerance;
-  }
+  expectEachToleranceMet(mesh, 3.4177099e-4, 1e-10, {1e-6, 1e-7});
 }
 
 // Seen through a gap between the two blocks' shadows: a floor element beside the tall block and an element
@@ -98,12 +106,7 @@ TEST(QuadratureAgainstExact, SeenThroughAGapBetweenTwoShadows) {
   const Mesh mesh = test::meshFromPolygons(
       withCornellBlocks({{{250.2, 0, 419.4}, {278, 0, 419.4}, {278, 0, 391.44}, {250.2, 0, 391.44}},
                          {{250.2, 274.4, 0}, {278, 274.4, 0}, {278, 301.84, 0}, {250.2, 301.84, 0}}}));
-  const double exact = elementFormFactor(mesh, 0, 1, exactOptionsFor(1e-9)).value;
-  EXPECT_NEAR(exact, 1.407617e-6, 1e-11);
-  for (double tolerance : {1e-5, 1e-6, 1e-7}) {
-    const FormFactorMatrix F = quadrature(mesh, tolerance);
-    EXPECT_LE(std::abs(F(0, 1) - exact), tolerance) << tolerance;
-  }
+  expectEachToleranceMet(mesh, 1.407617e-6, 1e-11, {1e-5, 1e-6, 1e-7});
 }
 
 // Where the shadow of one block's corner crosses the shadow of the other's edge: a floor element in front of
@@ -114,12 +117,7 @@ TEST(QuadratureAgainstExact, OneBlocksCornerPassingTheOthersEdge) {
   const Mesh mesh = test::meshFromPolygons(withCornellBlocks(
       {{{278, 0, 55.92}, {305.8, 0, 55.92}, {305.8, 0, 27.96}, {278, 0, 27.96}},
        {{222.4, 329.28, 559.2}, {250.2, 329.28, 559.2}, {250.2, 301.84, 559.2}, {222.4, 301.84, 559.2}}}));
-  const double exact = elementFormFactor(mesh, 0, 1, exactOptionsFor(1e-9)).value;
-  EXPECT_NEAR(exact, 5.920081e-6, 1e-11);
-  for (double tolerance : {1e-5, 1e-6, 1e-7}) {
-    const FormFactorMatrix F = quadrature(mesh, tolerance);
-    EXPECT_LE(std::abs(F(0, 1) - exact), tolerance) << tolerance;
-  }
+  expectEachToleranceMet(mesh, 5.920081e-6, 1e-11, {1e-5, 1e-6, 1e-7});
 }
 
 }  // namespace
