@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "core/event_scenes.h"
@@ -118,6 +120,73 @@ TEST(VisibilityEventPlanes, OnePolygonHasThemTwoOccludersDoNot) {
   ASSERT_EQ(two.occluders().size(), 2u);
   std::vector<EventPlane> planes;
   EXPECT_FALSE(two.eventPlanes(kSource, two.occluders(), planes));
+}
+
+// Two whole blocks: each one's planes, and those through a silhouette corner of one and a silhouette edge of
+// the other (where the shadow of the corner crosses the shadow of the edge).
+TEST(VisibilityEventPlanes, TwoWholeBlocksHaveEachOnesAndTheCornerEdgePlanesBetweenThem) {
+  const Box low = box({0.3, -1, 1.2}, {0.9, 0.45, 1.4}), high = box({0.1, 0.55, 1.8}, {0.7, 2, 2.0});
+  const std::vector<SolidPlanes> solids{low.planes, high.planes};
+  const std::vector<Vec3> centres{low.centre, high.centre};
+  const std::vector<SolidShape> shapes{low.shapes[0], high.shapes[0]};
+  std::vector<OccluderPolygon> occluders = low.occluders();
+  for (OccluderPolygon o : high.occluders()) occluders.push_back({o.polygon, 1});
+  const ShadowClipper both(kSource, kUp, kReceiver, kDown, occluders, solids, &centres, &shapes);
+  ASSERT_EQ(both.occluders().size(), 12u);  // none culled: the scene is made so that both shade
+  std::vector<EventPlane> planes;
+  ASSERT_TRUE(both.eventPlanes(kSource, both.occluders(), planes));
+  // Each block's own planes, as the clipper finds them for it alone, are among them.
+  std::size_t own = 0;
+  for (int solid : {0, 1}) {
+    std::vector<int> ofOne;
+    for (int k : both.occluders())
+      if (both.solidOf(k) == solid) ofOne.push_back(k);
+    std::vector<EventPlane> alone;
+    ASSERT_TRUE(both.eventPlanes(kSource, ofOne, alone));
+    own += alone.size();
+    for (const EventPlane& plane : alone) {
+      bool found = false;
+      for (const EventPlane& p : planes)
+        found |= (p.origin - plane.origin).norm() < 1e-12 && p.normal.cross(plane.normal).norm() < 1e-12;
+      EXPECT_TRUE(found) << "a plane of block " << solid;
+    }
+  }
+  // The rest pass through a corner of one block and an edge of the other.
+  ASSERT_GT(planes.size(), own);
+  const std::array<const Box*, 2> boxes{&low, &high};
+  for (std::size_t k = own; k < planes.size(); ++k) {
+    bool throughCornerAndEdge = false;
+    for (std::size_t s = 0; s < 2; ++s)
+      for (const Vec3& corner : boxes[s]->shapes[0].corners)
+        for (const SolidShape::Edge& edge : boxes[1 - s]->shapes[0].edges) {
+          const Vec3 &a = boxes[1 - s]->shapes[0].corners[static_cast<std::size_t>(edge.a)],
+                     &b = boxes[1 - s]->shapes[0].corners[static_cast<std::size_t>(edge.b)];
+          const Vec3 n = planes[k].normal.normalized();
+          throughCornerAndEdge |= std::abs(n.dot(corner - planes[k].origin)) < 1e-12 &&
+                                  std::abs(n.dot(a - planes[k].origin)) < 1e-12 &&
+                                  std::abs(n.dot(b - planes[k].origin)) < 1e-12;
+        }
+    EXPECT_TRUE(throughCornerAndEdge) << k;
+  }
+}
+
+// An event that happens on part of its line only cuts the cells that part meets.
+TEST(VisibilityEventPlanes, ACellTheEventsSegmentMissesIsNotCut) {
+  const EventPlane across{{0.5, 0, 0}, {1, 0, 0}};  // the line x = 0.5, all of it
+  EventPlane low = across, high = across;
+  low.from = {0.5, 0.1, 0}, low.to = {0.5, 0.3, 0}, low.bounded = true;  // on the half y < 0.5 only
+  high.from = {0.5, 0.7, 0}, high.to = {0.5, 0.9, 0}, high.bounded = true;
+  const EventPlane half{{0, 0.5, 0}, {0, 1, 0}};  // first the square into y < 0.5 and y > 0.5
+  for (const auto& [second, expected] : {std::pair{across, 4u}, {low, 3u}, {high, 3u}}) {
+    std::vector<SmallPolygon> cells;
+    ASSERT_TRUE(cutAlongEvents(kPanel, {half, second}, 1e-12, 64, cells));
+    EXPECT_EQ(cells.size(), expected);
+  }
+  EventPlane beyond = across;  // a segment beyond the square: no cut at all
+  beyond.from = {0.5, 1.5, 0}, beyond.to = {0.5, 2, 0}, beyond.bounded = true;
+  std::vector<SmallPolygon> cells;
+  ASSERT_TRUE(cutAlongEvents(kPanel, {beyond}, 1e-12, 64, cells));
+  EXPECT_EQ(cells.size(), 1u);
 }
 
 TEST(VisibilityEventPlanes, CellsBeyondTheBoundAreRefused) {

@@ -67,14 +67,17 @@ class SourceRegion {
   // source's plane (the points x from which c lies in line behind a point of ab), given the three heights.
   // Lines from which c cannot be behind ab (ab no nearer the plane than c) are dropped before this; where
   // only part of ab is nearer, the projection is unbounded and the whole line is tested.
+  // A bounded segment is kept in `plane`, so that cells it misses are not cut along it.
   bool matters(const Vec3& c, double hc, const Vec3& a, double ha, const Vec3& b, double hb,
-               const Vec3& planeNormal) const {
+               EventPlane& plane) const {
     // The line must cross the source at all: four products, where the segment's test takes divisions, and
     // most event planes pass clear of a small source.
-    if (!crossedBy(c, planeNormal)) return false;
+    if (!crossedBy(c, plane.normal)) return false;
     if (ha < -eps_ || hb < -eps_ || ha >= hc - eps_ || hb >= hc - eps_) return true;
-    const Vec3 pa = c + (a - c) * (hc / (hc - ha)), pb = c + (b - c) * (hc / (hc - hb));
-    return meetsSegment(pa, pb);
+    plane.from = c + (a - c) * (hc / (hc - ha));
+    plane.to = c + (b - c) * (hc / (hc - hb));
+    plane.bounded = true;
+    return meetsSegment(plane.from, plane.to);
   }
 
  private:
@@ -83,6 +86,30 @@ class SourceRegion {
   double eps_;
   std::array<Vec3, SmallPolygon::kCapacity> inward_;
 };
+
+// Whether the segment pq of the cell's plane comes within `eps` of the convex cell (`normal` the plane's).
+bool segmentMeetsCell(const SmallPolygon& cell, const Vec3& normal, const Vec3& p, const Vec3& q,
+                      double eps) {
+  const Vec3 centre = centreOf(cell), d = q - p;
+  double t0 = 0, t1 = 1;
+  for (int k = 0; k < cell.count; ++k) {
+    const Vec3& a = cell.v[static_cast<std::size_t>(k)];
+    Vec3 inward = normal.cross(cell.v[static_cast<std::size_t>((k + 1) % cell.count)] - a);
+    if (inward.dot(centre - a) < 0) inward = -inward;
+    const double start = inward.dot(p - a) + eps * inward.norm(), rate = inward.dot(d);
+    if (std::abs(rate) <= 1e-300) {
+      if (start < 0) return false;
+      continue;
+    }
+    const double t = -start / rate;
+    if (rate > 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -115,8 +142,9 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
       const double hr = receiverHeight[static_cast<std::size_t>(k)];
       if (ha >= hr - eps_ && hb >= hr - eps_) continue;  // ab no nearer the source than r: never in front
       const Vec3& r = receiver_.v[static_cast<std::size_t>(k)];
-      const Vec3 n = (a - r).cross(b - r);
-      if (n.squaredNorm() > tiny * tiny && region.matters(r, hr, a, ha, b, hb, n)) out.push_back({r, n});
+      EventPlane plane{r, (a - r).cross(b - r)};
+      if (plane.normal.squaredNorm() > tiny * tiny && region.matters(r, hr, a, ha, b, hb, plane))
+        out.push_back(plane);
     }
   };
   auto cornerEvents = [&](const Vec3& v) {
@@ -128,14 +156,17 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
       if (h1 <= hv + eps_ && h2 <= hv + eps_) continue;
       const Vec3 &r1 = receiver_.v[static_cast<std::size_t>(k)],
                  &r2 = receiver_.v[static_cast<std::size_t>(next)];
-      const Vec3 n = (r1 - v).cross(r2 - v);
-      if (n.squaredNorm() <= tiny * tiny) continue;
+      EventPlane plane{v, (r1 - v).cross(r2 - v)};
+      if (plane.normal.squaredNorm() <= tiny * tiny || !region.crossedBy(v, plane.normal)) continue;
       // From x, v hides a point p of r1 r2: x = p + (v - p) t, so x is p's projection through v, and the
       // segment of them is the projection of r1 r2 from each end's point through v.
-      const bool keep = region.crossedBy(v, n) && (hv < -eps_ || h1 <= hv + eps_ || h2 <= hv + eps_ ||
-                                                   region.meetsSegment(r1 + (v - r1) * (h1 / (h1 - hv)),
-                                                                       r2 + (v - r2) * (h2 / (h2 - hv))));
-      if (keep) out.push_back({v, n});
+      if (!(hv < -eps_ || h1 <= hv + eps_ || h2 <= hv + eps_)) {
+        plane.from = r1 + (v - r1) * (h1 / (h1 - hv));
+        plane.to = r2 + (v - r2) * (h2 / (h2 - hv));
+        plane.bounded = true;
+        if (!region.meetsSegment(plane.from, plane.to)) continue;
+      }
+      out.push_back(plane);
     }
   };
   auto faceEvent = [&](const Vec3& origin, const Vec3& normal) {
@@ -224,12 +255,18 @@ bool cutAlongEvents(const SourcePanel& panel, const std::vector<EventPlane>& pla
   whole.count = panel.count;
   std::copy_n(panel.v.begin(), panel.count, whole.v.begin());
   SmallPolygon front, back;
+  Vec3 normal = Vec3::Zero();  // the source's, for the cells' edges
+  for (int k = 0; k < panel.count; ++k)
+    normal +=
+        panel.v[static_cast<std::size_t>(k)].cross(panel.v[static_cast<std::size_t>((k + 1) % panel.count)]);
   for (const EventPlane& plane : planes) {
     const double margin2 = eps * eps * plane.normal.squaredNorm();
     const std::size_t end = cells.size();
     for (std::size_t c = first; c < end; ++c) {
       if (splitAt(cells[c], plane.origin, plane.normal, margin2, front, &back) != 0) continue;
       if (front.count < 3 || back.count < 3) continue;  // a sliver below the margin: not worth a cell
+      // The event happens on part of the line only: a cell that part misses keeps its form across the line.
+      if (plane.bounded && !segmentMeetsCell(cells[c], normal, plane.from, plane.to, eps)) continue;
       if (static_cast<int>(cells.size() - first) >= maxCells) {
         cells.resize(first);
         return false;

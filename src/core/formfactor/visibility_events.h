@@ -35,6 +35,10 @@ namespace rt {
 // A plane that cuts the source's plane along an event line.
 struct EventPlane {
   Vec3 origin, normal;  // normal not unit
+  // Where the event happens on the source's plane, when that is a segment of the line (`bounded`): cells it
+  // misses are not cut along the line.
+  Vec3 from = Vec3::Zero(), to = Vec3::Zero();
+  bool bounded = false;
 };
 
 // Cuts `panel` along `planes` (ShadowClipper::eventPlanes()) into convex cells, appended to `cells`;
