@@ -88,15 +88,16 @@ class SourceRegion {
 };
 
 // Whether the segment pq of the cell's plane comes within `eps` of the convex cell (`normal` the plane's).
+// `normal` is one the cell turns counter-clockwise about, so that normal x edge points inward, and `margin`
+// bounds eps times the length of any such product (|normal| times the cell's longest edge).
 bool segmentMeetsCell(const SmallPolygon& cell, const Vec3& normal, const Vec3& p, const Vec3& q,
-                      double eps) {
-  const Vec3 centre = centreOf(cell), d = q - p;
+                      double margin) {
+  const Vec3 d = q - p;
   double t0 = 0, t1 = 1;
   for (int k = 0; k < cell.count; ++k) {
     const Vec3& a = cell.v[static_cast<std::size_t>(k)];
-    Vec3 inward = normal.cross(cell.v[static_cast<std::size_t>((k + 1) % cell.count)] - a);
-    if (inward.dot(centre - a) < 0) inward = -inward;
-    const double start = inward.dot(p - a) + eps * inward.norm(), rate = inward.dot(d);
+    const Vec3 inward = normal.cross(cell.v[static_cast<std::size_t>((k + 1) % cell.count)] - a);
+    const double start = inward.dot(p - a) + margin, rate = inward.dot(d);
     if (std::abs(rate) <= 1e-300) {
       if (start < 0) return false;
       continue;
@@ -223,11 +224,23 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
       for (std::size_t c = 0; c < one.corners.size() && c < corners[s].size(); ++c) {
         if (!corners[s][c]) continue;
         const Vec3& v = one.corners[c];
+        const double hv = region.height(v);
         for (std::size_t e = 0; e < other.edges.size() && e < edges[1 - s].size(); ++e) {
           if (!edges[1 - s][e]) continue;
-          const Vec3 n = (other.corners[static_cast<std::size_t>(other.edges[e].a)] - v)
-                             .cross(other.corners[static_cast<std::size_t>(other.edges[e].b)] - v);
-          if (n.squaredNorm() > tiny * tiny && region.crossedBy(v, n)) out.push_back({v, n});
+          const Vec3 &a = other.corners[static_cast<std::size_t>(other.edges[e].a)],
+                     &b = other.corners[static_cast<std::size_t>(other.edges[e].b)];
+          EventPlane plane{v, (a - v).cross(b - v)};
+          if (plane.normal.squaredNorm() <= tiny * tiny || !region.crossedBy(v, plane.normal)) continue;
+          // x lines up with v and a point p of ab at x = v + (p - v) hv / (hv - hp): a segment of the line
+          // where ab lies wholly nearer the source's plane than v or wholly farther.
+          const double ha = region.height(a), hb = region.height(b);
+          if ((ha < hv - eps_ && hb < hv - eps_) || (ha > hv + eps_ && hb > hv + eps_)) {
+            plane.from = v + (a - v) * (hv / (hv - ha));
+            plane.to = v + (b - v) * (hv / (hv - hb));
+            plane.bounded = true;
+            if (!region.meetsSegment(plane.from, plane.to)) continue;
+          }
+          out.push_back(plane);
         }
       }
     }
@@ -255,10 +268,13 @@ bool cutAlongEvents(const SourcePanel& panel, const std::vector<EventPlane>& pla
   whole.count = panel.count;
   std::copy_n(panel.v.begin(), panel.count, whole.v.begin());
   SmallPolygon front, back;
-  Vec3 normal = Vec3::Zero();  // the source's, for the cells' edges
+  // The panel's own normal: it and every cell cut from it turn counter-clockwise about it. Any cell's edge is
+  // no longer than twice the panel's longest.
+  Vec3 normal = Vec3::Zero();
   for (int k = 0; k < panel.count; ++k)
     normal +=
         panel.v[static_cast<std::size_t>(k)].cross(panel.v[static_cast<std::size_t>((k + 1) % panel.count)]);
+  const double margin = eps * normal.norm() * 2 * panel.longestEdge();
   for (const EventPlane& plane : planes) {
     const double margin2 = eps * eps * plane.normal.squaredNorm();
     const std::size_t end = cells.size();
@@ -266,7 +282,7 @@ bool cutAlongEvents(const SourcePanel& panel, const std::vector<EventPlane>& pla
       if (splitAt(cells[c], plane.origin, plane.normal, margin2, front, &back) != 0) continue;
       if (front.count < 3 || back.count < 3) continue;  // a sliver below the margin: not worth a cell
       // The event happens on part of the line only: a cell that part misses keeps its form across the line.
-      if (plane.bounded && !segmentMeetsCell(cells[c], normal, plane.from, plane.to, eps)) continue;
+      if (plane.bounded && !segmentMeetsCell(cells[c], normal, plane.from, plane.to, margin)) continue;
       if (static_cast<int>(cells.size() - first) >= maxCells) {
         cells.resize(first);
         return false;
