@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 namespace rt {
 namespace {
@@ -88,8 +89,11 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
   std::vector<Smooth> heap;
   double done = 0;
   std::size_t formCount = 0;
-  bool twoSolids = false;
-  for (int k : occluders) twoSolids |= clipper_.solidOf(k) != clipper_.solidOf(occluders.front());
+  // Two whole solids: each one's faces, for its own form at a cell's centre.
+  std::array<std::vector<int>, 2> own;
+  for (int k : occluders)
+    own[clipper_.solidOf(k) == clipper_.solidOf(occluders.front()) ? 0 : 1].push_back(k);
+  const bool twoSolids = !own[1].empty();
   for (int c = 0; c < count; ++c) {
     // Not culled: the centre tells as well whether anything is hidden there, for about the cost of the test.
     // Its form, where there is one, tells it without Lambert's sum, and places the cell's other points.
@@ -97,9 +101,18 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
     bool wholly = false;
     double centre = 0;
     const Vec3 x = cells[c].centre();
-    if (forms_.size() <= formCount) forms_.resize(formCount + 1);
+    if (forms_.size() < formCount + 2) forms_.resize(formCount + 2);
+    const int alone = twoSolids ? oneSolidAlone(x, own, formCount, wholly) : -1;
     ShadowClipper::HiddenForm& form = forms_[formCount];
-    if (clipper_.formOf(x, occluders, form)) {
+    if (twoSolids && alone == kNoneHides) {
+      ++work_.points;
+      continue;
+    } else if (twoSolids && (wholly || alone >= 0)) {
+      if (alone >= 0) {
+        cell.form = static_cast<int>(formCount++);
+        centre = hiddenIn(x, cell.form, occluders);
+      }
+    } else if (!twoSolids && clipper_.formOf(x, occluders, form)) {
       wholly = form.wholly;
       if (!wholly && form.count >= 3) {
         cell.form = static_cast<int>(formCount++);
@@ -107,14 +120,15 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
       }
     } else {
       centre = clipper_.hidden(x, occluders, &wholly);
+      // Both solids' shadows on the receiver: between them a gap can open inside a cell
+      // (visibility_events.h), so a cell they hide all of it from at the centre is taken as wholly hidden
+      // only where one of them is proven to hide it from the whole cell; otherwise it is rated like any
+      // other.
+      if (wholly && twoSolids && !clipper_.hidesAll(cells[c].v.data(), cells[c].count, occluders))
+        wholly = false;
     }
     ++work_.points;
     ++work_.clipped;
-    // Between two solids a gap can open on the receiver inside a cell (visibility_events.h): a cell they
-    // hide all of it from at the centre is taken as wholly hidden only where one of them is proven to hide
-    // it from the whole cell; otherwise it is rated like any other.
-    if (wholly && twoSolids && !clipper_.hidesAll(cells[c].v.data(), cells[c].count, occluders))
-      wholly = false;
     if (wholly) {
       done += unoccluded_(cells[c], pointTolerance());
       continue;
@@ -149,6 +163,24 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
            }
            return 0.0;
          });
+}
+
+int HiddenIntegral::oneSolidAlone(const Vec3& x, const std::array<std::vector<int>, 2>& own, std::size_t slot,
+                                  bool& wholly) {
+  std::array<bool, 2> none{};
+  for (std::size_t s = 0; s < 2; ++s) {
+    ShadowClipper::HiddenForm& form = forms_[slot + s];
+    if (!clipper_.formOf(x, own[s], form)) return kBothHide;
+    if (form.wholly) {
+      wholly = true;
+      return kBothHide;
+    }
+    none[s] = form.count < 3;
+  }
+  if (none[0] && none[1]) return kNoneHides;
+  if (none[0] == none[1]) return kBothHide;
+  if (none[0]) std::swap(forms_[slot], forms_[slot + 1]);
+  return none[0] ? 1 : 0;
 }
 
 void HiddenIntegral::rate(Smooth& cell, const std::vector<int>& occluders) {
