@@ -100,14 +100,18 @@ double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound,
   return sum;
 }
 
-// Convex polygons as panels (panelsOf()), appended to `out`.
+// A convex polygon as panels (panelsOf()), appended to `out`. (Through a fan of its own: resizing `out` to
+// the most panels a polygon makes would zero them all, 3 kB for every pair.)
+void appendPanels(const SmallPolygon& polygon, std::vector<SourcePanel>& out) {
+  std::array<SourcePanel, SmallPolygon::kCapacity> fan;
+  const int made = panelsOf(polygon.v.data(), polygon.count, fan.data(), SmallPolygon::kCapacity);
+  out.insert(out.end(), fan.begin(), fan.begin() + made);
+}
+
+// Convex polygons as panels, into `out`.
 void appendPanels(const std::vector<SmallPolygon>& polygons, std::vector<SourcePanel>& out) {
   out.clear();
-  for (const SmallPolygon& polygon : polygons) {
-    std::array<SourcePanel, SmallPolygon::kCapacity> fan;
-    const int made = panelsOf(polygon.v.data(), polygon.count, fan.data(), SmallPolygon::kCapacity);
-    out.insert(out.end(), fan.begin(), fan.begin() + made);
-  }
+  for (const SmallPolygon& polygon : polygons) appendPanels(polygon, out);
 }
 
 }  // namespace
@@ -288,9 +292,8 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
       receiverWhole ? scene_.measures[static_cast<std::size_t>(j)].bound : boundOf(receiver, nj);
   const std::vector<int>& reached = scene_.elementSolids[static_cast<std::size_t>(i)];
   if (reached.empty()) {
-    panels_.resize(SmallPolygon::kCapacity);
-    panels_.resize(static_cast<std::size_t>(
-        panelsOf(source.v.data(), source.count, panels_.data(), SmallPolygon::kCapacity)));
+    panels_.clear();
+    appendPanels(source, panels_);
   } else {
     pieces_.assign(1, source);
     for (int s : reached) {
