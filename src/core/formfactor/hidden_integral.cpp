@@ -90,10 +90,12 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
   double done = 0;
   std::size_t formCount = 0;
   // Two whole solids: each one's faces, for its own form at a cell's centre.
+  bool twoSolids = false;
+  for (int k : occluders) twoSolids |= clipper_.solidOf(k) != clipper_.solidOf(occluders.front());
   std::array<std::vector<int>, 2> own;
-  for (int k : occluders)
-    own[clipper_.solidOf(k) == clipper_.solidOf(occluders.front()) ? 0 : 1].push_back(k);
-  const bool twoSolids = !own[1].empty();
+  if (twoSolids)
+    for (int k : occluders)
+      own[clipper_.solidOf(k) == clipper_.solidOf(occluders.front()) ? 0 : 1].push_back(k);
   for (int c = 0; c < count; ++c) {
     // Not culled: the centre tells as well whether anything is hidden there, for about the cost of the test.
     // Its form, where there is one, tells it without Lambert's sum, and places the cell's other points.

@@ -39,6 +39,9 @@ bool PenumbraRegion::build(const Vec3* corners, int cornerCount, const Vec3* rec
   const int hullCount = convexHull2d(points.data(), n, hull_.data());
   if (hullCount < 3) return false;  // fewer than three corners: a degenerate region, left to the hull test
   count_ = hullCount;
+  for (int k = 0; k < count_; ++k)
+    margin_[static_cast<std::size_t>(k)] =
+        eps * (hull_[static_cast<std::size_t>((k + 1) % count_)] - hull_[static_cast<std::size_t>(k)]).norm();
   return true;
 }
 
@@ -73,9 +76,8 @@ bool PenumbraRegion::meets(const Vec3* polygon, int count) const {
   for (int k = 0; k < count; ++k) flat[k] = {u_.dot(polygon[k] - origin_), v_.dot(polygon[k] - origin_)};
   // Separating axes: the edges of either convex polygon.
   auto separates = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d* points,
-                       int n, double sign) {
+                       int n, double sign, double margin) {
     const Eigen::Vector2d edge = b - a;
-    const double margin = eps_ * edge.norm();
     for (int k = 0; k < n; ++k)
       if (sign * (edge.x() * (points[k] - a).y() - edge.y() * (points[k] - a).x()) >= -margin) return false;
     return true;
@@ -83,7 +85,7 @@ bool PenumbraRegion::meets(const Vec3* polygon, int count) const {
   const int m = count_;
   for (int k = 0; k < m; ++k)
     if (separates(hull_[static_cast<std::size_t>(k)], hull_[static_cast<std::size_t>((k + 1) % m)], flat,
-                  count, 1.0))
+                  count, 1.0, margin_[static_cast<std::size_t>(k)]))
       return false;
   // The polygon's orientation in the plane's frame decides which side of its edges is outside.
   double twice = 0;
@@ -91,7 +93,9 @@ bool PenumbraRegion::meets(const Vec3* polygon, int count) const {
     twice += flat[k].x() * flat[(k + 1) % count].y() - flat[(k + 1) % count].x() * flat[k].y();
   const double sign = twice >= 0 ? 1.0 : -1.0;
   for (int k = 0; k < count; ++k)
-    if (separates(flat[k], flat[(k + 1) % count], hull_.data(), m, sign)) return false;
+    if (separates(flat[k], flat[(k + 1) % count], hull_.data(), m, sign,
+                  eps_ * (flat[(k + 1) % count] - flat[k]).norm()))
+      return false;
   return true;
 }
 
