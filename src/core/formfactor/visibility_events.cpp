@@ -9,6 +9,7 @@
 namespace rt {
 
 using shadow_detail::centreOf;
+using shadow_detail::copyPolygon;
 using shadow_detail::splitAt;
 
 namespace {
@@ -287,8 +288,9 @@ bool cutAlongEvents(const SourcePanel& panel, const std::vector<EventPlane>& pla
         cells.resize(first);
         return false;
       }
-      cells[c] = front;
-      cells.push_back(back);
+      // (Corner by corner: a whole SmallPolygon is 800 bytes.)
+      copyPolygon(front, cells[c]);
+      copyPolygon(back, cells.emplace_back());
     }
   }
   return true;
