@@ -40,8 +40,10 @@ bool PenumbraRegion::build(const Vec3* corners, int cornerCount, const Vec3* rec
   if (hullCount < 3) return false;  // fewer than three corners: a degenerate region, left to the hull test
   count_ = hullCount;
   for (int k = 0; k < count_; ++k)
-    margin_[static_cast<std::size_t>(k)] =
-        eps * (hull_[static_cast<std::size_t>((k + 1) % count_)] - hull_[static_cast<std::size_t>(k)]).norm();
+    margin2_[static_cast<std::size_t>(k)] =
+        eps * eps *
+        (hull_[static_cast<std::size_t>((k + 1) % count_)] - hull_[static_cast<std::size_t>(k)])
+            .squaredNorm();
   return true;
 }
 
@@ -76,16 +78,19 @@ bool PenumbraRegion::meets(const Vec3* polygon, int count) const {
   for (int k = 0; k < count; ++k) flat[k] = {u_.dot(polygon[k] - origin_), v_.dot(polygon[k] - origin_)};
   // Separating axes: the edges of either convex polygon.
   auto separates = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d* points,
-                       int n, double sign, double margin) {
+                       int n, double sign, double margin2) {
     const Eigen::Vector2d edge = b - a;
-    for (int k = 0; k < n; ++k)
-      if (sign * (edge.x() * (points[k] - a).y() - edge.y() * (points[k] - a).x()) >= -margin) return false;
+    for (int k = 0; k < n; ++k) {
+      // Negative beyond the edge; separated only beyond eps |edge| (compared squared: no root per edge).
+      const double side = sign * (edge.x() * (points[k] - a).y() - edge.y() * (points[k] - a).x());
+      if (side >= 0 || side * side <= margin2) return false;
+    }
     return true;
   };
   const int m = count_;
   for (int k = 0; k < m; ++k)
     if (separates(hull_[static_cast<std::size_t>(k)], hull_[static_cast<std::size_t>((k + 1) % m)], flat,
-                  count, 1.0, margin_[static_cast<std::size_t>(k)]))
+                  count, 1.0, margin2_[static_cast<std::size_t>(k)]))
       return false;
   // The polygon's orientation in the plane's frame decides which side of its edges is outside.
   double twice = 0;
@@ -94,7 +99,7 @@ bool PenumbraRegion::meets(const Vec3* polygon, int count) const {
   const double sign = twice >= 0 ? 1.0 : -1.0;
   for (int k = 0; k < count; ++k)
     if (separates(flat[k], flat[(k + 1) % count], hull_.data(), m, sign,
-                  eps_ * (flat[(k + 1) % count] - flat[k]).norm()))
+                  eps_ * eps_ * (flat[(k + 1) % count] - flat[k]).squaredNorm()))
       return false;
   return true;
 }

@@ -43,7 +43,7 @@ class PenumbraRegion {
   // the heap would cost more than the hull.
   static constexpr int kMaxPoints = 64;
   std::array<Eigen::Vector2d, kMaxPoints> hull_;
-  std::array<double, kMaxPoints> margin_;  // eps times each hull edge's length, for meets()
+  std::array<double, kMaxPoints> margin2_;  // (eps times each hull edge's length) squared, for meets()
   int count_ = 0;
 };
 

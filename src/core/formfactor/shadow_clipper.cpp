@@ -18,13 +18,16 @@ using shadow_detail::splitAt;
 bool clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& normal, double eps,
                  SmallPolygon& out) {
   out.count = 0;
-  const double length = normal.norm();
-  if (count < 3 || !(length > 0)) return false;
+  const double length2 = normal.squaredNorm();
+  if (count < 3 || !(length2 > 0)) return false;
+  // Heights times the normal's length: within eps of the plane where d^2 <= eps^2 |normal|^2 (no root
+  // or division per corner; the cut points depend only on the heights' ratios).
+  const double margin2 = eps * eps * length2;
   double side[SmallPolygon::kCapacity];
   bool anyBehind = false, anyFront = false;
   for (int k = 0; k < count; ++k) {
-    double d = normal.dot(in[k] - origin) / length;
-    if (std::abs(d) <= eps) d = 0;
+    double d = normal.dot(in[k] - origin);
+    if (d * d <= margin2) d = 0;
     side[k] = d;
     anyBehind |= d < 0;
     anyFront |= d > 0;
