@@ -86,7 +86,10 @@ double HiddenIntegral::refine(std::vector<T>& heap, double tolerance, Split&& sp
 double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tolerance,
                                  const std::vector<int>& occluders) {
   tolerance_ = tolerance;
-  std::vector<Smooth> heap;
+  // The cells waiting to be split: kept from call to call on this thread (a vector made per pair cost as much
+  // as a cell's rule). overCells() does not nest.
+  thread_local std::vector<Smooth> heap;
+  heap.clear();
   double done = 0;
   std::size_t formCount = 0;
   // Two whole solids: each one's faces, for its own form at a cell's centre.

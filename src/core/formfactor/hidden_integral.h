@@ -4,7 +4,6 @@
 #pragma once
 
 #include <array>
-#include <functional>
 #include <vector>
 
 #include "core/formfactor/shadow_clipper.h"
@@ -31,14 +30,30 @@ class HiddenIntegral {
  public:
   // `unoccluded(panel, tolerance)`: int over the panel of F(dA_x -> receiver), for panels from which the
   // whole receiver is hidden (there the hidden part is all of it).
-  using Unoccluded = std::function<double(const SourcePanel&, double)>;
+  // A reference to the caller's callable, which outlives this object (a std::function of the caller's lambda
+  // allocated on the heap for every occluded pair).
+  class Unoccluded {
+   public:
+    template <class F>
+    Unoccluded(const F& f)  // implicit: a lambda converts as it did to std::function
+        : object_(&f), call_([](const void* o, const SourcePanel& p, double t) {
+            return (*static_cast<const F*>(o))(p, t);
+          }) {}
+    double operator()(const SourcePanel& panel, double tolerance) const {
+      return call_(object_, panel, tolerance);
+    }
+
+   private:
+    const void* object_;
+    double (*call_)(const void*, const SourcePanel&, double);
+  };
   // `sourceArea` turns the tolerance of the integral into one of F(dA -> receiver) at each point.
   // `forms`: scratch for overCells(), kept by the caller from pair to pair.
   HiddenIntegral(const ShadowClipper& clipper, int order, Unoccluded unoccluded, double sourceArea,
                  PairWork& work, std::vector<ShadowClipper::HiddenForm>& forms)
       : clipper_(clipper),
         order_(order),
-        unoccluded_(std::move(unoccluded)),
+        unoccluded_(unoccluded),
         sourceArea_(sourceArea),
         work_(work),
         forms_(forms) {}

@@ -18,16 +18,7 @@ namespace {
 class SourceRegion {
  public:
   SourceRegion(const SmallPolygon& source, const Vec3& normal, double eps)
-      : source_(source), normal_(normal), eps_(eps) {
-    const Vec3 centre = centreOf(source);
-    for (int k = 0; k < source.count; ++k) {
-      const Vec3& p = source.v[static_cast<std::size_t>(k)];
-      Vec3 inward = normal.cross(source.v[static_cast<std::size_t>((k + 1) % source.count)] - p);
-      if (inward.dot(centre - p) < 0) inward = -inward;
-      const double length = inward.norm();
-      inward_[static_cast<std::size_t>(k)] = length > 0 ? Vec3(inward / length) : Vec3::Zero();
-    }
-  }
+      : source_(source), normal_(normal), eps_(eps) {}
 
   double height(const Vec3& p) const { return normal_.dot(p - source_.v[0]); }
 
@@ -45,6 +36,7 @@ class SourceRegion {
 
   // The segment pq of the source's plane passes through the source's inside (by more than eps).
   bool meetsSegment(const Vec3& p, const Vec3& q) const {
+    if (!inwardMade_) makeInward();
     double t0 = 0, t1 = 1;
     const Vec3 d = q - p;
     for (int k = 0; k < source_.count; ++k) {
@@ -85,7 +77,20 @@ class SourceRegion {
   const SmallPolygon& source_;
   Vec3 normal_;
   double eps_;
-  std::array<Vec3, SmallPolygon::kCapacity> inward_;
+  // The edges' unit inward normals, made on the first segment's test (most pairs have none).
+  void makeInward() const {
+    const Vec3 centre = centreOf(source_);
+    for (int k = 0; k < source_.count; ++k) {
+      const Vec3& p = source_.v[static_cast<std::size_t>(k)];
+      Vec3 inward = normal_.cross(source_.v[static_cast<std::size_t>((k + 1) % source_.count)] - p);
+      if (inward.dot(centre - p) < 0) inward = -inward;
+      const double length = inward.norm();
+      inward_[static_cast<std::size_t>(k)] = length > 0 ? Vec3(inward / length) : Vec3::Zero();
+    }
+    inwardMade_ = true;
+  }
+  mutable std::array<Vec3, SmallPolygon::kCapacity> inward_;
+  mutable bool inwardMade_ = false;
 };
 
 // Whether the segment pq of the cell's plane comes within `eps` of the convex cell (`normal` the plane's).
