@@ -29,7 +29,8 @@ int sharedCorner(const SilhouetteEdge& e, const SilhouetteEdge& f) {
 
 }  // namespace
 
-bool ShadowClipper::formOf(const Vec3& x, const std::vector<int>& occluders, HiddenForm& form) const {
+bool ShadowClipper::formOf(const Vec3& x, const std::vector<int>& occluders, HiddenForm& form,
+                           double* hidden) const {
   using Form = HiddenForm;
   form.count = 0;
   form.wholly = false;
@@ -95,6 +96,11 @@ bool ShadowClipper::formOf(const Vec3& x, const std::vector<int>& occluders, Hid
   form.count = count;
   form.wholly = !cut;
   for (int k = 0; k < count; ++k) form.corners[static_cast<std::size_t>(k)] = in[k].tag;
+  if (hidden && cut) {  // the clipped outline itself, as hidden(x, form) would place it
+    std::array<Vec3, kCapacity> corners;
+    for (int k = 0; k < count; ++k) corners[static_cast<std::size_t>(k)] = in[k].p;
+    *hidden = std::max(0.0, lambertContourSum(x, sourceNormal_, corners.data(), count));
+  }
   return true;
 }
 

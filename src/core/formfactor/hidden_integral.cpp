@@ -107,22 +107,16 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
     double centre = 0;
     const Vec3 x = cells[c].centre();
     if (forms_.size() < formCount + 2) forms_.resize(formCount + 2);
-    const int alone = twoSolids ? oneSolidAlone(x, own, formCount, wholly) : -1;
+    const int alone = twoSolids ? oneSolidAlone(x, own, formCount, wholly, centre) : -1;
     ShadowClipper::HiddenForm& form = forms_[formCount];
     if (twoSolids && alone == kNoneHides) {
       ++work_.points;
       continue;
     } else if (twoSolids && (wholly || alone >= 0)) {
-      if (alone >= 0) {
-        cell.form = static_cast<int>(formCount++);
-        centre = hiddenIn(x, cell.form, occluders);
-      }
-    } else if (!twoSolids && clipper_.formOf(x, occluders, form)) {
+      if (alone >= 0) cell.form = static_cast<int>(formCount++);
+    } else if (!twoSolids && clipper_.formOf(x, occluders, form, &centre)) {
       wholly = form.wholly;
-      if (!wholly && form.count >= 3) {
-        cell.form = static_cast<int>(formCount++);
-        centre = hiddenIn(x, cell.form, occluders);
-      }
+      if (!wholly && form.count >= 3) cell.form = static_cast<int>(formCount++);
     } else {
       centre = clipper_.hidden(x, occluders, &wholly);
       // Both solids' shadows on the receiver: between them a gap can open inside a cell
@@ -171,11 +165,12 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
 }
 
 int HiddenIntegral::oneSolidAlone(const Vec3& x, const std::array<std::vector<int>, 2>& own, std::size_t slot,
-                                  bool& wholly) {
+                                  bool& wholly, double& hidden) {
   std::array<bool, 2> none{};
+  std::array<double, 2> value{};
   for (std::size_t s = 0; s < 2; ++s) {
     ShadowClipper::HiddenForm& form = forms_[slot + s];
-    if (!clipper_.formOf(x, own[s], form)) return kBothHide;
+    if (!clipper_.formOf(x, own[s], form, &value[s])) return kBothHide;
     if (form.wholly) {
       wholly = true;
       return kBothHide;
@@ -185,6 +180,7 @@ int HiddenIntegral::oneSolidAlone(const Vec3& x, const std::array<std::vector<in
   if (none[0] && none[1]) return kNoneHides;
   if (none[0] == none[1]) return kBothHide;
   if (none[0]) std::swap(forms_[slot], forms_[slot + 1]);
+  hidden = value[none[0] ? 1 : 0];
   return none[0] ? 1 : 0;
 }
 

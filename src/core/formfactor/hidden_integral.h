@@ -108,12 +108,12 @@ class HiddenIntegral {
   // For a cell between two whole solids (`own`: each one's faces), at its centre x: each solid's own form,
   // into forms_[slot] and forms_[slot + 1]. Cut along both solids' events, a cell keeps what each alone hides
   // (nothing, part or all of the receiver) throughout. Returns the solid that alone hides part of it while
-  // the other hides nothing (its form then in forms_[slot]), kNoneHides, or kBothHide; `wholly` is set where
-  // one of them alone hides all of it (also kBothHide), and kBothHide is returned as well where a form is not
-  // known (x on an event).
+  // the other hides nothing (its form then in forms_[slot], and what it hides from x in `hidden`),
+  // kNoneHides, or kBothHide; `wholly` is set where one of them alone hides all of it (also kBothHide), and
+  // kBothHide is returned as well where a form is not known (x on an event).
   static constexpr int kNoneHides = -2, kBothHide = -1;
-  int oneSolidAlone(const Vec3& x, const std::array<std::vector<int>, 2>& own, std::size_t slot,
-                    bool& wholly);
+  int oneSolidAlone(const Vec3& x, const std::array<std::vector<int>, 2>& own, std::size_t slot, bool& wholly,
+                    double& hidden);
   // From `value` holding the one-point rule: the 2 x 2 rule's value and the difference as its error.
   void rate(Smooth& cell, const std::vector<int>& occluders);
   // F(dA_x -> hidden part) at a point of a cell: from the cell's form where it has one that fits x.

@@ -157,7 +157,10 @@ class ShadowClipper {
   };
   // The form at x, for `occluders` that are faces of one solid wholly in front of both planes. False where
   // there is none to tell: other occluders, or x within eps of an event (a corner on a side plane).
-  bool formOf(const Vec3& x, const std::vector<int>& occluders, HiddenForm& form) const;
+  // `hidden`, where given, receives F(dA_x -> hidden part) from the clipped outline, where part of the
+  // receiver is hidden (the form then has three corners or more).
+  bool formOf(const Vec3& x, const std::vector<int>& occluders, HiddenForm& form,
+              double* hidden = nullptr) const;
   // F(dA_x -> hidden part) from a form found at another point of the same cell. False (`value` unset) where
   // the form does not fit x: a cut outside its receiver edge, or an outline that no longer turns one way.
   bool hidden(const Vec3& x, const HiddenForm& form, double& value) const;
