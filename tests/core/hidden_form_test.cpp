@@ -48,11 +48,15 @@ TEST_P(HiddenForm, PlacesTheClippedOutlineThroughoutEachCell) {
   for (const SmallPolygon& cell : s.cells) {
     const Vec3 centre = centreOf(cell);
     ShadowClipper::HiddenForm form;
-    ASSERT_TRUE(s.clipper.formOf(centre, s.clipper.occluders(), form));
+    double found = -1;  // what the clip that finds the form hides, where it hides part
+    ASSERT_TRUE(s.clipper.formOf(centre, s.clipper.occluders(), form, &found));
     bool wholly = false;
     const double clipped = s.clipper.hidden(centre, s.clipper.occluders(), &wholly);
     EXPECT_EQ(form.wholly, wholly);
     EXPECT_EQ(form.count >= 3, clipped > 0);
+    if (form.count >= 3 && !form.wholly) {
+      EXPECT_NEAR(found, clipped, 1e-14);
+    }
     partly += form.count >= 3 && !form.wholly;
     // Points all over the cell: towards each corner from the centre, and between corners.
     for (int k = 0; k < cell.count; ++k)
