@@ -335,8 +335,15 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
   if (occluded) {
     result.needsVisibility = true;
     ++counts_.occludedPairs;
-    // Wholly hidden by one face (the blocks' cross-sections were tried above): nothing to integrate.
-    if (clipper_.hidesAll(source.v.data(), source.count, clipper_.occluders(), false)) {
+    // Wholly hidden by one face (the blocks' cross-sections were tried above): nothing to integrate. Not
+    // tried where every occluder is a face of a block whose shadow regions said it does not hide all of the
+    // pair (judgeBlocks(): Shades); where that is wrong by a margin, the cells find the hidden part whole.
+    const bool shadingOnly =
+        std::all_of(clipper_.occluders().begin(), clipper_.occluders().end(), [&](int k) {
+          const int solid = clipper_.solidOf(k);
+          return solid >= 0 && std::find(shading_.begin(), shading_.end(), solid) != shading_.end();
+        });
+    if (!shadingOnly && clipper_.hidesAll(source.v.data(), source.count, clipper_.occluders(), false)) {
       ++counts_.hiddenPairs;
       return result;
     }
