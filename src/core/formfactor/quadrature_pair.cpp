@@ -278,6 +278,8 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
       const int solid = scene_.solidOf[static_cast<std::size_t>(k)];
       if (solid < 0 || solid == last) continue;
       last = solid;
+      // Its regions said it does not hide all (judgeBlocks(): Shades): no proof to look for.
+      if (std::find(shading_.begin(), shading_.end(), solid) != shading_.end()) continue;
       // The centres' segment passing clear of the block (not even within eps of it): one segment it does not
       // cut, so no proof that it cuts them all.
       if (!segmentEntersSolid(sourceCentre, receiverCentre, solids[static_cast<std::size_t>(solid)], -eps))
