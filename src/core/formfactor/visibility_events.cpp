@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/formfactor/shadow_clipper_detail.h"
 #include "core/formfactor/solid_silhouette.h"
@@ -13,6 +14,28 @@ using shadow_detail::copyPolygon;
 using shadow_detail::splitAt;
 
 namespace {
+
+// Whether some point p + t d, t in [0, 1], lies in each of `count` half-planes, the k-th given by
+// `halfPlane(k)` as its height at p and the height's change along d (inside where the height is >= 0): the
+// segment clipped to a convex region, Liang and Barsky's way.
+template <class HalfPlane>
+bool segmentKeepsAPoint(int count, HalfPlane&& halfPlane) {
+  double t0 = 0, t1 = 1;
+  for (int k = 0; k < count; ++k) {
+    const auto [start, rate] = halfPlane(k);
+    if (std::abs(rate) <= 1e-300) {
+      if (start < 0) return false;
+      continue;
+    }
+    const double t = -start / rate;
+    if (rate > 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+    if (t0 >= t1) return false;
+  }
+  return true;
+}
 
 // The source as the events see it: its plane and its edges' inward normals within that plane.
 class SourceRegion {
@@ -37,23 +60,11 @@ class SourceRegion {
   // The segment pq of the source's plane passes through the source's inside (by more than eps).
   bool meetsSegment(const Vec3& p, const Vec3& q) const {
     if (!inwardMade_) makeInward();
-    double t0 = 0, t1 = 1;
     const Vec3 d = q - p;
-    for (int k = 0; k < source_.count; ++k) {
+    return segmentKeepsAPoint(source_.count, [&](int k) {
       const Vec3& n = inward_[static_cast<std::size_t>(k)];
-      const double start = n.dot(p - source_.v[static_cast<std::size_t>(k)]) - eps_, rate = n.dot(d);
-      if (std::abs(rate) <= 1e-300) {
-        if (start < 0) return false;
-        continue;
-      }
-      const double t = -start / rate;
-      if (rate > 0)
-        t0 = std::max(t0, t);
-      else
-        t1 = std::min(t1, t);
-      if (t0 >= t1) return false;
-    }
-    return true;
+      return std::pair{n.dot(p - source_.v[static_cast<std::size_t>(k)]) - eps_, n.dot(d)};
+    });
   }
 
   // The event plane's line where it matters: the projection of the segment ab from the centre c onto the
@@ -99,23 +110,11 @@ class SourceRegion {
 bool segmentMeetsCell(const SmallPolygon& cell, const Vec3& normal, const Vec3& p, const Vec3& q,
                       double margin) {
   const Vec3 d = q - p;
-  double t0 = 0, t1 = 1;
-  for (int k = 0; k < cell.count; ++k) {
+  return segmentKeepsAPoint(cell.count, [&](int k) {
     const Vec3& a = cell.v[static_cast<std::size_t>(k)];
     const Vec3 inward = normal.cross(cell.v[static_cast<std::size_t>((k + 1) % cell.count)] - a);
-    const double start = inward.dot(p - a) + margin, rate = inward.dot(d);
-    if (std::abs(rate) <= 1e-300) {
-      if (start < 0) return false;
-      continue;
-    }
-    const double t = -start / rate;
-    if (rate > 0)
-      t0 = std::max(t0, t);
-    else
-      t1 = std::min(t1, t);
-    if (t0 > t1) return false;
-  }
-  return true;
+    return std::pair{inward.dot(p - a) + margin, inward.dot(d)};
+  });
 }
 
 }  // namespace
