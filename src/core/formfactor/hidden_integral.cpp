@@ -93,8 +93,7 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
   double done = 0;
   std::size_t formCount = 0;
   // Two whole solids: each one's faces, for its own form at a cell's centre.
-  bool twoSolids = false;
-  for (int k : occluders) twoSolids |= clipper_.solidOf(k) != clipper_.solidOf(occluders.front());
+  const bool twoSolids = clipper_.ofSeveralSolids(occluders);
   std::array<std::vector<int>, 2> own;
   if (twoSolids)
     for (int k : occluders)

@@ -279,7 +279,7 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
       if (solid < 0 || solid == last) continue;
       last = solid;
       // Its regions said it does not hide all (judgeBlocks(): Shades): no proof to look for.
-      if (std::find(shading_.begin(), shading_.end(), solid) != shading_.end()) continue;
+      if (shades(solid)) continue;
       // The centres' segment passing clear of the block (not even within eps of it): one segment it does not
       // cut, so no proof that it cuts them all.
       if (!segmentEntersSolid(sourceCentre, receiverCentre, solids[static_cast<std::size_t>(solid)], -eps))
@@ -325,8 +325,7 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
     for (int k : candidates_) {
       const int solid = scene_.solidOf[static_cast<std::size_t>(k)];
       if (scene_.convex[static_cast<std::size_t>(k)])
-        occluders_.push_back({&scene_.shafts.outline(k), solid,
-                              std::find(shading_.begin(), shading_.end(), solid) != shading_.end()});
+        occluders_.push_back({&scene_.shafts.outline(k), solid, shades(solid)});
       else
         for (int e : scene_.patchElements[static_cast<std::size_t>(k)])
           occluders_.push_back({&scene_.elementPolygons[static_cast<std::size_t>(e)], -1});
@@ -343,7 +342,7 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
     const bool shadingOnly =
         std::all_of(clipper_.occluders().begin(), clipper_.occluders().end(), [&](int k) {
           const int solid = clipper_.solidOf(k);
-          return solid >= 0 && std::find(shading_.begin(), shading_.end(), solid) != shading_.end();
+          return solid >= 0 && shades(solid);
         });
     if (!shadingOnly && clipper_.hidesAll(source.v.data(), source.count, clipper_.occluders(), false)) {
       ++counts_.hiddenPairs;
@@ -387,11 +386,9 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
     // (between two solids, up to a gap opening between their shadows, which overCells() guards against).
     // Otherwise (or where the cells would be too many) the adaptive rules with their guards.
     const double eps = shadowEps(source, receiver);
-    bool solids = false;  // occluders of more than one solid
-    for (int k : clipper_.occluders())
-      solids |= clipper_.solidOf(k) != clipper_.solidOf(clipper_.occluders()[0]);
     double sum = 0;
-    const bool apart = solids && hiddenSolidBySolid(i, j, source, eps, hidden, 0.5 * tolerance_ * areaI, sum);
+    const bool apart = clipper_.ofSeveralSolids(clipper_.occluders()) &&
+                       hiddenSolidBySolid(i, j, source, eps, hidden, 0.5 * tolerance_ * areaI, sum);
     bool byCells = !apart && clipper_.eventPlanes(source, clipper_.occluders(), events_);
     cells_.clear();
     for (int p = 0; p < panelCount && byCells; ++p)

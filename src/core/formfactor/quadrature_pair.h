@@ -4,16 +4,19 @@
 // In order, each step cheaper than the next and ending the pair where it can:
 //  1. the shaft test's candidate occluders; each block among them judged from its penumbra and umbra
 //     regions (block_shadow_regions.h): dropped where it misses the pair, the pair done where it hides all;
-//  2. a block's cross-sections tried as a proof that it hides all (shadow_clipper.h);
+//  2. a block's cross-sections tried as a proof that it hides all (shadow_clipper.h), unless its regions said
+//     it shades only part;
 //  3. U: the exact contour integral for near pairs, Gauss quadrature of Lambert's formula with an a-priori
 //     order (source_panels.h) elsewhere;
 //  4. H, where occluders remain after the clipper's own tests: over cells cut along the visibility events
-//     where there is one occluder (visibility_events.h), by the guarded adaptive rules otherwise
+//     where there is one occluder or two whole blocks (visibility_events.h), each block over its own cells
+//     where their shadows never overlap (shadow_overlap.h), by the guarded adaptive rules otherwise
 //     (hidden_integral.h).
 // Keeps its working vectors from pair to pair: millions of pairs would otherwise spend as long in the heap as
 // in the arithmetic.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "core/formfactor/block_shadow_regions.h"
@@ -73,6 +76,10 @@ class QuadraturePair {
   // The gap between element i, whole (`source` its corners), and the receiver: the distance between their
   // bounding spheres, or the source's height over the receiver's plane where that is more.
   double gapOf(int i, const SmallPolygon& source, const ReceiverBound& receiver) const;
+  // Whether a region said `solid` shades part of the pair, and so does not hide all of it (judgeBlocks()).
+  bool shades(int solid) const {
+    return std::find(shading_.begin(), shading_.end(), solid) != shading_.end();
+  }
 
   const QuadratureScene& scene_;
   double tolerance_;

@@ -112,6 +112,12 @@ class ShadowClipper {
   const std::vector<int>& occluders() const { return all_; }
   // The solid occluder `k` bounds, or -1.
   int solidOf(int k) const { return prepared_[static_cast<std::size_t>(k)].solid; }
+  // Whether `occluders` bound more than one solid (or mix a solid with polygons of none).
+  bool ofSeveralSolids(const std::vector<int>& occluders) const {
+    for (int k : occluders)
+      if (solidOf(k) != solidOf(occluders.front())) return true;
+    return false;
+  }
   // Of `in`, those that may cut a segment from `panel` to the receiver, into `out`.
   void cull(const SourcePanel& panel, const std::vector<int>& in, std::vector<int>& out) const;
   // True when one of `occluders`, or the solid one of them bounds, cuts every segment from the panel
