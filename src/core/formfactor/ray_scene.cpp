@@ -18,6 +18,8 @@ struct IgnoringContext {
   RTCIntersectContext base;
   const std::vector<int>* primitiveElement;
   const std::vector<int>* elementPlane;
+  const std::vector<Vec3>*
+      frontOnlyNormals;  // non-null: pass through every element the ray meets from behind
   int ignoreA, ignoreB;
 };
 
@@ -40,6 +42,11 @@ void ignoreOwnElements(const RTCFilterFunctionNArguments* args) {
     if ((context->ignoreA >= 0 && p == plane[static_cast<std::size_t>(context->ignoreA)]) ||
         (context->ignoreB >= 0 && p == plane[static_cast<std::size_t>(context->ignoreB)]))
       args->valid[k] = 0;
+    else if (context->frontOnlyNormals) {
+      const Vec3 d(RTCRayN_dir_x(args->ray, args->N, k), RTCRayN_dir_y(args->ray, args->N, k),
+                   RTCRayN_dir_z(args->ray, args->N, k));
+      if ((*context->frontOnlyNormals)[static_cast<std::size_t>(element)].dot(d) >= 0) args->valid[k] = 0;
+    }
   }
 }
 
@@ -127,6 +134,7 @@ bool RayScene::visible(const Vec3& from, const Vec3& to, int ignoreA, int ignore
   rtcInitIntersectContext(&context.base);
   context.primitiveElement = &impl_->primitiveElement;
   context.elementPlane = &impl_->elementPlane;
+  context.frontOnlyNormals = nullptr;
   context.ignoreA = ignoreA;
   context.ignoreB = ignoreB;
   RTCRay ray{};
@@ -152,27 +160,41 @@ RayHit RayScene::firstHit(const Vec3& origin, const Vec3& direction, int ignore)
   rtcInitIntersectContext(&context.base);
   context.primitiveElement = &impl_->primitiveElement;
   context.elementPlane = &impl_->elementPlane;
+  context.frontOnlyNormals = nullptr;
   context.ignoreA = ignore;
   context.ignoreB = ignore;
-  RTCRayHit query{};
-  query.ray.org_x = static_cast<float>(origin.x());
-  query.ray.org_y = static_cast<float>(origin.y());
-  query.ray.org_z = static_cast<float>(origin.z());
-  query.ray.dir_x = static_cast<float>(direction.x());
-  query.ray.dir_y = static_cast<float>(direction.y());
-  query.ray.dir_z = static_cast<float>(direction.z());
-  query.ray.tnear = impl_->epsilon;
-  query.ray.tfar = std::numeric_limits<float>::infinity();
-  query.ray.mask = 0xFFFFFFFFu;
-  query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  query.hit.primID = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(impl_->scene, &context.base, &query);
-  RayHit hit;
-  if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
-  hit.element = impl_->primitiveElement[query.hit.primID];
-  hit.distance = query.ray.tfar;
-  hit.frontSide = impl_->normals[hit.element].dot(direction) < 0;
-  return hit;
+  auto intersect = [&](float tnear, float tfar) {
+    RTCRayHit query{};
+    query.ray.org_x = static_cast<float>(origin.x());
+    query.ray.org_y = static_cast<float>(origin.y());
+    query.ray.org_z = static_cast<float>(origin.z());
+    query.ray.dir_x = static_cast<float>(direction.x());
+    query.ray.dir_y = static_cast<float>(direction.y());
+    query.ray.dir_z = static_cast<float>(direction.z());
+    query.ray.tnear = tnear;
+    query.ray.tfar = tfar;
+    query.ray.mask = 0xFFFFFFFFu;
+    query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    query.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl_->scene, &context.base, &query);
+    RayHit hit;
+    if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
+    hit.element = impl_->primitiveElement[query.hit.primID];
+    hit.distance = query.ray.tfar;
+    hit.frontSide = impl_->normals[static_cast<std::size_t>(hit.element)].dot(direction) < 0;
+    return hit;
+  };
+  const RayHit hit = intersect(impl_->epsilon, std::numeric_limits<float>::infinity());
+  if (hit.element < 0 || hit.frontSide) return hit;
+  // A two-sided thin surface is often two coincident polygons back to back (as OBJ exporters write a
+  // two-sided plane): both lie at the same distance, and which one Embree reports is arbitrary. The light
+  // must land on the one that faces the ray, so a back-side hit looks again, at that distance only, for a
+  // front side. The window is a few float ulps: a genuine gap of a thin plate is far wider.
+  const float t = static_cast<float>(hit.distance);
+  const float window = impl_->epsilon + 8 * std::numeric_limits<float>::epsilon() * t;
+  context.frontOnlyNormals = &impl_->normals;
+  const RayHit front = intersect(std::max(impl_->epsilon, t - window), t + window);
+  return front.element >= 0 ? front : hit;
 }
 
 }  // namespace rt

@@ -66,7 +66,6 @@ class MonteCarloMethod : public FormFactorMethod {
     const auto n = static_cast<Eigen::Index>(mesh.size());
     const int samples = std::max(1, options.samples);
     FormFactorMatrix F = zeroFormFactorMatrix(n);
-    const double weight = 1.0 / samples;
     forEachRow(mesh.size(), options, progress, "form factors (montecarlo)", stats,
                [&](int i, RowCounters& counters) {
                  const ElementPolygon a(mesh, i);
@@ -78,11 +77,13 @@ class MonteCarloMethod : public FormFactorMethod {
                    const Vec3 x = pointOnPolygon(a.v.data(), a.count, s.x(), s.y()) + lift * normal;
                    const Vec3 direction = cosineDirection(normal, random.uniform(), random.uniform());
                    const RayHit hit = rays.firstHit(x, direction, i);
-                   if (hit.element >= 0 && hit.frontSide) F(i, hit.element) += weight;
+                   if (hit.element >= 0 && hit.frontSide) F(i, hit.element) += 1;  // exact up to 2^53
                  }
                  counters.raysCast += static_cast<std::size_t>(samples);
+                 // Hits are counted whole and divided once: adding 1/N per hit drifts by rounding, and
+                 // over millions of rays a row of a closed scene came out above 1.
                  for (Eigen::Index j = 0; j < n; ++j) {
-                   const double f = F(i, j);
+                   const double f = F(i, j) /= samples;
                    if (f > 0) {
                      ++counters.pairsComputed;
                      counters.varianceSum += f * (1 - f) / samples;
