@@ -70,7 +70,7 @@ Camera sceneCamera(const Scene& scene) {
   const Eigen::AlignedBox3d box = scene.bounds();
   if (box.isEmpty()) return Camera{};
   const Vec3 side = openSide(scene);
-  if (side.isZero()) return standardCamera(box, StandardView::Front);
+  if (side.isZero()) return standardCamera(scene, StandardView::Front);
   // From outside the open side, at the distance where the opening fills the view: inside, every wall shows.
   Camera c;
   c.fovYDegrees = 40.0;
@@ -87,15 +87,33 @@ Camera sceneCamera(const Scene& scene) {
   return c;
 }
 
-Camera standardCamera(const Eigen::AlignedBox3d& box, StandardView view, double fovYDegrees) {
+Vec3 frontDirection(const Scene& scene) {
+  const Eigen::AlignedBox3d box = scene.bounds();
+  Vec3 towardsEye = Vec3::Zero();
+  if (scene.camera && !box.isEmpty())
+    towardsEye = scene.camera->position - box.center();
+  else
+    towardsEye = openSide(scene);
+  // The horizontal axis (x or z) nearest the direction: the front is level, whatever the eye's height.
+  towardsEye.y() = 0;
+  if (towardsEye.squaredNorm() == 0) return Vec3(0, 0, 1);
+  const int axis = std::abs(towardsEye.x()) > std::abs(towardsEye.z()) ? 0 : 2;
+  Vec3 front = Vec3::Zero();
+  front[axis] = towardsEye[axis] < 0 ? -1.0 : 1.0;
+  return front;
+}
+
+Camera standardCamera(const Scene& scene, StandardView view, double fovYDegrees) {
+  const Eigen::AlignedBox3d box = scene.bounds();
+  const Vec3 up(0, 1, 0), front = frontDirection(scene);
   switch (view) {
     case StandardView::Top:
-      return framing(box, Vec3(0, 1, 0), Vec3(0, 0, -1), fovYDegrees);
+      return framing(box, up, -front, fovYDegrees);  // the front at the bottom of the picture
     case StandardView::Side:
-      return framing(box, Vec3(1, 0, 0), Vec3(0, 1, 0), fovYDegrees);
+      return framing(box, up.cross(front), up, fovYDegrees);  // the right-hand side, seen from the front
     case StandardView::Front:
     default:
-      return framing(box, Vec3(0, 0, 1), Vec3(0, 1, 0), fovYDegrees);
+      return framing(box, front, up, fovYDegrees);
   }
 }
 

@@ -18,7 +18,12 @@ Camera sceneCamera(const Scene& scene);
 // (0, 0, 1) for an open front), or zero when every side is mostly covered or the scene is not a room.
 Vec3 openSide(const Scene& scene);
 
-// Looking at the whole box from the front (+z), the top (+y, the front at the bottom) or the side (+x).
-Camera standardCamera(const Eigen::AlignedBox3d& box, StandardView view, double fovYDegrees = 40.0);
+// The scene's front, as a horizontal axis direction pointing from the scene towards the viewer: the side its
+// own camera looks from, else the open side of a room, else the OBJ convention's front (+z). The Cornell
+// box's camera stands at -z: its front is (0, 0, -1).
+Vec3 frontDirection(const Scene& scene);
+
+// Looking at the whole bounding box from the front, the top (the front at the bottom) or the right-hand side.
+Camera standardCamera(const Scene& scene, StandardView view, double fovYDegrees = 40.0);
 
 }  // namespace rt::app

@@ -233,7 +233,7 @@ void MainWindow::resetView() {
 
 void MainWindow::showStandardView(StandardView view) {
   if (!result_ || !result_->scene || !primaryView_->hasMesh()) return;
-  primaryView_->applyCamera(standardCamera(result_->scene->bounds(), view, result_->camera.fovYDegrees));
+  primaryView_->applyCamera(standardCamera(*result_->scene, view, result_->camera.fovYDegrees));
   if (compare_) secondaryView_->syncCameraFrom(*primaryView_);
 }
 

@@ -81,3 +81,23 @@ TEST(SceneCamera, StandardViewsAndResetFromTheKeys) {
   QTest::keyClick(target, Qt::Key_R);
   EXPECT_LT((window->primaryView()->currentCamera().position - start.position).norm(), 1e-6);
 }
+
+// The lesson's Cornell box names its camera, at -z looking along +z: that is its front. The Front view looks
+// into the box from there (it showed the back of the back wall when Front meant +z), Top has the front at the
+// bottom, and Side is the right-hand side as seen from the front (-x, where the green wall stands).
+TEST(SceneCamera, TheStandardViewsFaceTheSceneFromItsOwnFront) {
+  const rt::Scene lesson = rt::loadScene(RT_SOURCE_DIR "/scenes/cornell-box.json");
+  ASSERT_TRUE(lesson.camera.has_value());
+  EXPECT_TRUE(frontDirection(lesson).isApprox(rt::Vec3(0, 0, -1))) << frontDirection(lesson).transpose();
+  const rt::Camera front = standardCamera(lesson, StandardView::Front);
+  EXPECT_TRUE(viewDirection(front).isApprox(rt::Vec3(0, 0, 1), 1e-9));
+  EXPECT_LT(front.position.z(), lesson.bounds().min().z());
+  const rt::Camera top = standardCamera(lesson, StandardView::Top);
+  EXPECT_TRUE(viewDirection(top).isApprox(rt::Vec3(0, -1, 0), 1e-9));
+  EXPECT_TRUE(top.up.isApprox(rt::Vec3(0, 0, 1))) << "the front (-z) at the bottom of the picture";
+  const rt::Camera side = standardCamera(lesson, StandardView::Side);
+  EXPECT_TRUE(viewDirection(side).isApprox(rt::Vec3(1, 0, 0), 1e-9));
+  // Without a camera, the open side is the front; with neither, +z.
+  EXPECT_TRUE(frontDirection(rt::loadScene(kBox.toStdString())).isApprox(rt::Vec3(0, 0, 1)));
+  EXPECT_TRUE(frontDirection(rt::Scene{}).isApprox(rt::Vec3(0, 0, 1)));
+}
