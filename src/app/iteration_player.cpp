@@ -2,21 +2,28 @@
 
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
 #include <QTimer>
+#include <QToolButton>
 
 namespace rt::app {
 
 IterationPlayer::IterationPlayer(QWidget* parent) : QWidget(parent) {
   auto* layout = new QHBoxLayout(this);
   layout->setContentsMargins(4, 2, 4, 2);
-  firstButton_ = new QPushButton(tr("|<"), this);
+  // Tool buttons are as wide as their text: push buttons' 80-pixel minimum made the player alone wider than
+  // half a projector's screen.
+  auto button = [this](const QString& text) {
+    auto* b = new QToolButton(this);
+    b->setText(text);
+    return b;
+  };
+  firstButton_ = button(tr("|<"));
   firstButton_->setToolTip(tr("First iteration"));
-  playButton_ = new QPushButton(tr("Play"), this);
+  playButton_ = button(tr("Play"));
   playButton_->setToolTip(tr("Play / pause the iterations (Space)"));
-  nextButton_ = new QPushButton(tr("Next"), this);
+  nextButton_ = button(tr("Next"));
   nextButton_->setToolTip(tr("Next iteration (N)"));
   slider_ = new QSlider(Qt::Horizontal, this);
   slider_->setObjectName("iterationSlider");
@@ -42,9 +49,9 @@ IterationPlayer::IterationPlayer(QWidget* parent) : QWidget(parent) {
     else
       setCurrent(current_ + 1);
   });
-  connect(playButton_, &QPushButton::clicked, this, &IterationPlayer::togglePlay);
-  connect(nextButton_, &QPushButton::clicked, this, &IterationPlayer::next);
-  connect(firstButton_, &QPushButton::clicked, this, [this] { setCurrent(0); });
+  connect(playButton_, &QToolButton::clicked, this, &IterationPlayer::togglePlay);
+  connect(nextButton_, &QToolButton::clicked, this, &IterationPlayer::next);
+  connect(firstButton_, &QToolButton::clicked, this, [this] { setCurrent(0); });
   connect(slider_, &QSlider::valueChanged, this, &IterationPlayer::setCurrent);
   connect(speed_, &QSpinBox::valueChanged, this,
           [this](int v) { timer_->setInterval(1000 / std::max(1, v)); });

@@ -6,7 +6,7 @@
 #include <QWidget>
 
 class QLabel;
-class QPushButton;
+class QToolButton;
 class QSlider;
 class QSpinBox;
 class QTimer;
@@ -43,9 +43,9 @@ class IterationPlayer : public QWidget {
 
   int count_ = 0;
   int current_ = 0;
-  QPushButton* playButton_ = nullptr;
-  QPushButton* nextButton_ = nullptr;
-  QPushButton* firstButton_ = nullptr;
+  QToolButton* playButton_ = nullptr;
+  QToolButton* nextButton_ = nullptr;
+  QToolButton* firstButton_ = nullptr;
   QSlider* slider_ = nullptr;
   QSpinBox* speed_ = nullptr;
   QLabel* label_ = nullptr;

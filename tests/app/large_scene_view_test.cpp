@@ -13,6 +13,7 @@
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 #include <vtkUnsignedCharArray.h>
+#include <QAbstractButton>
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
@@ -202,8 +203,8 @@ TEST(LargeSceneView, TheWindowPicksStepsAndRecoloursWithoutRebuildingOrSolving) 
       << status->text().toStdString();
 
   // Back to the first iteration with the player's first button, then N.
-  QPushButton* firstButton = nullptr;
-  for (auto* button : window->player()->findChildren<QPushButton*>())
+  QAbstractButton* firstButton = nullptr;
+  for (auto* button : window->player()->findChildren<QAbstractButton*>())
     if (button->text() == "|<") firstButton = button;
   ASSERT_NE(firstButton, nullptr);
   QTest::mouseClick(firstButton, Qt::LeftButton);

