@@ -37,6 +37,7 @@
 #include "app/progress_strip.h"
 #include "app/residual_chart.h"
 #include "app/scene_view.h"
+#include "app/wording.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/solvers/solver.h"
 #include "plugins/optional_methods.h"
@@ -350,7 +351,8 @@ void MainWindow::setPresenterMode(bool on) {
   if (!on) setLargeFigure(false);
 }
 
-void MainWindow::showError(const QString& message) {
+void MainWindow::showError(const QString& coreMessage) {
+  const QString message = inAppTerms(coreMessage);
   lastError_ = message;
   if (newStepPending_ && mode_ == Mode::Lesson) {
     // The step's own text stays readable, with what went wrong above it.

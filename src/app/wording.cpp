@@ -1,6 +1,9 @@
 #include "app/wording.h"
 
 #include <QCoreApplication>
+#include <QRegularExpression>
+
+#include "lesson/step_keys.h"
 
 namespace rt::app {
 
@@ -36,6 +39,29 @@ QString solveSummary(const PipelineResult& r) {
   int count = r.iterations;
   if (r.solverName == "bounces" && !r.history.empty()) count = static_cast<int>(r.history.size()) - 1;
   return solveSummary(r.solverName, r.status, count, r.residual);
+}
+
+QString inAppTerms(const QString& message) {
+  static const QRegularExpression option(QStringLiteral("--([a-z][a-z0-9-]*)"));
+  QString out;
+  qsizetype from = 0;
+  for (auto it = option.globalMatch(message); it.hasNext();) {
+    const QRegularExpressionMatch m = it.next();
+    const std::string name = m.captured(1).toStdString();
+    const lesson::StepKey* key = lesson::findStepKey(name == "no-subdivide" ? "subdivide" : name);
+    out += message.mid(from, m.capturedStart() - from);
+    from = m.capturedEnd();
+    if (!key || !key->control || key->label.empty()) {
+      out += m.captured();
+      continue;
+    }
+    out += QCoreApplication::translate("rt::app", "the %1 control").arg(QString::fromStdString(key->label));
+    if (name == "no-subdivide")
+      out += " at 1";
+    else if (from + 1 < message.size() && message[from] == ' ' && message[from + 1].isLetterOrNumber())
+      out += " at";  // "--max-edge 40": "the Max edge control at 40"
+  }
+  return out + message.mid(from);
 }
 
 }  // namespace rt::app

@@ -30,4 +30,10 @@ QString solveSummary(const std::string& solver, SolverStatus status, int iterati
 // The same for a result: a bounces run counts its bounces (its history holds B after 0, 1, ... bounces).
 QString solveSummary(const PipelineResult& result);
 
+// A message from the core, which names settings as the command line spells them ("use a coarser mesh, e.g.
+// --max-edge 40"), in the app's terms: each option that is a step key becomes its control's label in the
+// Parameters panel ("the Max edge control: 40"), and --no-subdivide its Subdivision control at 1. Other text
+// is left as it is.
+QString inAppTerms(const QString& message);
+
 }  // namespace rt::app

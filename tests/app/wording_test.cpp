@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QDir>
 #include <QLabel>
 #include <QSpinBox>
 #include <QTest>
@@ -69,4 +70,26 @@ TEST(Wording, AStochasticSolveReachesItsNoiseLevel) {
     EXPECT_TRUE(status.contains("noise level reached")) << status.toStdString();
   }
   EXPECT_TRUE(isStochasticSolver(window->result()->solverName)) << window->result()->solverName;
+}
+
+// The core names settings as the command line spells them; the app says which control to change.
+TEST(Wording, MessagesNameTheAppsControlsNotCommandLineOptions) {
+  EXPECT_EQ(inAppTerms("use a coarser mesh, e.g. --no-subdivide)").toStdString(),
+            "use a coarser mesh, e.g. the Subdivision (N x N) control at 1)");
+  EXPECT_EQ(inAppTerms("Use a coarser mesh, e.g. --max-edge 40 (about 10,000 elements)").toStdString(),
+            "Use a coarser mesh, e.g. the Max edge control at 40 (about 10,000 elements)");
+  EXPECT_EQ(inAppTerms("or --mesh adaptive").toStdString(), "or --mesh adaptive") << "not a control: kept";
+}
+
+TEST(Wording, ATooLargeLatexExportSaysWhatToDoInTheApp) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  ASSERT_TRUE(window->openLesson("cornell-box", 1));
+  ASSERT_TRUE(window->waitUntilIdle());
+  const QString path = QDir::temp().filePath("rt-wording-F.tex");
+  ASSERT_FALSE(window->exportMatrixFile("F", path)) << "the step's F is too large for LaTeX";
+  const std::string error = window->lastError().toStdString();
+  EXPECT_NE(error.find("LaTeX"), std::string::npos) << error;
+  EXPECT_EQ(error.find("--"), std::string::npos) << error;
+  EXPECT_NE(error.find("Subdivision (N x N) control"), std::string::npos) << error;
 }
