@@ -17,6 +17,7 @@
 #include "app/lesson_text_view.h"
 #include "app/pipeline.h"
 #include "app/presenter_style.h"
+#include "app/recent_results.h"
 #include "app/step_result_cache.h"
 #include "lesson/lesson.h"
 
@@ -173,6 +174,8 @@ class MainWindow : public QMainWindow {
   void keepStepResult();
   // A restored session's long step: what it showed last time, if kept with the same parameters.
   bool showKeptResult();
+  // The current lesson step, the reader's values of its controls and the compare pane's choice, as one key.
+  QString recentKey() const;
   void requestComputation();
   void showResult(std::shared_ptr<const PipelineResult> result);
   void showIteration(int index);
@@ -248,6 +251,9 @@ class MainWindow : public QMainWindow {
   QMenu* recentMenu_ = nullptr;
   QPushButton* computeButton_ = nullptr;
   StepResultCache stepCache_;
+  // The steps seen last, by recentKey(): a step revisited with the same settings is shown from memory.
+  RecentResults recent_;
+  QString pendingKey_;  // the key of the computation under way (empty: a scene, not kept)
   bool showingKept_ = false;
   QLabel* statusLabel_ = nullptr;
   ProgressStrip* progress_ = nullptr;

@@ -167,6 +167,20 @@ bool MainWindow::showKeptResult() {
   return true;
 }
 
+QString MainWindow::recentKey() const {
+  QString key = QString("%1/%2").arg(lesson_).arg(step_);
+  const QVariantMap values = parameterMap(parameters_);
+  for (auto it = values.begin(); it != values.end(); ++it)
+    key += "/" + it.key() + "=" + it.value().toString();
+  if (compare_) {
+    const CompareChoice c = compareChoice();
+    key += QString("/compare=%1,%2,%3")
+               .arg(QString::fromStdString(c.solver), QString::fromStdString(c.method),
+                    QString::fromStdString(c.mesh));
+  }
+  return key;
+}
+
 bool MainWindow::isLongStep(int lessonIndex, int step) const {
   if (!options_.screenshot.isEmpty()) return false;  // a screenshot is of the computed step
   const auto& lesson = library_->lessons()[static_cast<std::size_t>(lessonIndex)];

@@ -230,7 +230,12 @@ void MainWindow::requestComputation() {
   const bool compare = compare_;
   const CompareChoice choice = compare ? compareChoice() : CompareChoice{};
   ComputationRunner::Job job;
-  if (mode_ == Mode::Lesson) {
+  pendingKey_.clear();
+  if (mode_ == Mode::Lesson) pendingKey_ = recentKey();
+  if (const auto kept = pendingKey_.isEmpty() ? nullptr : recent_.find(pendingKey_)) {
+    // Through the runner all the same: it cancels a computation under way, whose result must not follow.
+    job = [kept](Progress&) { return *kept; };
+  } else if (mode_ == Mode::Lesson) {
     LessonLibrary* library = library_.get();
     const int l = lesson_, s = step_;
     const lesson::StepParameters parameters = parameters_;
@@ -296,6 +301,7 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   // The views still point at the previous mesh until they get the new one: keep it alive until then.
   const std::shared_ptr<const PipelineResult> previous = result_;
   result_ = std::move(result);
+  if (!pendingKey_.isEmpty()) recent_.keep(pendingKey_, result_);
   const PipelineResult& r = *result_;
   auto stepResult = std::static_pointer_cast<const lesson::StepResult>(r.stepResult);
   const lesson::Step* step =

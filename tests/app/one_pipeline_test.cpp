@@ -3,7 +3,10 @@
 // iterations comes from that run, not from a second solve).
 #include <gtest/gtest.h>
 
+#include <QElapsedTimer>
+#include <QTest>
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -115,4 +118,34 @@ TEST(OnePipeline, ASweepSetsTheKnobTheMethodReads) {
                    rt::accuracyKnobOf("exact").field == rt::AccuracyKnob::Field::Tolerance
                        ? 1e-4
                        : rt::FormFactorOptions{}.tolerance);
+}
+
+// Going back to a step seen a moment ago shows it from memory: no second run, and at once, whatever the
+// step cost (an adaptive mesh takes seconds). A changed control is a new computation; its old value is
+// remembered too.
+TEST(OnePipeline, ARevisitedStepIsShownFromMemory) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow(/*threaded=*/true);
+  window->show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+  ASSERT_TRUE(window->openLesson("meshing", 1));
+  ASSERT_TRUE(window->waitUntilIdle(120000));
+  const PipelineResult* first = window->result();
+  ASSERT_NE(first, nullptr);
+  const Eigen::Index elements = static_cast<Eigen::Index>(first->mesh->size());
+  ASSERT_TRUE(window->nextStep());
+  ASSERT_TRUE(window->waitUntilIdle(120000));
+  const int runs = window->library()->stepRuns();
+  QElapsedTimer timer;
+  timer.start();
+  ASSERT_TRUE(window->previousStep());
+  ASSERT_TRUE(window->waitUntilIdle(120000));
+  const qint64 ms = timer.elapsed();
+  EXPECT_EQ(window->library()->stepRuns(), runs) << "the step was computed again";
+  ASSERT_NE(window->result(), nullptr);
+  EXPECT_EQ(static_cast<Eigen::Index>(window->result()->mesh->size()), elements);
+  EXPECT_EQ(window->currentStep(), 1);
+  EXPECT_LT(ms, 1000) << "a revisit took " << ms << " ms";
+  RecordProperty("revisit_ms", static_cast<int>(ms));
+  std::printf("revisit of meshing step 2: %lld ms\n", static_cast<long long>(ms));
 }
