@@ -22,6 +22,7 @@
 #include "app/residual_chart.h"
 #include "app/scene_view.h"
 #include "lesson/step_keys.h"
+#include "viz/display_pipeline.h"
 
 namespace rt::app {
 namespace {
@@ -258,6 +259,13 @@ void MainWindow::applyStepDisplay(const lesson::Step* step) {
     const lesson::StepParameters& p = parameters_;
     options.image.exposure = p.exposure;
     options.image.toneMap = viz::toneMapFromName(p.toneMap);
+    // Automatic exposure is found once per step and then kept: found anew for every result, it would
+    // normalise a doubled light away and the picture would never change.
+    if (p.exposure <= 0 && result_ && result_->mesh && result_->B.rows() > 0) {
+      if (keptExposure_ <= 0)
+        keptExposure_ = viz::autoExposure(result_->B, options.image.toneMap, &result_->mesh->emission);
+      options.image.exposure = keptExposure_;
+    }
     options.image.srgbGamma = p.gamma;
     options.image.smooth = p.smooth;
     options.image.showEdges = p.edges;

@@ -56,6 +56,18 @@ QString sceneSummary(const PipelineResult& r) {
               .arg(QString::fromStdString(r.formFactorStats.summary()))
               .arg(r.formFactorsReused ? " (reused: only materials or the light changed)" : "");
   if (!r.solverName.empty()) md += QString("Solver %1.\n\n").arg(solveSummary(r));
+  if (r.B.rows() == static_cast<Eigen::Index>(r.mesh->size()) && r.B.rows() > 0) {
+    // The numbers that follow the light: a doubled light doubles them.
+    const Eigen::VectorXd areas = r.mesh->areas();
+    const Eigen::VectorXd grey = r.B.rowwise().mean();
+    md += QString(
+              "Mean radiosity over the scene's %1 %2² of surface: **%3 W/m²**; the brightest element, the "
+              "light included: %4 W/m².\n\n")
+              .arg(areas.sum(), 0, 'g', 4)
+              .arg(QString::fromStdString(r.scene->unit))
+              .arg(areas.dot(grey) / areas.sum(), 0, 'g', 4)
+              .arg(grey.maxCoeff(), 0, 'g', 4);
+  }
   if (!r.note.empty()) md += QString("*%1*\n\n").arg(QString::fromStdString(r.note));
   for (const auto& w : r.scene->warnings) md += QString("- warning: %1\n").arg(QString::fromStdString(w));
   for (const auto& w : r.formFactorStats.warnings)
@@ -296,6 +308,7 @@ bool MainWindow::waitUntilIdle(int timeoutMs) {
 void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   const bool newStep = newStepPending_ || !result_;
   newStepPending_ = false;
+  if (newStep) keptExposure_ = 0;
   showingKept_ = false;
   const bool longStep = recordComputeTime();
   // The views still point at the previous mesh until they get the new one: keep it alive until then.
@@ -417,6 +430,8 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   QString status = counted(static_cast<long long>(r.mesh->size()), tr("element"));
   if (!r.solverName.empty()) status += ", " + solveSummary(r);
   if (r.formFactorsReused) status += tr(", form factors reused");
+  if (!r.materials && parameters_.exposure <= 0 && keptExposure_ > 0)
+    status += tr(", exposure %1 (automatic, kept for this step)").arg(keptExposure_, 0, 'g', 3);
   if (!r.note.empty()) status += " (" + QString::fromStdString(r.note) + ")";
   statusLabel_->setText(status);
   emit resultShown();

@@ -6,6 +6,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QSpinBox>
 #include <QTest>
@@ -16,6 +17,7 @@
 #include "app/lesson_session.h"
 #include "app/parameter_panel.h"
 #include "app/scene_view.h"
+#include "app/screenshot.h"
 #include "app_test_support.h"
 #include "lesson/step_numbers.h"
 #include "lesson/step_result.h"
@@ -191,4 +193,27 @@ TEST(ParameterControls, EveryControlOfEveryLessonStepTakesEffect) {
     }
   }
   EXPECT_GT(changed, 20);
+}
+
+// A reader who doubles the light sees a brighter room: the automatic exposure is found once for the scene
+// and kept, the status line says which exposure is in use, and the text's mean radiosity doubles.
+TEST(ParameterControls, ABrighterLightGivesABrighterPicture) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+  ASSERT_TRUE(
+      window->openScene(QString::fromStdString(RT_SOURCE_DIR "/tests/data/cornell-box-no-camera.obj")));
+  auto* view = window->primaryView();
+  const QRect area = test::areaOf(window.get(), view);
+  const double before = pixelStatistics(grabWindow(*window), area).meanLuminance;
+  auto* status = window->findChild<QLabel*>("statusMessage");
+  ASSERT_NE(status, nullptr);
+  EXPECT_TRUE(status->text().contains("exposure")) << status->text().toStdString();
+  test::typeInto(window->parameterPanel()->editor("light-scale"), "2");
+  const double after = pixelStatistics(grabWindow(*window), area).meanLuminance;
+  EXPECT_GT(after, 1.2 * before) << before << " -> " << after;
+  test::typeInto(window->parameterPanel()->editor("light-scale"), "0.5");
+  const double dimmer = pixelStatistics(grabWindow(*window), area).meanLuminance;
+  EXPECT_LT(dimmer, 0.8 * before) << before << " -> " << dimmer;
 }
