@@ -53,6 +53,15 @@ void ComputationRunner::start(Job job) {
   launch(std::move(job));
 }
 
+void ComputationRunner::runNow(const Job& job) {
+  if (thread_) {
+    queued_.reset();
+    discard_ = true;
+    cancel();
+  }
+  runBlocking(job);
+}
+
 void ComputationRunner::cancel() {
   if (currentProgress_) currentProgress_->cancel();
 }
@@ -62,6 +71,7 @@ void ComputationRunner::launch(Job job) {
   outcome_.reset();
   error_.clear();
   wasCancelled_ = false;
+  discard_ = false;
   auto progress = currentProgress_;
   thread_ = QThread::create([this, job = std::move(job), progress] {
     clearUpperVectorState();  // the GUI thread's libraries may have left it dirty (core/vector_state.h)
@@ -91,6 +101,11 @@ void ComputationRunner::onThreadDone() {
     return;
   }
   emit busyChanged(false);
+  if (discard_) {
+    discard_ = false;
+    outcome_.reset();
+    return;
+  }
   if (wasCancelled_)
     emit cancelled();
   else if (!error_.isEmpty())

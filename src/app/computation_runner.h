@@ -31,6 +31,9 @@ class ComputationRunner : public QObject {
   bool busy() const { return thread_ != nullptr; }
   // Runs on the calling thread (screenshots, tests that need the result now). Emits the same signals.
   void runBlocking(const Job& job);
+  // A quick job (an exercise, a page of text) that must not wait behind a long one: the running
+  // computation is cancelled and its outcome dropped without a signal, and `job` runs now, blocking.
+  void runNow(const Job& job);
 
  signals:
   void progress(double fraction, const QString& stage);
@@ -48,6 +51,7 @@ class ComputationRunner : public QObject {
   std::shared_ptr<PipelineResult> outcome_;
   QString error_;
   bool wasCancelled_ = false;
+  bool discard_ = false;  // the running computation was overtaken by runNow(): its outcome is not shown
   std::optional<Job> queued_;
 };
 

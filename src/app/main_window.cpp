@@ -54,6 +54,7 @@ MainWindow::MainWindow(const AppOptions& options, std::unique_ptr<LessonLibrary>
   connect(runner_, &ComputationRunner::finished, this, &MainWindow::showResult);
   connect(runner_, &ComputationRunner::failed, this, &MainWindow::showError);
   connect(runner_, &ComputationRunner::cancelled, this, [this] {
+    showStale(false);
     newStepPending_ = false;
     statusLabel_->setText(tr("Cancelled: the previous result is still shown."));
   });
@@ -99,6 +100,9 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 }
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
+  if (watched == viewsPane_ && staleCover_->isVisible() &&
+      (event->type() == QEvent::Resize || event->type() == QEvent::Move))
+    staleCover_->setGeometry(QRect(viewsPane_->mapTo(this, QPoint(0, 0)), viewsPane_->size()));
   if ((watched == text_ || watched == text_->viewport()) && event->type() == QEvent::ShortcutOverride) {
     auto* key = static_cast<QKeyEvent*>(event);
     const bool navigation = key->key() == Qt::Key_Left || key->key() == Qt::Key_Right ||
@@ -148,6 +152,15 @@ void MainWindow::buildUi() {
 
   auto* right = new QSplitter(Qt::Vertical, centre);
   viewsPane_ = right;
+  // Over the views while a new step computes: what they show belongs to the previous step and must look it.
+  // A child of the window, not of the splitter (which would make it one of its panes).
+  staleCover_ = new QLabel(tr("Computing this step...\nThe views still show the previous one."), this);
+  staleCover_->setObjectName("staleCover");
+  staleCover_->setAlignment(Qt::AlignCenter);
+  staleCover_->setWordWrap(true);
+  staleCover_->setStyleSheet("background-color: rgba(32, 32, 32, 190); color: white; font-size: 15pt;");
+  staleCover_->hide();
+  viewsPane_->installEventFilter(this);
   viewSplitter_ = new QSplitter(Qt::Horizontal, right);
   primaryView_ = new SceneView(viewSplitter_);
   primaryView_->setObjectName("primaryView");
@@ -351,7 +364,18 @@ void MainWindow::setPresenterMode(bool on) {
   if (!on) setLargeFigure(false);
 }
 
+void MainWindow::showStale(bool on) {
+  if (!on || !result_ || viewsPane_->isHidden()) {
+    staleCover_->hide();
+    return;
+  }
+  staleCover_->setGeometry(QRect(viewsPane_->mapTo(this, QPoint(0, 0)), viewsPane_->size()));
+  staleCover_->raise();
+  staleCover_->show();
+}
+
 void MainWindow::showError(const QString& coreMessage) {
+  showStale(false);
   const QString message = inAppTerms(coreMessage);
   lastError_ = message;
   if (newStepPending_ && mode_ == Mode::Lesson) {

@@ -176,6 +176,8 @@ class MainWindow : public QMainWindow {
   bool showKeptResult();
   // The current lesson step, the reader's values of its controls and the compare pane's choice, as one key.
   QString recentKey() const;
+  // Covers the views while a new step computes, so that the previous step's pictures look out of date.
+  void showStale(bool on);
   void requestComputation();
   void showResult(std::shared_ptr<const PipelineResult> result);
   void showIteration(int index);
@@ -228,7 +230,9 @@ class MainWindow : public QMainWindow {
   SceneView* primaryView_ = nullptr;
   SceneView* secondaryView_ = nullptr;
   QSplitter* viewSplitter_ = nullptr;
-  QWidget* viewsPane_ = nullptr;  // views, player and tabs: hidden for a step of text only
+  QWidget* viewsPane_ = nullptr;
+  QLabel* staleCover_ = nullptr;  // over viewsPane_ while a new step computes (showStale)  // views, player
+                                  // and tabs: hidden for a step of text only
   IterationPlayer* player_ = nullptr;
   CameraPathPlayer* pathPlayer_ = nullptr;  // a step's camera path: the walkthrough after one solve
   ResidualChart* chart_ = nullptr;

@@ -155,8 +155,9 @@ bool MainWindow::openStep(int lessonIndex, int step) {
   const bool defer = deferred_;
   computeButton_->setVisible(defer);
   showingKept_ = false;
-  // The panel shows the step's own controls and values at once; the scene's surfaces come with the result.
-  if (defer) panel_->setStep(parameters_, s.controls, false, {});
+  // The panel shows the step's own controls and values at once (not the previous step's while this one
+  // computes); the scene's surfaces come with the result.
+  panel_->setStep(parameters_, s.controls, false, {});
   if (defer && showKeptResult()) return true;
   if (defer) {
     // A long step of the restored session: the reader starts it.
@@ -283,10 +284,23 @@ void MainWindow::requestComputation() {
   } else {
     return;
   }
+  // An exercise or a page of text is computed in an instant: it never waits behind another step's long
+  // computation (which it cancels), nor shows that step's view while it would.
+  const auto stage = [this] {
+    return library_->lessons()[static_cast<std::size_t>(lesson_)]
+        .steps[static_cast<std::size_t>(step_)]
+        .stage;
+  };
+  const bool instant =
+      mode_ == Mode::Lesson && (stage() == lesson::Stage::Exercise || stage() == lesson::Stage::Text);
   if (blocking_)
     runner_->runBlocking(job);
-  else
+  else if (instant)
+    runner_->runNow(job);
+  else {
+    showStale(true);
     runner_->start(std::move(job));
+  }
 }
 
 void MainWindow::cancelComputation() {
@@ -308,6 +322,7 @@ bool MainWindow::waitUntilIdle(int timeoutMs) {
 void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   const bool newStep = newStepPending_ || !result_;
   newStepPending_ = false;
+  showStale(false);
   if (newStep) keptExposure_ = 0;
   showingKept_ = false;
   const bool longStep = recordComputeTime();
