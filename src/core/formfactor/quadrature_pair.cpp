@@ -103,8 +103,9 @@ double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound,
 // A convex polygon as panels (panelsOf()), appended to `out`. (Through a fan of its own: resizing `out` to
 // the most panels a polygon makes would zero them all, 3 kB for every pair.)
 void appendPanels(const SmallPolygon& polygon, std::vector<SourcePanel>& out) {
-  std::array<SourcePanel, SmallPolygon::kCapacity> fan;
-  const int made = panelsOf(polygon.v.data(), polygon.count, fan.data(), SmallPolygon::kCapacity);
+  SmallBuffer<SourcePanel, SmallPolygon::kInline> fan;
+  fan.reserve(std::max(1, polygon.count - 2));  // a fan has fewer panels than the polygon has corners
+  const int made = panelsOf(polygon.v.data(), polygon.count, fan.data(), fan.capacity());
   out.insert(out.end(), fan.begin(), fan.begin() + made);
 }
 

@@ -44,6 +44,7 @@ bool forEachEdgeCornerPlane(const Vec3* edges, int ne, const Vec3* others, int n
 
 // Only the corners in use: a SmallPolygon holds room for 32, and whole copies cost more than the clipping.
 inline void copyPolygon(const SmallPolygon& from, SmallPolygon& to) {
+  to.v.reserve(from.count);
   to.count = from.count;
   std::copy_n(from.v.begin(), from.count, to.v.begin());
 }
@@ -56,7 +57,8 @@ inline void copyPolygon(const SmallPolygon& from, SmallPolygon& to) {
 // needs both parts.
 inline int splitAt(const SmallPolygon& in, const Vec3& origin, const Vec3& normal, double margin2,
                    SmallPolygon& front, SmallPolygon* back) {
-  double side[SmallPolygon::kCapacity];
+  SmallBuffer<double, SmallPolygon::kInline> side;
+  side.reserve(in.count);
   bool anyBehind = false, anyFront = false;
   for (int k = 0; k < in.count; ++k) {
     double d = normal.dot(in.v[static_cast<std::size_t>(k)] - origin);
@@ -67,20 +69,23 @@ inline int splitAt(const SmallPolygon& in, const Vec3& origin, const Vec3& norma
   }
   if (!anyBehind) return 1;  // (a piece wholly on the plane, or a plane of no direction, cuts nothing)
   if (!anyFront) return -1;
+  // Each corner adds itself and a cut at most, whatever rounding says of the sides.
+  front.v.reserve(2 * in.count);
   front.count = 0;
-  if (back) back->count = 0;
-  for (int k = 0; k < in.count && front.count + 2 <= SmallPolygon::kCapacity; ++k) {
+  if (back) {
+    back->v.reserve(2 * in.count);
+    back->count = 0;
+  }
+  for (int k = 0; k < in.count; ++k) {
     const int next = (k + 1) % in.count;
     const double dp = side[k], dq = side[next];
     const Vec3& p = in.v[static_cast<std::size_t>(k)];
     if (dp >= 0) front.v[static_cast<std::size_t>(front.count++)] = p;
-    if (back && dp <= 0 && back->count < SmallPolygon::kCapacity)
-      back->v[static_cast<std::size_t>(back->count++)] = p;
+    if (back && dp <= 0) back->v[static_cast<std::size_t>(back->count++)] = p;
     if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0)) {
       const Vec3 cut = p + (in.v[static_cast<std::size_t>(next)] - p) * (dp / (dp - dq));
       front.v[static_cast<std::size_t>(front.count++)] = cut;
-      if (back && back->count < SmallPolygon::kCapacity)
-        back->v[static_cast<std::size_t>(back->count++)] = cut;
+      if (back) back->v[static_cast<std::size_t>(back->count++)] = cut;
     }
   }
   if (front.count < 3) front.count = 0;
