@@ -7,6 +7,7 @@
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/lambert_four.h"
 #include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/shadow_clipper_detail.h"
 #include "core/formfactor/solid_silhouette.h"
 
 namespace rt {
@@ -132,21 +133,21 @@ bool ShadowClipper::place(const Vec3& x, const HiddenForm& form, Vec3* v) const 
   }
   // Seen from x the outline must stay convex, turning the same way at every corner (to rounding, where a
   // corner nears the next); a form taken beyond its cell (across an event the cut missed) folds over.
-  SmallBuffer<double, SmallPolygon::kInline> turn;
   double low = 0, high = 0;
   const int n = form.count;
-  turn.reserve(n);
+  double local[SmallPolygon::kInline];
+  double* turn = n <= SmallPolygon::kInline ? local : shadow_detail::spilledHeights<2>(n);
   for (int k = 0; k < n; ++k) {
     const int k1 = k + 1 == n ? 0 : k + 1, k2 = k1 + 1 == n ? 0 : k1 + 1;  // (no modulo: a division each)
     const Vec3 a = v[k] - x, b = v[k1] - x, c = v[k2] - x;
     const double t = a.cross(b).dot(c);
-    turn[static_cast<std::size_t>(k)] = t;
+    turn[k] = t;
     low = std::min(low, t), high = std::max(high, t);
   }
   if (low < 0 && high > 0) {  // both ways: only by rounding, against the corners' distances
     const double sign = high > -low ? 1 : -1;
     for (int k = 0; k < n; ++k) {
-      const double t = turn[static_cast<std::size_t>(k)] * sign;
+      const double t = turn[k] * sign;
       if (t >= 0) continue;
       const double scale2 =
           (v[k] - x).squaredNorm() * (v[(k + 1) % n] - x).squaredNorm() * (v[(k + 2) % n] - x).squaredNorm();
@@ -161,7 +162,7 @@ bool ShadowClipper::hidden(const Vec3& x, const HiddenForm& form, double& value)
     value = 0;
     return true;
   }
-  SmallBuffer<Vec3, SmallPolygon::kInline> v;
+  SmallBuffer<Vec3, 4 * SmallPolygon::kInline>& v = placed_;
   v.reserve(form.count);
   if (!place(x, form, v.data())) return false;
   value = std::max(0.0, lambertContourSum(x, sourceNormal_, v.data(), form.count));
@@ -174,7 +175,7 @@ bool ShadowClipper::hidden4(const Vec3* x, const HiddenForm& form, double* value
     return true;
   }
   const int stride = form.count;
-  SmallBuffer<Vec3, 4 * SmallPolygon::kInline> v;
+  SmallBuffer<Vec3, 4 * SmallPolygon::kInline>& v = placed_;
   v.reserve(4 * stride);
   for (int p = 0; p < 4; ++p)
     if (!place(x[p], form, v.data() + p * stride)) return false;

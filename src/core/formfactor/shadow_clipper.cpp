@@ -23,8 +23,8 @@ bool clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& norm
   // Heights times the normal's length: within eps of the plane where d^2 <= eps^2 |normal|^2 (no root
   // or division per corner; the cut points depend only on the heights' ratios).
   const double margin2 = eps * eps * length2;
-  SmallBuffer<double, SmallPolygon::kInline> side;
-  side.reserve(count);
+  double local[SmallPolygon::kInline];
+  double* side = count <= SmallPolygon::kInline ? local : shadow_detail::spilledHeights<1>(count);
   bool anyBehind = false, anyFront = false;
   for (int k = 0; k < count; ++k) {
     double d = normal.dot(in[k] - origin);
@@ -233,8 +233,13 @@ double ShadowClipper::unoccluded(const Vec3& x) const {
 }
 
 bool ShadowClipper::cutCone(const Vec3& x, const Vec3* cone, int m, bool last, double& sum) const {
-  SmallBuffer<double, SmallPolygon::kInline>& margin2 = margin2_;  // (eps |n|)^2: splitAt's, no root
-  margin2.reserve(m);
+  // (eps |n|)^2: splitAt's margin, with no square root. On the stack for a cone of up to kInline planes.
+  double local[SmallPolygon::kInline];
+  double* margin2 = local;
+  if (m > SmallPolygon::kInline) {
+    margin2_.reserve(m);
+    margin2 = margin2_.data();
+  }
   for (int k = 0; k < m; ++k) margin2[k] = eps_ * eps_ * cone[k].squaredNorm();
   // next_ is a pool: its first nextCount slots are the pieces kept. Slots are added only when it grows, as
   // a new SmallPolygon is zeroed whole (768 bytes).
@@ -243,7 +248,7 @@ bool ShadowClipper::cutCone(const Vec3& x, const Vec3* cone, int m, bool last, d
     if (nextCount == static_cast<int>(next_.size())) next_.emplace_back();
     return next_[static_cast<std::size_t>(nextCount)];
   };
-  SmallPolygon buffers[2];
+  SmallPolygon* buffers = split_;
   bool anyLeft = false;  // of the receiver, some part outside this cone and every one before
   for (int p = 0; p < pieceCount_; ++p) {
     const SmallPolygon& piece = pieces_[static_cast<std::size_t>(p)];

@@ -229,6 +229,8 @@ class ShadowClipper {
   // clipHidden()'s cone and cutCone()'s margins: kept, so that an occluder of many corners allocates once.
   mutable SmallBuffer<Vec3, SmallPolygon::kInline> cone_;
   mutable SmallBuffer<double, SmallPolygon::kInline> margin2_;
+  mutable SmallPolygon split_[2];                                // cutCone()'s parts inside the cone
+  mutable SmallBuffer<Vec3, 4 * SmallPolygon::kInline> placed_;  // hidden forms' outlines, four at a time
   mutable int pendingCount_ = 0;
   mutable std::vector<signed char> outside_;       // per solid, for the current point: -1 not yet known
   mutable std::vector<PenumbraRegion> penumbrae_;  // per solid, made on first use

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/formfactor/shadow_clipper.h"
 
@@ -42,6 +43,16 @@ bool forEachEdgeCornerPlane(const Vec3* edges, int ne, const Vec3* others, int n
   return false;
 }
 
+// Room for n heights of a clip's corners past the stack array the hot loops use (SmallPolygon::kInline
+// of them): kept per thread and per `Site`, a caller's own, so that two clips in flight never share one. (A
+// SmallBuffer would put an object with a destructor in the clipper's innermost loop.)
+template <int Site>
+double* spilledHeights(int n) {
+  thread_local std::vector<double> heights;
+  if (static_cast<int>(heights.size()) < n) heights.resize(static_cast<std::size_t>(n));
+  return heights.data();
+}
+
 // Only the corners in use: a SmallPolygon holds room for 32, and whole copies cost more than the clipping.
 inline void copyPolygon(const SmallPolygon& from, SmallPolygon& to) {
   to.v.reserve(from.count);
@@ -57,8 +68,8 @@ inline void copyPolygon(const SmallPolygon& from, SmallPolygon& to) {
 // needs both parts.
 inline int splitAt(const SmallPolygon& in, const Vec3& origin, const Vec3& normal, double margin2,
                    SmallPolygon& front, SmallPolygon* back) {
-  SmallBuffer<double, SmallPolygon::kInline> side;
-  side.reserve(in.count);
+  double local[SmallPolygon::kInline];
+  double* side = in.count <= SmallPolygon::kInline ? local : spilledHeights<0>(in.count);
   bool anyBehind = false, anyFront = false;
   for (int k = 0; k < in.count; ++k) {
     double d = normal.dot(in.v[static_cast<std::size_t>(k)] - origin);

@@ -62,8 +62,16 @@ namespace {
 template <class Visit>
 int forEachSilhouetteEdge(const SolidShape& solid, const Vec3& x, double eps, Visit&& visit) {
   const int faceCount = static_cast<int>(solid.planes.size());
-  SmallBuffer<bool, 64> front;  // on the heap only for a solid of more faces (a prism of many sides)
-  front.reserve(faceCount);
+  // On the stack up to 64 faces; past that (a prism of many sides) in a per-thread array kept between calls,
+  // as this runs once per clipped point.
+  constexpr int kLocal = 64;
+  bool local[kLocal];
+  bool* front = local;
+  if (faceCount > kLocal) {
+    thread_local SmallBuffer<bool, 1> spilled;
+    spilled.reserve(faceCount);
+    front = spilled.data();
+  }
   bool any = false;
   for (int f = 0; f < faceCount; ++f) {
     const auto& [n, offset] = solid.planes[static_cast<std::size_t>(f)];
