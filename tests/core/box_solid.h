@@ -18,6 +18,7 @@ namespace rt {
 // A SmallPolygon from its corners.
 inline SmallPolygon polygon(std::initializer_list<Vec3> corners) {
   SmallPolygon p;
+  p.v.reserve(static_cast<int>(corners.size()));
   for (const Vec3& c : corners) p.v[static_cast<std::size_t>(p.count++)] = c;
   return p;
 }

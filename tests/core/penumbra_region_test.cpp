@@ -60,9 +60,7 @@ TEST(PenumbraRegion, NoRegionWhereTheBlockReachesTheReceiversHeight) {
   const Box block = box({1.0, 1.2, 0.0}, {1.6, 1.7, 2.0});
   // A wall element beside the block, lower than the block's top: seen from it, the block's top corners
   // project to infinity on the floor.
-  SmallPolygon wall;
-  wall.v = {Vec3{3, 0, 0.5}, {3, 3, 0.5}, {3, 3, 1.5}, {3, 0, 1.5}};
-  wall.count = 4;
+  const SmallPolygon wall = polygon({{3, 0, 0.5}, {3, 3, 0.5}, {3, 3, 1.5}, {3, 0, 1.5}});
   PenumbraRegion region;
   const SolidShape& shape = block.shapes[0];
   EXPECT_FALSE(region.build(shape.corners.data(), static_cast<int>(shape.corners.size()), wall.v.data(),

@@ -28,8 +28,8 @@ Seen hiddenAt(const ShadowClipper& clipper, const Vec3& x) {
 }
 
 double rule(const ShadowClipper& clipper, const SmallPolygon& cell, int n) {
-  std::array<SourcePanel, SmallPolygon::kCapacity> panels;
-  const int count = panelsOf(cell.v.data(), cell.count, panels.data(), SmallPolygon::kCapacity);
+  std::array<SourcePanel, SmallPolygon::kInline> panels;
+  const int count = panelsOf(cell.v.data(), cell.count, panels.data(), SmallPolygon::kInline);
   double sum = 0;
   for (int p = 0; p < count; ++p)
     forEachGaussPoint(panels[static_cast<std::size_t>(p)], n,

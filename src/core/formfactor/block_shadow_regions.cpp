@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "core/check.h"
+
 namespace rt {
 namespace {
 
@@ -43,8 +45,9 @@ bool BlockShadowRegion::build(const SolidShape& block, const Vec3* from, int fro
   u_ = normal.unitOrthogonal();
   v_ = normal.cross(u_);
   eps_ = eps;
-  // The block's projection from each corner of `from` (penumbra_.build has checked that each is bounded),
-  // intersected.
+  // The block's projection from each corner of `from` (penumbra_.build has checked that each is bounded,
+  // and refused a block of more corners than its points hold, which has no region), intersected.
+  RT_CHECK(corners <= kMaxHullPoints, "a block's region built with more corners than it holds");
   std::array<Eigen::Vector2d, kMaxHullPoints> points, hull;
   for (int r = 0; r < fromCount; ++r) {
     const double hr = normal.dot(from[r] - origin);

@@ -7,6 +7,7 @@
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/lambert_four.h"
 #include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/shadow_clipper_detail.h"
 #include "core/formfactor/solid_silhouette.h"
 
 namespace rt {
@@ -41,24 +42,27 @@ bool ShadowClipper::formOf(const Vec3& x, const std::vector<int>& occluders, Hid
   for (int k : occluders)
     if (prepared_[static_cast<std::size_t>(k)].solid != solid) return false;
   const SolidShape& shape = (*shapes_)[static_cast<std::size_t>(solid)];
-  constexpr int kCapacity = SmallPolygon::kCapacity;
-  std::array<SilhouetteEdge, kCapacity> edges;
-  const int m = silhouetteEdges(shape, x, eps_, edges.data(), kCapacity);
+  constexpr int kInline = SmallPolygon::kInline;
+  SmallBuffer<SilhouetteEdge, kInline> edges;
+  edges.reserve(static_cast<int>(shape.edges.size()));  // room for every edge: never -1 for want of it
+  const int m = silhouetteEdges(shape, x, eps_, edges.data(), edges.capacity());
   if (m < 3) return false;
   const int n = receiver_.count;
-  std::array<TaggedCorner, kCapacity> first, second;
-  TaggedCorner *in = first.data(), *out = second.data();  // swapped after each plane
+  SmallBuffer<TaggedCorner, kInline> first, second;
+  SmallBuffer<TaggedCorner, kInline>*in = &first, *out = &second;  // swapped after each plane
+  in->reserve(n);
+  SmallBuffer<double, kInline> side;
   for (int k = 0; k < n; ++k)
-    in[k] = {receiver_.v[static_cast<std::size_t>(k)], {Form::ReceiverCorner, k}, k};
+    (*in)[k] = {receiver_.v[static_cast<std::size_t>(k)], {Form::ReceiverCorner, k}, k};
   int count = n;
   bool cut = false;
   for (int p = 0; p < m; ++p) {
     const SilhouetteEdge& edge = edges[static_cast<std::size_t>(p)];
     const double margin2 = eps_ * eps_ * edge.normal.squaredNorm();
-    std::array<double, kCapacity> side;
+    side.reserve(count);
     bool anyBehind = false, anyFront = false;
     for (int k = 0; k < count; ++k) {
-      const double d = edge.normal.dot(in[k].p - x);
+      const double d = edge.normal.dot((*in)[k].p - x);
       if (d * d <= margin2) return false;  // a corner on the side plane: x on an event, the form ambiguous
       side[static_cast<std::size_t>(k)] = d;
       anyBehind |= d < 0;
@@ -69,15 +73,16 @@ bool ShadowClipper::formOf(const Vec3& x, const std::vector<int>& occluders, Hid
     if (!anyFront) return true;  // nothing hidden
     cut = true;
     int made = 0;
-    for (int k = 0; k < count && made + 2 <= kCapacity; ++k) {
+    out->reserve(2 * count);  // each corner adds itself and a cut at most
+    for (int k = 0; k < count; ++k) {
       const int next = (k + 1) % count;
       const double dp = side[static_cast<std::size_t>(k)], dq = side[static_cast<std::size_t>(next)];
-      const TaggedCorner& from = in[k];
-      if (dp > 0) out[made++] = from;
+      const TaggedCorner& from = (*in)[k];
+      if (dp > 0) (*out)[made++] = from;
       if ((dp > 0) == (dq > 0)) continue;
       // The edge from `from` leaves the cone (dp > 0) or enters it here: the new corner is where its line
       // meets the side plane, and the outline goes on along the plane, or along the old line.
-      TaggedCorner corner{from.p + (in[next].p - from.p) * (dp / (dp - dq)), {}, 0};
+      TaggedCorner corner{from.p + ((*in)[next].p - from.p) * (dp / (dp - dq)), {}, 0};
       if (from.line < n) {
         corner.tag = {Form::EdgeCut, from.line, edge.a, edge.b};
       } else {
@@ -86,7 +91,7 @@ bool ShadowClipper::formOf(const Vec3& x, const std::vector<int>& occluders, Hid
         corner.tag = {Form::SolidCorner, shared};
       }
       corner.line = dp > 0 ? n + p : from.line;
-      out[made++] = corner;
+      (*out)[made++] = corner;
     }
     std::swap(in, out);
     count = made;
@@ -95,10 +100,12 @@ bool ShadowClipper::formOf(const Vec3& x, const std::vector<int>& occluders, Hid
   form.solid = solid;
   form.count = count;
   form.wholly = !cut;
-  for (int k = 0; k < count; ++k) form.corners[static_cast<std::size_t>(k)] = in[k].tag;
+  form.corners.reserve(count);
+  for (int k = 0; k < count; ++k) form.corners[static_cast<std::size_t>(k)] = (*in)[k].tag;
   if (hidden && cut) {  // the clipped outline itself, as hidden(x, form) would place it
-    std::array<Vec3, kCapacity> corners;
-    for (int k = 0; k < count; ++k) corners[static_cast<std::size_t>(k)] = in[k].p;
+    SmallBuffer<Vec3, kInline> corners;
+    corners.reserve(count);
+    for (int k = 0; k < count; ++k) corners[static_cast<std::size_t>(k)] = (*in)[k].p;
     *hidden = std::max(0.0, lambertContourSum(x, sourceNormal_, corners.data(), count));
   }
   return true;
@@ -126,20 +133,21 @@ bool ShadowClipper::place(const Vec3& x, const HiddenForm& form, Vec3* v) const 
   }
   // Seen from x the outline must stay convex, turning the same way at every corner (to rounding, where a
   // corner nears the next); a form taken beyond its cell (across an event the cut missed) folds over.
-  std::array<double, SmallPolygon::kCapacity> turn;
   double low = 0, high = 0;
   const int n = form.count;
+  double local[SmallPolygon::kInline];
+  double* turn = n <= SmallPolygon::kInline ? local : shadow_detail::spilledHeights<2>(n);
   for (int k = 0; k < n; ++k) {
     const int k1 = k + 1 == n ? 0 : k + 1, k2 = k1 + 1 == n ? 0 : k1 + 1;  // (no modulo: a division each)
     const Vec3 a = v[k] - x, b = v[k1] - x, c = v[k2] - x;
     const double t = a.cross(b).dot(c);
-    turn[static_cast<std::size_t>(k)] = t;
+    turn[k] = t;
     low = std::min(low, t), high = std::max(high, t);
   }
   if (low < 0 && high > 0) {  // both ways: only by rounding, against the corners' distances
     const double sign = high > -low ? 1 : -1;
     for (int k = 0; k < n; ++k) {
-      const double t = turn[static_cast<std::size_t>(k)] * sign;
+      const double t = turn[k] * sign;
       if (t >= 0) continue;
       const double scale2 =
           (v[k] - x).squaredNorm() * (v[(k + 1) % n] - x).squaredNorm() * (v[(k + 2) % n] - x).squaredNorm();
@@ -154,7 +162,8 @@ bool ShadowClipper::hidden(const Vec3& x, const HiddenForm& form, double& value)
     value = 0;
     return true;
   }
-  std::array<Vec3, SmallPolygon::kCapacity> v;
+  SmallBuffer<Vec3, 4 * SmallPolygon::kInline>& v = placed_;
+  v.reserve(form.count);
   if (!place(x, form, v.data())) return false;
   value = std::max(0.0, lambertContourSum(x, sourceNormal_, v.data(), form.count));
   return true;
@@ -165,11 +174,12 @@ bool ShadowClipper::hidden4(const Vec3* x, const HiddenForm& form, double* value
     std::fill(values, values + 4, 0.0);
     return true;
   }
-  constexpr int kStride = SmallPolygon::kCapacity;
-  std::array<Vec3, 4 * kStride> v;
+  const int stride = form.count;
+  SmallBuffer<Vec3, 4 * SmallPolygon::kInline>& v = placed_;
+  v.reserve(4 * stride);
   for (int p = 0; p < 4; ++p)
-    if (!place(x[p], form, v.data() + p * kStride)) return false;
-  lambertContourSum4(x, sourceNormal_, v.data(), kStride, form.count, values);
+    if (!place(x[p], form, v.data() + p * stride)) return false;
+  lambertContourSum4(x, sourceNormal_, v.data(), stride, form.count, values);
   for (int p = 0; p < 4; ++p) values[p] = std::max(0.0, values[p]);
   return true;
 }

@@ -80,6 +80,12 @@ class QuadratureMethod : public FormFactorMethod {
                    std::to_string(total.eventPairs) +
                    " pairs integrated over cells cut along visibility events (" +
                    std::to_string(total.apartPairs) + " of them solid by solid, their shadows apart)";
+    if (scene.solids.size() >= 2 && !scene.apartTested())
+      stats.notes += ", no proof that two solids' shadows stay apart (" +
+                     std::to_string(scene.solids.size()) + " solids on " + std::to_string(mesh.size()) +
+                     " elements would need a table of more than " +
+                     std::to_string(QuadratureScene::kMaxApartEntries) +
+                     " entries): pairs that several solids shade take the adaptive rules";
     if (total.budgetPairs > 0)
       stats.notes += ", " + std::to_string(total.budgetPairs) + " pairs reached the work bound (depth " +
                      std::to_string(HiddenIntegral::kMaxDepth) + ", " +

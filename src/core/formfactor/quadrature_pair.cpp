@@ -100,12 +100,14 @@ double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound,
   return sum;
 }
 
-// A convex polygon as panels (panelsOf()), appended to `out`. (Through a fan of its own: resizing `out` to
-// the most panels a polygon makes would zero them all, 3 kB for every pair.)
+// A convex polygon as panels (panelsOf()), appended to `out`: room for exactly the panels its fan makes
+// (one, or (count - 1) / 2), so whatever its corner count all of it is kept and little is zeroed.
 void appendPanels(const SmallPolygon& polygon, std::vector<SourcePanel>& out) {
-  std::array<SourcePanel, SmallPolygon::kCapacity> fan;
-  const int made = panelsOf(polygon.v.data(), polygon.count, fan.data(), SmallPolygon::kCapacity);
-  out.insert(out.end(), fan.begin(), fan.begin() + made);
+  const std::size_t first = out.size();
+  out.resize(first + static_cast<std::size_t>(std::max(1, (polygon.count - 1) / 2)));
+  const int made =
+      panelsOf(polygon.v.data(), polygon.count, out.data() + first, static_cast<int>(out.size() - first));
+  out.resize(first + static_cast<std::size_t>(made));
 }
 
 // Convex polygons as panels, into `out`.

@@ -97,7 +97,9 @@ QuadratureScene::QuadratureScene(const Mesh& mesh_, const ShaftCulling& shafts_)
   regionEps = 1e-10 * size;
   contactRegions = std::make_unique<ContactShadowRegions>(shapes, static_cast<int>(polygons.size()), polygons,
                                                           normals, regionEps);
-  if (solids.size() >= 2 && solids.size() <= static_cast<std::size_t>(kMaxPairedSolids))
+  const double entries =
+      static_cast<double>(mesh.size()) * static_cast<double>(solids.size() * solids.size());
+  if (solids.size() >= 2 && entries <= static_cast<double>(kMaxApartEntries))
     outsideHull_ = std::vector<std::atomic<signed char>>(mesh.size() * solids.size() * solids.size());
 }
 

@@ -54,10 +54,12 @@ struct QuadratureScene {
 
   // Whether no segment from element `source` to element `receiver` passes through both solids (proven as
   // shadow_overlap.h says): then what they hide of the pair is the sum of what each hides alone. The hull
-  // tests it rests on are each of one element and two solids, made on first use and kept; false (unproven)
-  // in scenes of more than kMaxPairedSolids solids.
+  // tests it rests on are each of one element and two solids, made on first use and kept in a table of one
+  // byte per element and ordered pair of solids; where that would exceed kMaxApartEntries, false (unproven:
+  // such pairs take the adaptive rules, which need no proof) and apartTested() says so for the notes.
   bool shadowsApart(int source, int receiver, int a, int b) const;
-  static constexpr int kMaxPairedSolids = 16;
+  bool apartTested() const { return !outsideHull_.empty(); }
+  static constexpr std::size_t kMaxApartEntries = std::size_t{1} << 24;
 
  private:
   // Whether solid `other` lies outside the convex hull of solid `near` and the element (kept).

@@ -23,7 +23,8 @@ bool clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& norm
   // Heights times the normal's length: within eps of the plane where d^2 <= eps^2 |normal|^2 (no root
   // or division per corner; the cut points depend only on the heights' ratios).
   const double margin2 = eps * eps * length2;
-  double side[SmallPolygon::kCapacity];
+  double local[SmallPolygon::kInline];
+  double* side = count <= SmallPolygon::kInline ? local : shadow_detail::spilledHeights<1>(count);
   bool anyBehind = false, anyFront = false;
   for (int k = 0; k < count; ++k) {
     double d = normal.dot(in[k] - origin);
@@ -34,11 +35,13 @@ bool clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& norm
   }
   if (!anyFront) return false;
   if (!anyBehind) {
+    out.v.reserve(count);
     for (int k = 0; k < count; ++k) out.v[static_cast<std::size_t>(k)] = in[k];
     out.count = count;
     return true;
   }
-  for (int k = 0; k < count && out.count + 2 <= SmallPolygon::kCapacity; ++k) {
+  out.v.reserve(2 * count);  // each corner adds itself and a cut at most, whatever rounding says
+  for (int k = 0; k < count; ++k) {
     const int next = (k + 1) % count;
     const double dp = side[k], dq = side[next];
     if (dp >= 0) out.v[static_cast<std::size_t>(out.count++)] = in[k];
@@ -97,9 +100,10 @@ void ShadowClipper::prepare(const SmallPolygon& source, const Vec3& sourceNormal
   for (const OccluderPolygon& occluder : occluders) {
     const std::vector<Vec3>* polygon = occluder.polygon;
     const int count = static_cast<int>(polygon->size());
-    if (count < 3 || count > SmallPolygon::kCapacity - 4) continue;
+    if (count < 3) continue;
     Occluder& o = prepared_.emplace_back();
     if (wholeSolid(occluder.solid)) {
+      o.polygon.v.reserve(count);
       o.polygon.count = count;
       std::copy(polygon->begin(), polygon->end(), o.polygon.v.begin());
     } else {
@@ -229,7 +233,13 @@ double ShadowClipper::unoccluded(const Vec3& x) const {
 }
 
 bool ShadowClipper::cutCone(const Vec3& x, const Vec3* cone, int m, bool last, double& sum) const {
-  double margin2[SmallPolygon::kCapacity];  // (eps |n|)^2: splitAt's margin, with no square root
+  // (eps |n|)^2: splitAt's margin, with no square root. On the stack for a cone of up to kInline planes.
+  double local[SmallPolygon::kInline];
+  double* margin2 = local;
+  if (m > SmallPolygon::kInline) {
+    margin2_.reserve(m);
+    margin2 = margin2_.data();
+  }
   for (int k = 0; k < m; ++k) margin2[k] = eps_ * eps_ * cone[k].squaredNorm();
   // next_ is a pool: its first nextCount slots are the pieces kept. Slots are added only when it grows, as
   // a new SmallPolygon is zeroed whole (768 bytes).
@@ -238,7 +248,7 @@ bool ShadowClipper::cutCone(const Vec3& x, const Vec3* cone, int m, bool last, d
     if (nextCount == static_cast<int>(next_.size())) next_.emplace_back();
     return next_[static_cast<std::size_t>(nextCount)];
   };
-  SmallPolygon buffers[2];
+  SmallPolygon* buffers = split_;
   bool anyLeft = false;  // of the receiver, some part outside this cone and every one before
   for (int p = 0; p < pieceCount_; ++p) {
     const SmallPolygon& piece = pieces_[static_cast<std::size_t>(p)];
@@ -340,7 +350,7 @@ void ShadowClipper::clipHidden(const Vec3& x, const std::vector<int>& occluders,
   if (pieces_.empty()) pieces_.emplace_back();
   copyPolygon(receiver_, pieces_[0]);
   pieceCount_ = 1;
-  std::array<Vec3, SmallPolygon::kCapacity> cone;
+  SmallBuffer<Vec3, SmallPolygon::kInline>& cone = cone_;
   outside_.assign(solids_.size(), -1);
   if (shapes_) cut_.assign(whole_.size(), 0);
   // From `tail` on, every occluder bounds one solid wholly in front: cut by its silhouette there, it is the
@@ -361,8 +371,9 @@ void ShadowClipper::clipHidden(const Vec3& x, const std::vector<int>& occluders,
       signed char& cut = cut_[static_cast<std::size_t>(o.solid)];
       if (cut == 1) continue;  // the solid's silhouette is cut already
       if (cut == 0) {
-        const int m = silhouetteCone((*shapes_)[static_cast<std::size_t>(o.solid)], x, eps_, cone.data(),
-                                     SmallPolygon::kCapacity);
+        const SolidShape& shape = (*shapes_)[static_cast<std::size_t>(o.solid)];
+        cone.reserve(static_cast<int>(shape.edges.size()));  // room for every edge: never -1 for want of it
+        const int m = silhouetteCone(shape, x, eps_, cone.data(), cone.capacity());
         cut = m >= 3 ? 1 : 2;  // x not outside (or a degenerate silhouette): face by face
         if (cut == 1) {
           anyLeft = cutCone(x, cone.data(), m, position >= tail, sum);
@@ -382,6 +393,7 @@ void ShadowClipper::clipHidden(const Vec3& x, const std::vector<int>& occluders,
       if (outside == 1) continue;  // a back face of a solid x is outside of: its front faces cover it
     }
     const int m = o.polygon.count;
+    cone.reserve(m);
     for (int k = 0; k < m; ++k) {
       const Vec3 a = o.polygon.v[static_cast<std::size_t>(k)] - x,
                  b = o.polygon.v[static_cast<std::size_t>((k + 1) % m)] - x;

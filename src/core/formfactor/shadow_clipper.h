@@ -19,15 +19,17 @@
 #include <vector>
 
 #include "core/formfactor/penumbra_region.h"
+#include "core/formfactor/small_buffer.h"
 #include "core/formfactor/source_panels.h"
 #include "core/vec.h"
 
 namespace rt {
 
-// A convex polygon of bounded size: each clip by a plane adds at most one vertex.
+// A convex polygon, its corners inline up to kInline (each clip by a plane adds at most one) and on the heap
+// past that: an occluder or a clipped piece of any corner count keeps them all. Writers reserve first.
 struct SmallPolygon {
-  static constexpr int kCapacity = 32;
-  std::array<Vec3, kCapacity> v;
+  static constexpr int kInline = 32;
+  SmallBuffer<Vec3, kInline> v;
   int count = 0;
 };
 
@@ -156,7 +158,7 @@ class ShadowClipper {
       int a = 0;         // the receiver's or the solid's corner; for EdgeCut, the receiver edge from corner a
       int b = 0, c = 0;  // EdgeCut: the silhouette edge's corners
     };
-    std::array<Corner, SmallPolygon::kCapacity> corners;
+    SmallBuffer<Corner, SmallPolygon::kInline> corners;
     int count = 0;        // 0: nothing hidden
     bool wholly = false;  // the whole receiver hidden
     int solid = -1;
@@ -224,6 +226,11 @@ class ShadowClipper {
     double* sum = nullptr;
   };
   mutable std::array<Pending, 4> pending_;
+  // clipHidden()'s cone and cutCone()'s margins: kept, so that an occluder of many corners allocates once.
+  mutable SmallBuffer<Vec3, SmallPolygon::kInline> cone_;
+  mutable SmallBuffer<double, SmallPolygon::kInline> margin2_;
+  mutable SmallPolygon split_[2];                                // cutCone()'s parts inside the cone
+  mutable SmallBuffer<Vec3, 4 * SmallPolygon::kInline> placed_;  // hidden forms' outlines, four at a time
   mutable int pendingCount_ = 0;
   mutable std::vector<signed char> outside_;       // per solid, for the current point: -1 not yet known
   mutable std::vector<PenumbraRegion> penumbrae_;  // per solid, made on first use

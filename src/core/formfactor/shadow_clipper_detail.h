@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/formfactor/shadow_clipper.h"
 
@@ -42,8 +43,19 @@ bool forEachEdgeCornerPlane(const Vec3* edges, int ne, const Vec3* others, int n
   return false;
 }
 
+// Room for n heights of a clip's corners past the stack array the hot loops use (SmallPolygon::kInline
+// of them): kept per thread and per `Site`, a caller's own, so that two clips in flight never share one. (A
+// SmallBuffer would put an object with a destructor in the clipper's innermost loop.)
+template <int Site>
+double* spilledHeights(int n) {
+  thread_local std::vector<double> heights;
+  if (static_cast<int>(heights.size()) < n) heights.resize(static_cast<std::size_t>(n));
+  return heights.data();
+}
+
 // Only the corners in use: a SmallPolygon holds room for 32, and whole copies cost more than the clipping.
 inline void copyPolygon(const SmallPolygon& from, SmallPolygon& to) {
+  to.v.reserve(from.count);
   to.count = from.count;
   std::copy_n(from.v.begin(), from.count, to.v.begin());
 }
@@ -56,7 +68,8 @@ inline void copyPolygon(const SmallPolygon& from, SmallPolygon& to) {
 // needs both parts.
 inline int splitAt(const SmallPolygon& in, const Vec3& origin, const Vec3& normal, double margin2,
                    SmallPolygon& front, SmallPolygon* back) {
-  double side[SmallPolygon::kCapacity];
+  double local[SmallPolygon::kInline];
+  double* side = in.count <= SmallPolygon::kInline ? local : spilledHeights<0>(in.count);
   bool anyBehind = false, anyFront = false;
   for (int k = 0; k < in.count; ++k) {
     double d = normal.dot(in.v[static_cast<std::size_t>(k)] - origin);
@@ -67,20 +80,23 @@ inline int splitAt(const SmallPolygon& in, const Vec3& origin, const Vec3& norma
   }
   if (!anyBehind) return 1;  // (a piece wholly on the plane, or a plane of no direction, cuts nothing)
   if (!anyFront) return -1;
+  // Each corner adds itself and a cut at most, whatever rounding says of the sides.
+  front.v.reserve(2 * in.count);
   front.count = 0;
-  if (back) back->count = 0;
-  for (int k = 0; k < in.count && front.count + 2 <= SmallPolygon::kCapacity; ++k) {
+  if (back) {
+    back->v.reserve(2 * in.count);
+    back->count = 0;
+  }
+  for (int k = 0; k < in.count; ++k) {
     const int next = (k + 1) % in.count;
     const double dp = side[k], dq = side[next];
     const Vec3& p = in.v[static_cast<std::size_t>(k)];
     if (dp >= 0) front.v[static_cast<std::size_t>(front.count++)] = p;
-    if (back && dp <= 0 && back->count < SmallPolygon::kCapacity)
-      back->v[static_cast<std::size_t>(back->count++)] = p;
+    if (back && dp <= 0) back->v[static_cast<std::size_t>(back->count++)] = p;
     if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0)) {
       const Vec3 cut = p + (in.v[static_cast<std::size_t>(next)] - p) * (dp / (dp - dq));
       front.v[static_cast<std::size_t>(front.count++)] = cut;
-      if (back && back->count < SmallPolygon::kCapacity)
-        back->v[static_cast<std::size_t>(back->count++)] = cut;
+      if (back) back->v[static_cast<std::size_t>(back->count++)] = cut;
     }
   }
   if (front.count < 3) front.count = 0;

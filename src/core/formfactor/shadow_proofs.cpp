@@ -95,12 +95,13 @@ bool solidOutsideHullOf(const Vec3* a, int na, const Vec3* b, int nb, const Vec3
 
 bool solidCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
                            const SolidPlanes& solid, const Vec3& centre, double eps) {
-  if (fromCount < 1 || toCount < 1 || toCount > SmallPolygon::kCapacity) return false;
+  if (fromCount < 1 || toCount < 1) return false;
   Vec3 fromCentre = Vec3::Zero(), toCentre = Vec3::Zero();
   for (int p = 0; p < fromCount; ++p) fromCentre += from[p];
   for (int p = 0; p < toCount; ++p) toCentre += to[p];
   const Vec3 sight = (toCentre / toCount - fromCentre / fromCount).normalized();
-  double heights[SmallPolygon::kCapacity];
+  SmallBuffer<double, SmallPolygon::kInline> heights;
+  heights.reserve(toCount);
   for (std::size_t plane = 0; plane <= solid.size(); ++plane) {
     const Vec3 normal = plane == 0 ? sight : solid[plane - 1].first;
     const double offset = normal.dot(centre);
@@ -186,7 +187,8 @@ double ShadowClipper::probeShadow(const SourcePanel& panel, const std::vector<in
     best = std::max(best, hidden(x, occluders));
     ++points;
   };
-  double receiverHeight[SmallPolygon::kCapacity];
+  SmallBuffer<double, SmallPolygon::kInline> receiverHeight;
+  receiverHeight.reserve(receiver_.count);
   for (int r = 0; r < receiver_.count; ++r)
     receiverHeight[r] = sourceNormal_.dot(receiver_.v[static_cast<std::size_t>(r)] - origin);
   // The point of the source plane on the line from r through o, when o lies between the plane and r (o
@@ -203,15 +205,17 @@ double ShadowClipper::probeShadow(const SourcePanel& panel, const std::vector<in
   // shadows that the front faces' missed on the 612-wall grid room, 1.2e-5 off without them.)
   std::vector<Vec3>& probedCorners = probed_;
   probedCorners.clear();
+  SmallBuffer<double, SmallPolygon::kInline> heights;  // of an occluder's corners
   for (int index : occluders) {
     const Occluder& occluder = prepared_[static_cast<std::size_t>(index)];
     const SmallPolygon& o = occluder.polygon;
-    double oHeight[SmallPolygon::kCapacity];
+    heights.reserve(o.count);
     for (int k = 0; k < o.count; ++k)
-      oHeight[k] = sourceNormal_.dot(o.v[static_cast<std::size_t>(k)] - origin);
+      heights[k] = sourceNormal_.dot(o.v[static_cast<std::size_t>(k)] - origin);
+    projected.v.reserve(std::max(o.count, receiver_.count));
     for (int r = 0; r < receiver_.count; ++r) {
       projected.count = 0;
-      for (int k = 0; k < o.count; ++k) through(r, o.v[static_cast<std::size_t>(k)], oHeight[k]);
+      for (int k = 0; k < o.count; ++k) through(r, o.v[static_cast<std::size_t>(k)], heights[k]);
       probe();
     }
     for (int k = 0; k < o.count; ++k) {
@@ -221,7 +225,7 @@ double ShadowClipper::probeShadow(const SourcePanel& panel, const std::vector<in
         probedCorners.push_back(corner);
       }
       projected.count = 0;
-      for (int r = 0; r < receiver_.count; ++r) through(r, corner, oHeight[k]);
+      for (int r = 0; r < receiver_.count; ++r) through(r, corner, heights[k]);
       probe();
     }
   }

@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "core/formfactor/closed_solids.h"
+#include "core/formfactor/small_buffer.h"
 
 namespace rt {
 namespace {
@@ -57,14 +58,20 @@ std::vector<SolidShape> solidShapes(const std::vector<const std::vector<Vec3>*>&
 namespace {
 
 // visit(a, b, n) for each silhouette edge from x (corners a, b; n the inward side plane). Returns their
-// number: 0 when x is not outside the solid, -1 when the solid has too many faces or `visit` refuses one
-// (full).
+// number: 0 when x is not outside the solid, -1 when `visit` refuses one (full).
 template <class Visit>
 int forEachSilhouetteEdge(const SolidShape& solid, const Vec3& x, double eps, Visit&& visit) {
-  constexpr int kMaxFaces = 64;
   const int faceCount = static_cast<int>(solid.planes.size());
-  if (faceCount > kMaxFaces) return -1;
-  bool front[kMaxFaces];
+  // On the stack up to 64 faces; past that (a prism of many sides) in a per-thread array kept between calls,
+  // as this runs once per clipped point.
+  constexpr int kLocal = 64;
+  bool local[kLocal];
+  bool* front = local;
+  if (faceCount > kLocal) {
+    thread_local SmallBuffer<bool, 1> spilled;
+    spilled.reserve(faceCount);
+    front = spilled.data();
+  }
   bool any = false;
   for (int f = 0; f < faceCount; ++f) {
     const auto& [n, offset] = solid.planes[static_cast<std::size_t>(f)];

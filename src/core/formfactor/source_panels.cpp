@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/check.h"
+
 namespace rt {
 namespace {
 
@@ -61,6 +63,7 @@ std::array<SourcePanel, 4> SourcePanel::split() const {
 }
 
 void gaussPoints(const SourcePanel& panel, int n, PanelPoints& out) {
+  RT_CHECK(n >= 1 && n * n <= PanelPoints::kMax, "a Gauss rule of more points than PanelPoints holds");
   out.count = 0;
   forEachGaussPoint(panel, n, [&](const Vec3& x, double w) {
     out.x[static_cast<std::size_t>(out.count)] = x;
@@ -109,6 +112,8 @@ int panelsOf(const Vec3* polygon, int count, SourcePanel* out, int capacity) {
   }
   // A fan of quadrilaterals from the first corner (convex, as the polygon is), the last one a triangle when
   // the count is odd: half the panels of a fan of triangles, each by the tensor rule.
+  // A caller's room for fewer panels than the fan has would drop part of the polygon: a bug, not a limit.
+  RT_CHECK(capacity >= (count - 1) / 2, "room for fewer panels than the polygon's fan has");
   int made = 0;
   int t = 1;
   for (; t + 2 < count && made < capacity; t += 2)

@@ -91,6 +91,7 @@ class SourceRegion {
   // The edges' unit inward normals, made on the first segment's test (most pairs have none).
   void makeInward() const {
     const Vec3 centre = centreOf(source_);
+    inward_.reserve(source_.count);
     for (int k = 0; k < source_.count; ++k) {
       const Vec3& p = source_.v[static_cast<std::size_t>(k)];
       Vec3 inward = normal_.cross(source_.v[static_cast<std::size_t>((k + 1) % source_.count)] - p);
@@ -100,7 +101,7 @@ class SourceRegion {
     }
     inwardMade_ = true;
   }
-  mutable std::array<Vec3, SmallPolygon::kCapacity> inward_;
+  mutable SmallBuffer<Vec3, SmallPolygon::kInline> inward_;
   mutable bool inwardMade_ = false;
 };
 
@@ -139,7 +140,8 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
   // Receiver corner r behind occluder edge ab (EV), and occluder corner v in front of receiver edge r1 r2
   // (VE): from x the point nearer the source's plane hides the one farther. Heights first: most candidates
   // end there, before any cross product.
-  std::array<double, SmallPolygon::kCapacity> receiverHeight;
+  SmallBuffer<double, SmallPolygon::kInline> receiverHeight;
+  receiverHeight.reserve(receiver_.count);
   for (int k = 0; k < receiver_.count; ++k)
     receiverHeight[static_cast<std::size_t>(k)] = region.height(receiver_.v[static_cast<std::size_t>(k)]);
   auto edgeEvents = [&](const Vec3& a, const Vec3& b) {
@@ -181,11 +183,16 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
 
   // A whole solid: its edges that are on the silhouette from some point of the source (their two faces not
   // both seen from the front, nor both from behind, from all of it), and their corners. Those edges and
-  // corners are marked in `edgeUsed` and `cornerUsed` for the events between two solids.
-  using Marks = std::array<bool, 64>;
+  // corners are marked in `edgeUsed` and `cornerUsed` for the events between two solids. Every edge, corner
+  // and face has its mark: one left out would leave its events out, and a cell across them would be taken
+  // as one form.
+  using Marks = SmallBuffer<bool, 64>;
   auto solidEvents = [&](const SolidShape& shape, Marks& edgeUsed, Marks& cornerUsed) {
-    std::array<signed char, 64> facing{};  // per face: 1 all front, -1 all behind, 0 mixed or edge-on
-    const std::size_t faces = std::min<std::size_t>(shape.planes.size(), facing.size());
+    const std::size_t faces = shape.planes.size();
+    SmallBuffer<signed char, 64> facing;  // per face: 1 all front, -1 all behind, 0 mixed or edge-on
+    facing.assign(static_cast<int>(faces), 0);
+    edgeUsed.assign(static_cast<int>(shape.edges.size()), false);
+    cornerUsed.assign(static_cast<int>(shape.corners.size()), false);
     for (std::size_t f = 0; f < faces; ++f) {
       const auto& [n, offset] = shape.planes[f];
       bool front = true, behind = true;
@@ -197,22 +204,21 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
       facing[f] = front ? 1 : behind ? -1 : 0;
       if (!front && !behind) faceEvent(n * offset, n);
     }
-    for (std::size_t e = 0; e < shape.edges.size() && e < edgeUsed.size(); ++e) {
+    for (std::size_t e = 0; e < shape.edges.size(); ++e) {
       const SolidShape::Edge& edge = shape.edges[e];
-      const signed char l = static_cast<std::size_t>(edge.left) < faces ? facing[edge.left] : 0,
-                        r = static_cast<std::size_t>(edge.right) < faces ? facing[edge.right] : 0;
+      const signed char l = facing[static_cast<std::size_t>(edge.left)],
+                        r = facing[static_cast<std::size_t>(edge.right)];
       if (l != 0 && l == r) continue;
       edgeUsed[e] = true;
       edgeEvents(shape.corners[static_cast<std::size_t>(edge.a)],
                  shape.corners[static_cast<std::size_t>(edge.b)]);
-      for (int c : {edge.a, edge.b})
-        if (static_cast<std::size_t>(c) < cornerUsed.size()) cornerUsed[static_cast<std::size_t>(c)] = true;
+      for (int c : {edge.a, edge.b}) cornerUsed[static_cast<std::size_t>(c)] = true;
     }
-    for (std::size_t c = 0; c < shape.corners.size() && c < cornerUsed.size(); ++c)
+    for (std::size_t c = 0; c < shape.corners.size(); ++c)
       if (cornerUsed[c]) cornerEvents(shape.corners[c]);
   };
   if (isWhole(solid) && second < 0) {
-    Marks edges{}, corners{};
+    Marks edges, corners;
     solidEvents((*shapes_)[static_cast<std::size_t>(solid)], edges, corners);
     return true;
   }
@@ -222,15 +228,15 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
     // crossing of two shadow edges sliding over a receiver edge, is not a plane (visibility_events.h).
     const std::array<const SolidShape*, 2> shapes = {&(*shapes_)[static_cast<std::size_t>(solid)],
                                                      &(*shapes_)[static_cast<std::size_t>(second)]};
-    std::array<Marks, 2> edges{}, corners{};
+    std::array<Marks, 2> edges, corners;
     for (std::size_t s = 0; s < 2; ++s) solidEvents(*shapes[s], edges[s], corners[s]);
     for (std::size_t s = 0; s < 2; ++s) {
       const SolidShape &one = *shapes[s], &other = *shapes[1 - s];
-      for (std::size_t c = 0; c < one.corners.size() && c < corners[s].size(); ++c) {
+      for (std::size_t c = 0; c < one.corners.size(); ++c) {
         if (!corners[s][c]) continue;
         const Vec3& v = one.corners[c];
         const double hv = region.height(v);
-        for (std::size_t e = 0; e < other.edges.size() && e < edges[1 - s].size(); ++e) {
+        for (std::size_t e = 0; e < other.edges.size(); ++e) {
           if (!edges[1 - s][e]) continue;
           const Vec3 &a = other.corners[static_cast<std::size_t>(other.edges[e].a)],
                      &b = other.corners[static_cast<std::size_t>(other.edges[e].b)];
@@ -270,6 +276,7 @@ bool cutAlongEvents(const SourcePanel& panel, const std::vector<EventPlane>& pla
                     std::vector<SmallPolygon>& cells) {
   const std::size_t first = cells.size();
   SmallPolygon& whole = cells.emplace_back();
+  whole.v.reserve(panel.count);
   whole.count = panel.count;
   std::copy_n(panel.v.begin(), panel.count, whole.v.begin());
   SmallPolygon front, back;
