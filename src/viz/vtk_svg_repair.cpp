@@ -18,6 +18,21 @@ void replaceAll(std::string& svg, const std::string& from, const std::string& to
     svg.replace(at, from.size(), to);
 }
 
+// Passes the value of every `name` attribute through `rewrite`.
+template <typename Rewrite>
+void rewriteAttribute(std::string& svg, const std::string& name, Rewrite rewrite) {
+  const std::string attribute = name + "=\"";
+  for (std::size_t at = 0; (at = svg.find(attribute, at)) != std::string::npos;) {
+    at += attribute.size();
+    const std::size_t end = svg.find('"', at);
+    if (end == std::string::npos) return;
+    std::string value = svg.substr(at, end - at);
+    rewrite(value);
+    svg.replace(at, end - at, value);
+    at += value.size();
+  }
+}
+
 // vtkSVGExporter clips a chart's plotted lines with a <g> that has both a transform (data to page) and a
 // clip-path whose rectangle is in page units. SVG applies the clip in the group's own, transformed, units,
 // so browsers (and the book's PDF) clip every line away. Splitting the group in two, the clip outside and the
@@ -68,13 +83,10 @@ void placeTextOnItsBaseline(std::string& svg) {
 // vtkSVGExporter writes VTK's font size, which VTK draws as pixels (its text renderer works at 72 dpi), in
 // points: every text is a third larger than VTK laid it out, wider than the room left for it.
 void sizeTextInPixels(std::string& svg) {
-  const std::string attribute = "font-size=\"";
-  for (std::size_t at = 0; (at = svg.find(attribute, at)) != std::string::npos;) {
-    at += attribute.size();
-    const std::size_t end = svg.find('"', at);
-    if (end == std::string::npos) return;
-    if (end >= at + 2 && svg.compare(end - 2, 2, "pt") == 0) svg.replace(end - 2, 2, "px");
-  }
+  rewriteAttribute(svg, "font-size", [](std::string& size) {
+    if (size.size() > 2 && size.compare(size.size() - 2, 2, "pt") == 0)
+      size.replace(size.size() - 2, 2, "px");
+  });
 }
 
 // vtkSVGExporter writes right- and left-justified text as text-anchor="right" and "left", which SVG does not
@@ -115,17 +127,9 @@ void turnTextAsVtkDrewIt(std::string& svg) {
 // vtkSVGExporter names the font VTK drew with (its built-in "URW Gothic L"), which viewers seldom have: a
 // browser then falls back to its default, a serif. The generic family after it keeps the text sans serif.
 void fallBackToSansSerif(std::string& svg) {
-  const std::string attribute = "font-family=\"";
-  for (std::size_t at = 0; (at = svg.find(attribute, at)) != std::string::npos;) {
-    at += attribute.size();
-    const std::size_t end = svg.find('"', at);
-    if (end == std::string::npos) return;
-    const std::string family = svg.substr(at, end - at);
-    if (family.find(',') != std::string::npos) continue;
-    const std::string families = "'" + family + "', sans-serif";
-    svg.replace(at, end - at, families);
-    at += families.size();
-  }
+  rewriteAttribute(svg, "font-family", [](std::string& family) {
+    if (family.find(',') == std::string::npos) family = "'" + family + "', sans-serif";
+  });
 }
 
 // The text of an element as VTK had it: entities undone, the layout's white space around it dropped.

@@ -54,9 +54,39 @@ double darkness(const RenderedChart& c, int x, int y) {
 // onto its labels covers them by the whole height of its letters, 12 pixels or more.
 constexpr double kTouching = 8.0;
 
+// The line (of `lines`, each `length` pixels long) whose pixels are darkest in sum; darkness(line, k).
+template <typename Darkness>
+int darkestLine(int lines, int length, Darkness darkness) {
+  int darkest = 0;
+  double best = -1;
+  for (int l = 0; l < lines; ++l) {
+    double sum = 0;
+    for (int k = 0; k < length; ++k) sum += darkness(l, k);
+    if (sum > best) {
+      best = sum;
+      darkest = l;
+    }
+  }
+  return darkest;
+}
+
 bool overlap(const Word& a, const Word& b, double margin) {
   return a.xMin + margin < b.xMax && b.xMin + margin < a.xMax && a.yMin + margin < b.yMax &&
          b.yMin + margin < a.yMax;
+}
+
+// For every pixel that is on, the length of the run of pixels on through it along its line: `lines` lines of
+// `length` pixels, pixel k of line l at index(l, k).
+template <typename Index>
+void runLengths(const std::vector<unsigned char>& on, int lines, int length, Index index,
+                std::vector<int>& runs) {
+  for (int l = 0; l < lines; ++l)
+    for (int k = 0; k < length;) {
+      int end = k;
+      while (end < length && on[index(l, end)]) ++end;
+      for (int j = k; j < end; ++j) runs[index(l, j)] = end - k;
+      k = end == k ? k + 1 : end;
+    }
 }
 
 }  // namespace
@@ -128,20 +158,10 @@ Stroke measureStroke(const RenderedChart& chart, std::array<int, 3> colour, int 
   }
   // Run lengths through every pixel of the curve, along rows and along columns.
   std::vector<int> across(on.size(), 0), down(on.size(), 0);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w;) {
-      int end = x;
-      while (end < w && on[static_cast<std::size_t>(y) * w + end]) ++end;
-      for (int k = x; k < end; ++k) across[static_cast<std::size_t>(y) * w + k] = end - x;
-      x = end == x ? x + 1 : end;
-    }
-  for (int x = 0; x < w; ++x)
-    for (int y = 0; y < h;) {
-      int end = y;
-      while (end < h && on[static_cast<std::size_t>(end) * w + x]) ++end;
-      for (int k = y; k < end; ++k) down[static_cast<std::size_t>(k) * w + x] = end - y;
-      y = end == y ? y + 1 : end;
-    }
+  runLengths(
+      on, h, w, [w](int y, int x) { return static_cast<std::size_t>(y) * w + x; }, across);
+  runLengths(
+      on, w, h, [w](int x, int y) { return static_cast<std::size_t>(y) * w + x; }, down);
   std::vector<int> shorter;
   for (std::size_t p = 0; p < on.size(); ++p)
     if (on[p]) shorter.push_back(std::min(across[p], down[p]));
@@ -168,25 +188,10 @@ std::vector<std::string> misplacedText(const RenderedChart& chart, const std::ve
   if (chart.width == 0) return {"nothing was drawn"};
   // The axis lines are the darkest column (left axis) and row (bottom axis): the grid is light grey, text
   // and curves cover little of any one column or row.
-  int axisX = 0, axisY = 0;
-  double best = -1;
-  for (int x = 0; x < chart.width; ++x) {
-    double sum = 0;
-    for (int y = 0; y < chart.height; ++y) sum += darkness(chart, x, y);
-    if (sum > best) {
-      best = sum;
-      axisX = x;
-    }
-  }
-  best = -1;
-  for (int y = 0; y < chart.height; ++y) {
-    double sum = 0;
-    for (int x = 0; x < chart.width; ++x) sum += darkness(chart, x, y);
-    if (sum > best) {
-      best = sum;
-      axisY = y;
-    }
-  }
+  const int axisX =
+      darkestLine(chart.width, chart.height, [&](int x, int y) { return darkness(chart, x, y); });
+  const int axisY =
+      darkestLine(chart.height, chart.width, [&](int y, int x) { return darkness(chart, x, y); });
   const std::regex number("(-|\\+|\u2212)?([0-9]+(\\.[0-9]*)?|\\.[0-9]+)([eE][-+]?[0-9]+)?%?");
   const std::set<std::string> titleWords(titles.begin(), titles.end());
   for (const Word& label : chart.words) {
