@@ -56,8 +56,8 @@ std::vector<std::string> misplacedText(const RenderedChart& chart, const std::ve
 inline constexpr std::array<int, 3> kStrayRed{255, 0, 0};
 
 // GoogleTest expectations on the chart in `path` (.svg or .pdf) with `curves` series drawn by writeLineChart
-// (its first colours: Okabe-Ito orange, then sky blue): valid anchors (SVG), every curve drawn and a thin line
-// (at most kThinLine pixels for the 2.5-pixel pen at 96 dpi), no misplacedText, nothing in kStrayRed.
+// (its first colours: Okabe-Ito orange, then sky blue): valid anchors (SVG), every curve drawn and a thin
+// line (at most kThinLine pixels for the 2.5-pixel pen at 96 dpi), no misplacedText, nothing in kStrayRed.
 inline constexpr double kThinLine = 6.0;
 void expectReadableChart(const std::string& path, const std::vector<std::string>& titleWords, int curves);
 
