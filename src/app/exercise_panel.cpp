@@ -6,6 +6,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QSettings>
 #include <QVBoxLayout>
 
 #include "homework/grader.h"
@@ -21,6 +22,15 @@ QString plain(const std::string& label) {
   text.remove('{');
   text.remove('}');
   return text.replace("\\", "");
+}
+
+QString settingsKey(const QString& place) {
+  return "exercises/" + place;
+}
+
+// The exercise a kept entry belongs to: a lesson edited to another topic or seed leaves old answers unused.
+QString identity(const homework::Exercise& e) {
+  return QString::fromStdString(e.topic) + "#" + QString::number(e.seed);
 }
 
 }  // namespace
@@ -60,11 +70,13 @@ ExercisePanel::ExercisePanel(QWidget* parent) : QWidget(parent) {
   hide();
 }
 
-void ExercisePanel::setExercise(const std::optional<homework::Exercise>& exercise) {
-  const bool same =
-      exercise && exercise_ && exercise->topic == exercise_->topic && exercise->seed == exercise_->seed;
+void ExercisePanel::setExercise(const std::optional<homework::Exercise>& exercise, const QString& place) {
+  const bool same = exercise && exercise_ && exercise->topic == exercise_->topic &&
+                    exercise->seed == exercise_->seed && place == place_;
   if (same) return;
   exercise_ = exercise;
+  place_ = place;
+  checked_ = false;
   while (QLayoutItem* item = form_->takeAt(0)) {
     delete item->widget();
     delete item;
@@ -95,10 +107,33 @@ void ExercisePanel::setExercise(const std::optional<homework::Exercise>& exercis
     verdicts_[q.id] = verdict;
     // Enter in a field checks, as the button does.
     connect(edit, &QLineEdit::returnPressed, this, &ExercisePanel::check);
+    connect(edit, &QLineEdit::textEdited, this, &ExercisePanel::keepAnswers);
   }
   // The fields at the top, the free space below them (the grid remembers stretches of earlier rows).
   for (int r = 0; r < form_->rowCount(); ++r) form_->setRowStretch(r, r == line ? 1 : 0);
   if (line >= form_->rowCount()) form_->setRowStretch(line, 1);
+  restoreAnswers();
+}
+
+void ExercisePanel::keepAnswers() const {
+  if (!exercise_ || place_.isEmpty()) return;
+  QVariantMap answers;
+  for (const auto& [id, edit] : edits_)
+    if (!edit->text().isEmpty()) answers[QString::fromStdString(id)] = edit->text();
+  QVariantMap kept;
+  kept["exercise"] = identity(*exercise_);
+  kept["answers"] = answers;
+  kept["checked"] = checked_;
+  QSettings().setValue(settingsKey(place_), kept);
+}
+
+void ExercisePanel::restoreAnswers() {
+  if (!exercise_ || place_.isEmpty()) return;
+  const QVariantMap kept = QSettings().value(settingsKey(place_)).toMap();
+  if (kept.value("exercise").toString() != identity(*exercise_)) return;
+  const QVariantMap answers = kept.value("answers").toMap();
+  for (const auto& [id, edit] : edits_) edit->setText(answers.value(QString::fromStdString(id)).toString());
+  if (kept.value("checked").toBool()) check();
 }
 
 QLineEdit* ExercisePanel::field(const std::string& id) const {
@@ -144,6 +179,8 @@ void ExercisePanel::check() {
       label->setText(grades[k].right ? tr("right") : QString::fromStdString(grades[k].feedback));
   }
   summary_->setText(tr("%1 of %2 right").arg(grade.right).arg(grade.total));
+  checked_ = true;
+  keepAnswers();
 }
 
 void ExercisePanel::showHint() {

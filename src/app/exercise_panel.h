@@ -1,7 +1,9 @@
 // The reader's side of an exercise step: one input field per question, Check (the grader of the homework
 // library, so the app names the same slips as `radiosity homework check`), a hint and the worked solution.
 // The hint and the solution are Markdown with maths: the window shows them under the step's text, where
-// KaTeX sets them as it sets the lesson. Hidden for every other step.
+// KaTeX sets them as it sets the lesson. Hidden for every other step. What the reader typed, and whether
+// Check was pressed, is kept per step in the settings: it is there again after leaving the step, and after
+// a restart.
 #pragma once
 
 #include <QWidget>
@@ -21,8 +23,10 @@ class ExercisePanel : public QWidget {
   Q_OBJECT
  public:
   explicit ExercisePanel(QWidget* parent = nullptr);
-  // Shows the fields of `exercise` (empty: hides the panel). The same exercise again keeps what was typed.
-  void setExercise(const std::optional<homework::Exercise>& exercise);
+  // Shows the fields of `exercise` (empty: hides the panel) with the answers kept under `place` (the lesson
+  // and step, e.g. "cornell-box/4"; empty: none kept) for this exercise. The same exercise again keeps what
+  // was typed.
+  void setExercise(const std::optional<homework::Exercise>& exercise, const QString& place = QString());
   const std::optional<homework::Exercise>& exercise() const { return exercise_; }
 
   QLineEdit* field(const std::string& questionId) const;
@@ -47,8 +51,14 @@ class ExercisePanel : public QWidget {
   QWidget* fields_ = nullptr;
   std::map<std::string, QLineEdit*> edits_;
   std::map<std::string, QLabel*> verdicts_;
+  // The answers typed and whether they were checked, kept under place_ for this exercise only.
+  void keepAnswers() const;
+  void restoreAnswers();
+
   QLabel* summary_ = nullptr;
   QString notes_;
+  QString place_;
+  bool checked_ = false;
   QPushButton* check_ = nullptr;
 };
 

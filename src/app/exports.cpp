@@ -83,13 +83,16 @@ void exportMatrix(const PipelineResult& result, const std::string& which, const 
 
 std::vector<std::string> exportStepFigures(const lesson::Lesson& lesson, const lesson::Step& step,
                                            const lesson::StepResult& result, const std::string& folder,
-                                           const std::string& format) {
+                                           const std::string& format, const std::string& name) {
   lesson::Step figures = step;
   figures.views.clear();
   for (lesson::View v : step.views)
     if (v != lesson::View::Scene) figures.views.push_back(v);
   if (figures.views.empty()) return {};
-  if (figures.figure.empty()) figures.figure = lesson.id + "-figure";
+  if (!name.empty())
+    figures.figure = name;
+  else if (figures.figure.empty())
+    figures.figure = lesson.id + "-figure";
   viz::StepFigureSettings settings;
   settings.width = 1200;
   settings.height = 900;

@@ -29,10 +29,11 @@ void exportMatrix(const PipelineResult& result, const std::string& which, const 
 std::string latexDocument(const std::string& bmatrix, long long columns);
 
 // The step's figures other than the live 3D view, drawn by the book's code (viz::renderStepFigures) into
-// `folder` as `format` files ("png", "svg", "pdf"; the 2D figures are vectors in svg and pdf). Returns the
-// paths written.
+// `folder` as `format` files ("png", "svg", "pdf"; the 2D figures are vectors in svg and pdf), named `name`
+// (one figure: name.format; several: name-view.format) or, when `name` is empty, by the step's `figure:`.
+// Returns the paths written.
 std::vector<std::string> exportStepFigures(const lesson::Lesson& lesson, const lesson::Step& step,
                                            const lesson::StepResult& result, const std::string& folder,
-                                           const std::string& format);
+                                           const std::string& format, const std::string& name = {});
 
 }  // namespace rt::app

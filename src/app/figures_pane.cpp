@@ -3,6 +3,8 @@
 #include <QDir>
 #include <QLabel>
 #include <QPixmap>
+#include <QScrollBar>
+#include <QStyle>
 #include <QVBoxLayout>
 #include <algorithm>
 
@@ -37,7 +39,7 @@ bool FiguresPane::addFigure(const QString& path, const QString& text) {
   caption->setWordWrap(true);
   auto* image = new QLabel(content_);
   image->setObjectName("figure");
-  figures_.push_back({image, pixmap});
+  figures_.push_back({caption, image, pixmap});
   files_.push_back(path);
   captions_.push_back(text);
   layout_->insertWidget(layout_->count() - 1, caption);
@@ -89,14 +91,19 @@ void FiguresPane::setFillPane(bool fill) {
 
 void FiguresPane::fitFigures() {
   const QMargins margins = layout_->contentsMargins();
-  const int available = std::max(64, viewport()->width() - margins.left() - margins.right());
-  // Filling: the figure and its caption fit the pane's height too (a projected figure is seen whole).
-  const int height = std::max(64, viewport()->height() - margins.top() - margins.bottom() - 48);
+  // The room of the vertical scroll bar is kept whether it shows or not: a figure fitted before it appears
+  // would be cut at the right when it does.
+  const int scrollBar =
+      verticalScrollBar()->isVisible() ? 0 : style()->pixelMetric(QStyle::PM_ScrollBarExtent);
+  const int available = std::max(64, viewport()->width() - margins.left() - margins.right() - scrollBar);
   for (Figure& figure : figures_) {
+    // The figure and its caption fit the pane's height too: a figure is seen whole.
+    const int height = std::max(64, viewport()->height() - margins.top() - margins.bottom() -
+                                        figure.caption->heightForWidth(available) - 2 * layout_->spacing());
     const int fitted =
         std::min(available, static_cast<int>(static_cast<double>(height) * figure.original.width() /
                                              std::max(1, figure.original.height())));
-    const int width = fill_ ? std::max(64, fitted) : std::min(figure.original.width(), available);
+    const int width = fill_ ? std::max(64, fitted) : std::max(64, std::min(figure.original.width(), fitted));
     if (figure.label->pixmap().width() == width) continue;
     figure.label->setPixmap(figure.original.scaledToWidth(width, Qt::SmoothTransformation));
   }

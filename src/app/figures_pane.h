@@ -31,20 +31,22 @@ class FiguresPane : public QScrollArea {
   // The image files and captions on show (to keep them with a long step's result).
   const QStringList& files() const { return files_; }
   const QStringList& captions() const { return captions_; }
-  // Off: figures shrink to the pane's width, never grow past their own. On (a figure in the main pane): each
-  // fills the pane's width and height, keeping its proportions.
+  // Off: each figure with its caption shrinks to the pane's width and height (a step's figure is seen whole;
+  // several are scrolled through), never grows past its own size. On (a figure in the main pane): each fills
+  // the pane's width and height, keeping its proportions.
   void setFillPane(bool fill);
   bool fillsPane() const { return fill_; }
 
  protected:
-  // Figures shrink to the pane's width (never grow past their own), so a whole chart with its legend is on
-  // screen however the docks are arranged.
+  // Figures are fitted to the pane again, so a whole chart with its legend is on screen however the docks
+  // are arranged.
   void resizeEvent(QResizeEvent* event) override;
 
  private:
   void fitFigures();
   bool addFigure(const QString& path, const QString& caption);
   struct Figure {
+    QLabel* caption;
     QLabel* label;
     QPixmap original;
   };

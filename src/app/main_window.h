@@ -96,8 +96,9 @@ class MainWindow : public QMainWindow {
   bool exportingFigures() const { return figureExport_ != nullptr; }
   void cancelFigureExport();
   // The current step's figures other than the 3D view, drawn as the book draws them, into `folder` as
-  // `format` ("svg", "pdf": vectors; "png"); false (lastError()) when the step has none.
-  bool exportStepFigures(const QString& folder, const QString& format);
+  // `format` ("svg", "pdf": vectors; "png") and named `name` (empty: the step's `figure:`); false
+  // (lastError()) when the step has none.
+  bool exportStepFigures(const QString& folder, const QString& format, const QString& name = QString());
   // The files the last exportStepFigures wrote.
   const QStringList& lastExportedFiles() const { return lastExported_; }
   // "cornell-box-3-view.png": what a save dialog proposes for `what` of the current step or scene.

@@ -51,7 +51,7 @@ bool MainWindow::exportMatrixFile(const QString& which, const QString& path) {
   }
 }
 
-bool MainWindow::exportStepFigures(const QString& folder, const QString& format) {
+bool MainWindow::exportStepFigures(const QString& folder, const QString& format, const QString& name) {
   const auto* stepResult =
       result_ ? static_cast<const lesson::StepResult*>(result_->stepResult.get()) : nullptr;
   if (mode_ != Mode::Lesson || !stepResult) {
@@ -63,8 +63,8 @@ bool MainWindow::exportStepFigures(const QString& folder, const QString& format)
     // The figures as shown: with the reader's parameters.
     lesson::Step step = lesson.steps[static_cast<std::size_t>(step_)];
     step.parameters = parameters_;
-    const auto files =
-        app::exportStepFigures(lesson, step, *stepResult, folder.toStdString(), format.toStdString());
+    const auto files = app::exportStepFigures(lesson, step, *stepResult, folder.toStdString(),
+                                              format.toStdString(), name.toStdString());
     if (files.empty()) {
       showError(tr("This step has no figure besides the 3D view (File > Export view writes that one)."));
       return false;

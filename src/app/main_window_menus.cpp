@@ -132,8 +132,10 @@ void MainWindow::buildMenus() {
             const QString path =
                 exportFileDialog(tr("Export the step's figures"), tr("SVG (*.svg);;PDF (*.pdf);;PNG (*.png)"),
                                  suggestedFileName("figures", "svg"));
+            // The name the reader typed, its extension the format.
+            const QFileInfo file(path);
             if (!path.isEmpty())
-              exportStepFigures(QFileInfo(path).absolutePath(), QFileInfo(path).suffix().toLower());
+              exportStepFigures(file.absolutePath(), file.suffix().toLower(), file.completeBaseName());
           });
   const QString matrixFilters = tr("CSV (*.csv);;Matrix Market (*.mtx);;NumPy (*.npy);;LaTeX (*.tex)");
   for (const auto& [which, text] : {std::pair{QString("F"), tr("Export form factors &F...")},

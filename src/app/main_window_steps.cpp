@@ -372,7 +372,13 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
 
   // An exercise step: its question below the step's text, the answer fields under both.
   const bool exercise = step && stepResult && stepResult->exercise;
-  exercise_->setExercise(exercise ? stepResult->exercise : std::nullopt);
+  exercise_->setExercise(
+      exercise ? stepResult->exercise : std::nullopt,
+      mode_ == Mode::Lesson
+          ? QString("%1/%2")
+                .arg(QString::fromStdString(library_->lessons()[static_cast<std::size_t>(lesson_)].id))
+                .arg(step_)
+          : QString());
   QString markdown = mode_ == Mode::Lesson ? QString::fromStdString(r.text) : sceneSummary(r);
   if (exercise) markdown += "\n\n" + QString::fromStdString(stepResult->exercise->statement);
   setStepMarkdown(markdown);

@@ -8,6 +8,7 @@
 #include <QScatterSeries>
 #include <QValueAxis>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace rt::app {
@@ -139,20 +140,28 @@ void ResidualChart::setLargeFonts(bool large) {
   }
   chart()->legend()->setLabelColor(foreground);
   if (marker_) marker_->setColor(foreground);
-  // From the chart's own normal font, not the widget's: in presenter mode the application font is already
-  // larger, and leaving must give back exactly the font the chart had.
-  if (!normalFontKnown_) {
-    normalFont_ = xAxis_->labelsFont();
-    normalFontKnown_ = true;
+  // From the chart's own normal fonts, each kept as it was (the axis titles are bold, the labels not), not
+  // from the widget's: in presenter mode the application font is already larger, and leaving must give back
+  // exactly the fonts the chart had.
+  QAbstractAxis* axes[] = {xAxis_, yAxis_};
+  if (!normalFontsKnown_) {
+    normalFonts_ = {chart()->titleFont(), xAxis_->labelsFont(), yAxis_->labelsFont(),
+                    xAxis_->titleFont(),  yAxis_->titleFont(),  chart()->legend()->font()};
+    normalFontsKnown_ = true;
   }
-  QFont font = normalFont_;
-  if (large) font.setPointSizeF(std::max(normalFont_.pointSizeF(), 9.0) * 1.8);
-  chart()->setTitleFont(font);
-  xAxis_->setLabelsFont(font);
-  yAxis_->setLabelsFont(font);
-  xAxis_->setTitleFont(font);
-  yAxis_->setTitleFont(font);
-  chart()->legend()->setFont(font);
+  std::array<QFont, 6> fonts = normalFonts_;
+  if (large)
+    for (QFont& font : fonts) font.setPointSizeF(std::max(font.pointSizeF(), 9.0) * 1.8);
+  chart()->setTitleFont(fonts[0]);
+  for (int k = 0; k < 2; ++k) {
+    axes[k]->setLabelsFont(fonts[1 + k]);
+    axes[k]->setTitleFont(fonts[3 + k]);
+  }
+  chart()->legend()->setFont(fonts[5]);
+}
+
+QFont ResidualChart::axisTitleFont() const {
+  return xAxis_->titleFont();
 }
 
 }  // namespace rt::app

@@ -6,6 +6,7 @@
 #include <QChartView>
 #include <QFont>
 #include <QString>
+#include <array>
 #include <vector>
 
 class QLineSeries;
@@ -28,6 +29,8 @@ class ResidualChart : public QChartView {
   void setLargeFonts(bool large);
   // The axes' label font (presenter mode makes it larger; leaving gives the normal one back).
   QFont labelsFont() const;
+  // The x axis's title font (bold, as Qt Charts sets axis titles, in both modes).
+  QFont axisTitleFont() const;
 
  private:
   std::vector<std::vector<double>> residuals_;
@@ -36,8 +39,9 @@ class ResidualChart : public QChartView {
   QValueAxis* xAxis_ = nullptr;
   QLogValueAxis* yAxis_ = nullptr;
   bool large_ = false;
-  QFont normalFont_;
-  bool normalFontKnown_ = false;
+  // The fonts of the normal mode: chart title, x and y labels, x and y titles, legend.
+  std::array<QFont, 6> normalFonts_;
+  bool normalFontsKnown_ = false;
 };
 
 }  // namespace rt::app

@@ -14,19 +14,36 @@ std::string number(double v) {
   return buffer;
 }
 
-// A wrong answer in a closed-room row: does the row still sum to 1 with the student's values?
+// How far a wrong answer is from the key, in words that leave the key for the worked solution: too high or
+// too low, and by how much in bands of the relative difference (a percentage to the digit would give the key
+// back). An answer of zero has no relative difference: only the direction is said.
+std::string howFarOff(double submitted, const Question& q) {
+  const std::string direction = submitted > q.answer ? "too high" : "too low";
+  if (std::abs(q.answer) <= q.tolerance) return direction;
+  const double off = std::abs(submitted - q.answer) / std::abs(q.answer);
+  const char* band = off < 0.01  ? "by less than 1 %"
+                     : off < 0.1 ? "by 1 to 10 %"
+                     : off < 0.5 ? "by 10 to 50 %"
+                     : off < 1.0 ? "by 50 to 100 %"
+                                 : "by more than 100 %";
+  return direction + ", " + band;
+}
+
+// A wrong answer in a closed-room row: does the row still sum to 1 with the student's values? Only asked
+// when the student answered every term of the row: a sum with the key's values in it would tell them.
 std::string rowFeedback(const Exercise& e, const Question& q, const std::map<std::string, double>& values) {
   for (const RowCheck& r : e.rowChecks) {
-    bool member = false;
+    bool member = false, answered = true;
     double sum = r.known, slack = 0;
     for (const auto& [id, count] : r.terms) {
       member = member || id == q.id;
       const auto it = values.find(e.topic + "." + id);
       const Question* term = e.find(id);
-      sum += count * (it != values.end() ? it->second : (term ? term->answer : 0.0));
+      answered = answered && it != values.end();
+      sum += count * (it != values.end() ? it->second : 0.0);
       slack += count * (term ? term->tolerance : 0.0);
     }
-    if (member && std::abs(sum - 1) > slack)
+    if (member && answered && std::abs(sum - 1) > slack)
       return "; " + r.row + " of F sums to " + number(sum) +
              " with your values, not 1 (in a closed room every row of F sums to 1)";
   }
@@ -55,8 +72,7 @@ StudentGrade gradeStudent(const StudentExercises& key, const Submission& submiss
         if (qg.right) {
           ++g.right;
         } else {
-          qg.feedback = "wrong: " + number(it->second) + " (key " + number(q.answer) + " +- " +
-                        number(q.tolerance) + ")";
+          qg.feedback = "wrong: " + number(it->second) + " is " + howFarOff(it->second, q);
           for (const Mistake& m : q.mistakes)
             if (std::abs(it->second - m.value) <= q.tolerance) {
               qg.feedback += "; likely mistake: " + m.name;

@@ -16,7 +16,7 @@ struct QuestionGrade {
   std::string id;  // "topic.question"
   bool answered = false, right = false;
   double submitted = 0;
-  std::string feedback;  // empty when right
+  std::string feedback;  // empty when right; never the key's value (the student reads it before the solution)
 };
 
 struct StudentGrade {

@@ -3,15 +3,20 @@
 #include <vtkAxis.h>
 #include <vtkChartLegend.h>
 #include <vtkChartXY.h>
+#include <vtkContext2D.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkDoubleArray.h>
+#include <vtkObjectFactory.h>
 #include <vtkPen.h>
-#include <vtkPlotPoints.h>
+#include <vtkPlotLine.h>
+#include <vtkPoints2D.h>
+#include <vtkRect.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTable.h>
 #include <vtkTextProperty.h>
+#include <vtkTransform2D.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,6 +28,34 @@
 
 namespace rt::viz {
 namespace {
+
+// A chart's curve drawn in page units. vtkChartXY paints a plot under the transform from data to page units,
+// and VTK 9.1's SVG and PDF devices stroke under that transform too: a pen of 2.5 pixels becomes 2.5 data
+// units scaled to the page, a band wherever one axis spans a small range, and the markers turn to ellipses.
+// The points are mapped to the page here and drawn under the identity, so that every device (OpenGL for PNG
+// alike) strokes the curve with the pen's own width.
+class PageUnitsLine : public vtkPlotLine {
+ public:
+  static PageUnitsLine* New();
+
+  bool Paint(vtkContext2D* painter) override {
+    if (!Points || Points->GetNumberOfPoints() == 0) return vtkPlotLine::Paint(painter);
+    const auto n = static_cast<int>(Points->GetNumberOfPoints());
+    auto* xy = static_cast<float*>(Points->GetVoidPointer(0));
+    const std::vector<float> data(xy, xy + 2 * static_cast<std::size_t>(n));
+    painter->GetTransform()->TransformPoints(data.data(), xy, n);
+    painter->PushMatrix();
+    auto identity = vtkSmartPointer<vtkTransform2D>::New();
+    painter->SetTransform(identity);
+    const bool painted = vtkPlotLine::Paint(painter);
+    painter->PopMatrix();
+    std::copy(data.begin(), data.end(), xy);  // the chart keeps its points in data units
+    return painted;
+  }
+
+  vtkTypeMacro(PageUnitsLine, vtkPlotLine)
+};
+vtkStandardNewMacro(PageUnitsLine);
 
 void styleAxis(vtkAxis* axis, const std::string& title, bool logScale, int fontSize) {
   axis->SetTitle(title);
@@ -96,18 +129,20 @@ void writeLineChart(const std::vector<Series>& series, const ChartOptions& optio
     auto table = vtkSmartPointer<vtkTable>::New();
     table->AddColumn(x);
     table->AddColumn(y);
-    vtkPlot* plot = chart->AddPlot(vtkChart::LINE);
+    auto plot = vtkSmartPointer<PageUnitsLine>::New();
+    chart->AddPlot(plot);
     plot->SetInputData(table, 0, 1);
     // Okabe-Ito without its yellow (too light on white) until the other seven are used.
     static const int order[] = {0, 1, 2, 4, 5, 6, 7, 3};
     const Rgb8 colour = qualitativeColour(order[s % 8]);
     plot->SetColor(colour[0], colour[1], colour[2], 255);
     plot->SetWidth(static_cast<float>(2.5 * scale));
-    if (auto* points = vtkPlotPoints::SafeDownCast(plot)) {
-      points->SetMarkerStyle(options.markers && x->GetNumberOfTuples() <= 200 ? markers[s % 5]
-                                                                              : vtkPlotPoints::NONE);
-      points->SetMarkerSize(static_cast<float>(7.0 * scale));
-    }
+    // Markers where they stand apart (two and a half marker widths per point across the figure): packed
+    // closer they merge into a band wider than the line.
+    const double markerSize = 7.0 * scale;
+    const bool spaced = static_cast<double>(x->GetNumberOfTuples()) * 2.5 * markerSize <= options.width;
+    plot->SetMarkerStyle(options.markers && spaced ? markers[s % 5] : vtkPlotPoints::NONE);
+    plot->SetMarkerSize(static_cast<float>(markerSize));
     ++drawn;
   }
   if (drawn == 0) throw std::invalid_argument(path + ": no series has a point that can be drawn");
@@ -116,6 +151,17 @@ void writeLineChart(const std::vector<Series>& series, const ChartOptions& optio
   chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
   chart->GetLegend()->SetLabelSize(static_cast<int>(fontSize * 0.85));
   chart->GetLegend()->GetLabelProperties()->SetColor(0.05, 0.05, 0.05);
+  if (figureFormatOf(path) != FigureFormat::Png) {
+    // The plot area as laid out on screen, kept for the vector exporters: VTK 9.1's PDF device measures a
+    // turned text as if it were level, and the y axis's title then takes its length, not its height, of the
+    // page's width, pushing the plot to the right.
+    view->GetRenderWindow()->Render();
+    const int* low = chart->GetPoint1();
+    const int* high = chart->GetPoint2();
+    chart->SetLayoutStrategy(vtkChart::AXES_TO_RECT);
+    chart->SetSize(vtkRectf(static_cast<float>(low[0]), static_cast<float>(low[1]),
+                            static_cast<float>(high[0] - low[0]), static_cast<float>(high[1] - low[1])));
+  }
   std::string description = "x: " + options.xLabel + "; y: " + options.yLabel + "; series:";
   for (const Series& s : series) description += " " + s.name + ",";
   description.pop_back();

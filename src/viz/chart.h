@@ -23,8 +23,10 @@ struct ChartOptions {
   std::string title, xLabel, yLabel;
   bool logX = false, logY = false;
   int width = 1200, height = 800;
-  double dpi = 96.0;    // scales fonts and line widths (dpi / 96)
-  bool markers = true;  // a marker at every data point (distinguishes curves in grey print too)
+  double dpi = 96.0;  // scales fonts and line widths (dpi / 96)
+  // A marker at every data point (distinguishes curves in grey print too), on the series whose points stand
+  // apart by two and a half marker widths or more.
+  bool markers = true;
 };
 
 // The format follows the extension: .png (raster), .svg and .pdf (vectors). Series get colour-blind-safe

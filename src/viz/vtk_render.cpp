@@ -2,10 +2,13 @@
 
 #include "lesson/markdown_html.h"
 #include "viz/display_check.h"
+#include "viz/vtk_svg_repair.h"
 
 #include <vtkContextView.h>
 #include <vtkImageData.h>
 #include <vtkLookupTable.h>
+#include <vtkMathTextFreeTypeTextRenderer.h>
+#include <vtkObjectFactory.h>
 #include <vtkPDFExporter.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
@@ -26,6 +29,30 @@
 
 namespace rt::viz {
 namespace {
+
+// VTK 9.1 takes every string with an unescaped '|' for MathText (a column separator): "|K_ij|" on a colour
+// bar, "|KB - E| / |E|" on an axis. Without matplotlib FreeType draws such text all the same, except in PDF:
+// vtkPDFContextDevice2D::DrawString draws it as outlines (no longer searchable) and strokes a red rectangle
+// beside it, a debugging aid left in VTK. The figures' text is never MathText, and this renderer says so for
+// every string, to every device. It takes VTK's place during static initialisation, before any text is
+// drawn: text actors keep the renderer they were built with.
+class PlainTextRenderer : public vtkMathTextFreeTypeTextRenderer {
+ public:
+  static PlainTextRenderer* New();
+  int DetectBackend(const vtkStdString&) override { return FreeType; }
+  int DetectBackend(const vtkUnicodeString&) override { return FreeType; }  // the SVG device asks this one
+
+  static bool install() {
+    PlainTextRenderer* renderer = PlainTextRenderer::New();
+    SetInstance(renderer);
+    renderer->Delete();
+    return true;
+  }
+
+  vtkTypeMacro(PlainTextRenderer, vtkMathTextFreeTypeTextRenderer)
+};
+vtkStandardNewMacro(PlainTextRenderer);
+[[maybe_unused]] const bool plainTextInstalled = PlainTextRenderer::install();
 
 std::string base64(const unsigned char* data, std::size_t size) {
   static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -135,54 +162,6 @@ void writeRenderWindow(vtkRenderWindow* window, const std::string& path, double 
 
 namespace {
 
-// vtkSVGExporter clips a chart's plotted lines with a <g> that has both a transform (data to page) and a
-// clip-path whose rectangle is in page units. SVG applies the clip in the group's own, transformed, units,
-// so browsers (and the book's PDF) clip every line away. Splitting the group in two, the clip outside and the
-// transform inside, clips in page units as the exporter meant.
-// The "</g>" that closes the group whose content starts at `from`, or npos.
-std::size_t matchingGroupEnd(const std::string& svg, std::size_t from) {
-  int depth = 1;
-  for (std::size_t at = from; (at = svg.find('<', at)) != std::string::npos; ++at) {
-    if (svg.compare(at, 4, "</g>") == 0 && --depth == 0) return at;
-    if (svg.compare(at, 3, "<g ") == 0 || svg.compare(at, 3, "<g>") == 0) ++depth;
-  }
-  return std::string::npos;
-}
-
-void clipInPageUnits(std::string& svg) {
-  const std::string open = "<g transform=\"";
-  for (std::size_t at = 0; (at = svg.find(open, at)) != std::string::npos;) {
-    const std::size_t tagEnd = svg.find('>', at);
-    const std::size_t clip = svg.find("\" clip-path=\"", at);
-    const std::size_t close = tagEnd == std::string::npos ? tagEnd : matchingGroupEnd(svg, tagEnd + 1);
-    if (tagEnd == std::string::npos || clip == std::string::npos || clip > tagEnd ||
-        close == std::string::npos) {
-      at += open.size();
-      continue;
-    }
-    const std::string transform = svg.substr(at + 3, clip + 1 - (at + 3));   // transform="..."
-    const std::string clipPath = svg.substr(clip + 2, tagEnd - (clip + 2));  // clip-path="..."
-    svg.replace(close, 4, "</g></g>");
-    const std::string replacement = "<g " + clipPath + "><g " + transform + ">";
-    svg.replace(at, tagEnd + 1 - at, replacement);
-    at += replacement.size();
-  }
-}
-
-// vtkSVGExporter places text with alignment-baseline, which SVG applies to <tspan> but not to <text>, and
-// with the value "top", which SVG does not have: browsers draw a title meant to hang from the top edge above
-// it, outside the picture. dominant-baseline says the same on <text>.
-void placeTextOnItsBaseline(std::string& svg) {
-  const std::pair<const char*, const char*> baselines[] = {
-      {"top", "hanging"}, {"central", "central"}, {"bottom", "text-after-edge"}};
-  for (const auto& [vtk, svgName] : baselines) {
-    const std::string from = std::string("alignment-baseline=\"") + vtk + "\"";
-    const std::string to = from + " dominant-baseline=\"" + svgName + "\"";
-    for (std::size_t at = 0; (at = svg.find(from, at)) != std::string::npos; at += to.size())
-      svg.replace(at, from.size(), to);
-  }
-}
-
 // vtkSVGExporter writes "VTK Exported Scene" as both the <title> and the <desc>: put the figure's own there.
 void tidySvg(const std::string& path, const std::string& title, const std::string& description) {
   std::string svg;
@@ -201,8 +180,7 @@ void tidySvg(const std::string& path, const std::string& title, const std::strin
     svg.replace(at, placeholder.size(), replacement);
     at += replacement.size();
   }
-  clipInPageUnits(svg);
-  placeTextOnItsBaseline(svg);
+  repairVtkSvg(svg);
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << svg;
   if (!out) throw std::runtime_error(path + ": cannot write the file");

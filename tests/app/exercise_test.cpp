@@ -3,11 +3,14 @@
 // solution are one click away; other steps hide the panel.
 #include <gtest/gtest.h>
 
+#include <QApplication>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QSettings>
 #include <QTest>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 
 #include "app/exercise_panel.h"
 #include "app/lesson_session.h"
@@ -85,6 +88,76 @@ TEST(AppExercise, AnAnswerTypedIntoTheFieldIsChecked) {
   ASSERT_TRUE(window->openLesson("form-factor", 0));
   ASSERT_TRUE(window->waitUntilIdle(20000));
   EXPECT_FALSE(panel->isVisible());
+}
+
+// Lesson 11 (the Cornell box), step 5: all 18 fields filled (every other one wrong), Check, Page Down to the
+// next step and Page Up back: the answers and what Check said are there again; and in a window opened anew,
+// as after a restart. A wrong answer is said too high, never with the key's value.
+TEST(AppExercise, AnswersStayWithTheirStepAcrossStepsAndRestarts) {
+  RT_REQUIRE_DISPLAY();
+  QSettings().remove("exercises");
+  const int lesson = 10;
+  std::map<std::string, QString> typed, verdicts;
+  QString summary;
+  {
+    auto window = rt::app::test::makeWindow();
+    window->show();
+    ASSERT_EQ(window->library()->lessons()[lesson].id, "cornell-box");
+    ASSERT_TRUE(window->openLesson("cornell-box", 4));
+    ASSERT_TRUE(window->waitUntilIdle(20000));
+    ExercisePanel* panel = window->exercisePanel();
+    ASSERT_TRUE(panel->exercise().has_value());
+    const rt::homework::Exercise& e = *panel->exercise();
+    ASSERT_EQ(e.questions.size(), 18u);
+    window->activateWindow();
+    (void)QTest::qWaitForWindowActive(window.get(), 2000);
+    for (std::size_t k = 0; k < e.questions.size(); ++k) {
+      const rt::homework::Question& q = e.questions[k];
+      char text[40];
+      std::snprintf(text, sizeof text, "%.10g", k % 2 ? q.answer * 1.5 + 1 : q.answer);
+      QLineEdit* field = panel->field(q.id);
+      field->setFocus();
+      QTest::keyClicks(field, text);
+      typed[q.id] = text;
+    }
+    QTest::mouseClick(panel->findChild<QPushButton*>("checkAnswers"), Qt::LeftButton);
+    summary = panel->summary();
+    EXPECT_EQ(summary, "9 of 18 right");
+    for (const rt::homework::Question& q : e.questions) verdicts[q.id] = panel->verdict(q.id);
+    const rt::homework::Question& wrong = e.questions[1];
+    EXPECT_TRUE(verdicts[wrong.id].contains("too high")) << verdicts[wrong.id].toStdString();
+    EXPECT_FALSE(verdicts[wrong.id].contains("key")) << verdicts[wrong.id].toStdString();
+    EXPECT_FALSE(verdicts[wrong.id].contains(QString::number(wrong.answer, 'g', 6)))
+        << verdicts[wrong.id].toStdString();
+
+    // The keys go where the reader's focus is (the Check button), as the reader presses them.
+    auto focus = [&window] {
+      return QApplication::focusWidget() ? QApplication::focusWidget() : window.get();
+    };
+    QTest::keyClick(focus(), Qt::Key_PageDown);
+    ASSERT_TRUE(window->waitUntilIdle(20000));
+    ASSERT_EQ(window->currentStep(), 5);
+    QTest::keyClick(focus(), Qt::Key_PageUp);
+    ASSERT_TRUE(window->waitUntilIdle(20000));
+    ASSERT_EQ(window->currentStep(), 4);
+    for (const auto& [id, text] : typed) {
+      EXPECT_EQ(panel->field(id)->text(), text) << id;
+      EXPECT_EQ(panel->verdict(id), verdicts[id]) << id;
+    }
+    EXPECT_EQ(panel->summary(), summary);
+    window->close();
+  }
+  auto window = rt::app::test::makeWindow();
+  ASSERT_TRUE(window->openLesson("cornell-box", 4));
+  ASSERT_TRUE(window->waitUntilIdle(20000));
+  ExercisePanel* panel = window->exercisePanel();
+  for (const auto& [id, text] : typed) {
+    ASSERT_NE(panel->field(id), nullptr) << id;
+    EXPECT_EQ(panel->field(id)->text(), text) << id;
+    EXPECT_EQ(panel->verdict(id), verdicts[id]) << id;
+  }
+  EXPECT_EQ(panel->summary(), summary);
+  QSettings().remove("exercises");
 }
 
 }  // namespace

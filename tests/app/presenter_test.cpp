@@ -87,11 +87,14 @@ TEST(Presenter, EquationFigureAndChartStepsAndEveryFontBack) {
   QTest::qWait(100);
   const QMap<QWidget*, QString> fonts = fontsOf(*window);
   const QString chartFont = window->residualChart()->labelsFont().toString();
+  const QString axisTitleFont = window->residualChart()->axisTitleFont().toString();
+  ASSERT_TRUE(window->residualChart()->axisTitleFont().bold()) << "Qt Charts sets axis titles in bold";
   window->activateWindow();
   QApplication::setActiveWindow(window.get());
   press(*window, Qt::Key_F11);
   ASSERT_TRUE(window->presenterMode());
   EXPECT_NE(window->residualChart()->labelsFont().toString(), chartFont);
+  EXPECT_TRUE(window->residualChart()->axisTitleFont().bold()) << "larger, and still bold";
   shoot(*window, "chart");
   ASSERT_TRUE(window->openLesson("rendering-equation", 1));
   shoot(*window, "equation");
@@ -107,6 +110,8 @@ TEST(Presenter, EquationFigureAndChartStepsAndEveryFontBack) {
   ASSERT_TRUE(window->openLesson("gathering", 0));
   QApplication::processEvents();
   EXPECT_EQ(window->residualChart()->labelsFont().toString(), chartFont);
+  EXPECT_EQ(window->residualChart()->axisTitleFont().toString(), axisTitleFont);
+  EXPECT_TRUE(window->residualChart()->axisTitleFont().bold()) << "the axis titles are bold again";
   int differ = 0;
   for (auto it = fonts.begin(); it != fonts.end(); ++it) {
     if (!window->findChildren<QWidget*>().contains(it.key())) continue;  // a widget of another step

@@ -5,6 +5,9 @@
 
 #include <QImage>
 #include <QLabel>
+#include <QTabBar>
+#include <QTabWidget>
+#include <QTest>
 
 #include "app/figures_pane.h"
 #include "app/residual_chart.h"
@@ -83,6 +86,32 @@ TEST(Screenshot, AStepWithoutASolutionShowsTheShadedMaterials) {
   ASSERT_TRUE(window->openLesson("cornell-box", 3)) << window->lastError().toStdString();
   EXPECT_FALSE(window->primaryView()->materialView());
   EXPECT_EQ(window->primaryView()->viewOptions().colouring, rt::viz::SceneColouring::Radiosity);
+}
+
+// Lesson 10, step 2, the Step figures tab clicked open in the pane under the 3D view: the convergence chart
+// and its caption are seen whole, not cut at the pane's bottom.
+TEST(Screenshot, TheStepFiguresTabShowsTheFigureWhole) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->resize(1600, 1000);
+  window->show();
+  ASSERT_TRUE(window->openLesson("shooting", 1)) << window->lastError().toStdString();
+  FiguresPane* pane = window->figuresPane();
+  QTabWidget* tabs = nullptr;
+  for (QWidget* w = pane->parentWidget(); w && !tabs; w = w->parentWidget())
+    tabs = qobject_cast<QTabWidget*>(w);
+  ASSERT_NE(tabs, nullptr);
+  QTest::mouseClick(tabs->tabBar(), Qt::LeftButton, Qt::NoModifier,
+                    tabs->tabBar()->tabRect(tabs->indexOf(pane)).center());
+  ASSERT_EQ(tabs->currentWidget(), pane);
+  QApplication::processEvents();
+  const auto figures = pane->findChildren<QLabel*>("figure");
+  ASSERT_EQ(figures.size(), 1);
+  const QLabel* figure = figures.front();
+  const QRect shown(figure->mapTo(pane->viewport(), QPoint(0, 0)), figure->pixmap().size());
+  EXPECT_TRUE(pane->viewport()->rect().contains(shown))
+      << "the figure at " << shown.x() << "," << shown.y() << " " << shown.width() << "x" << shown.height()
+      << " in a pane of " << pane->viewport()->width() << "x" << pane->viewport()->height();
 }
 
 // An exact step's view shows the radiosity solved with its first approximate method's form factors (the

@@ -20,6 +20,7 @@
 #include "app/parameter_panel.h"
 #include "app_test_support.h"
 #include "core/io/matrix_export.h"
+#include "support/vector_chart_check.h"
 
 using namespace rt::app;
 
@@ -61,6 +62,42 @@ TEST(VectorExport, TheStepsFiguresAreVectorSvgWithASuggestedName) {
   ASSERT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
   ASSERT_EQ(window->lastExportedFiles().size(), 1);
   expectVectorSvg(window->lastExportedFiles().front(), /*withText=*/true);
+}
+
+// Lesson 10 (shooting), step 2, its convergence chart exported as PDF and SVG: a line that other programs
+// draw as a line (not the plot area filled with its colour), with its text in place.
+TEST(VectorExport, TheStepsChartIsReadableInPdfAndSvg) {
+  RT_REQUIRE_DISPLAY();
+  RT_REQUIRE_VECTOR_RENDERERS();
+  QTemporaryDir dir;
+  auto window = test::makeWindow();
+  ASSERT_TRUE(window->openLesson("shooting", 1)) << window->lastError().toStdString();
+  for (const QString format : {"pdf", "svg"}) {
+    ASSERT_TRUE(window->exportStepFigures(dir.path(), format)) << window->lastError().toStdString();
+    ASSERT_EQ(window->lastExportedFiles().size(), 1);
+    rt::test::expectReadableChart(window->lastExportedFiles().front().toStdString(),
+                                  {"iteration", "relative", "residual"}, 1);
+  }
+}
+
+// The same step through Ctrl+Shift+E, a name typed into the save dialog and Enter: the file has the typed
+// name, its extension the format, not the step's figure name.
+TEST(VectorExport, TheStepsFigureTakesTheTypedName) {
+  RT_REQUIRE_DISPLAY();
+  QTemporaryDir dir;
+  auto window = test::makeWindow();
+  ASSERT_TRUE(window->openLesson("shooting", 1)) << window->lastError().toStdString();
+  for (const QString name : {"my-convergence.pdf", "my-convergence.svg"}) {
+    test::answerSaveDialog(dir.filePath(name), nullptr);
+    window->activateWindow();
+    QApplication::setActiveWindow(window.get());
+    QTest::keyClick(window.get(), Qt::Key_E, Qt::ControlModifier | Qt::ShiftModifier);
+    ASSERT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
+    EXPECT_EQ(window->lastExportedFiles(), QStringList{dir.filePath(name)});
+    EXPECT_TRUE(QFile::exists(dir.filePath(name))) << name.toStdString();
+  }
+  EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files),
+            (QStringList{"my-convergence.pdf", "my-convergence.svg"}));
 }
 
 // Every 2D kind the app draws: a chart (the convergence of Jacobi), the hemicube's faces; a 3D view (the

@@ -3,8 +3,13 @@
 // reported per file while the rest of the class is graded.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "core/input_error.h"
 #include "core/io/matrix_export.h"
@@ -98,6 +103,53 @@ TEST(HomeworkGrader, RecognisedMistakesAreNamed) {
           named = named || qg.feedback.find(m.name) != std::string::npos;
         EXPECT_TRUE(named) << t.id << "." << q.id << ": " << m.name;
       }
+  }
+}
+
+// The student reads the feedback before asking for the worked solution: a wrong answer is told too high or
+// too low and by about how much, never the key's value or its tolerance.
+TEST(HomeworkGrader, FeedbackSaysHowFarOffButNotTheKey) {
+  for (const Topic& t : topicTable()) {
+    const Assignment a = parseKeyJson(keyJson(makeAssignment({t.id}, 7, 1)), "key.json");
+    const StudentExercises& s = a.students[0];
+    for (const Question& q : s.exercises[0].questions) {
+      for (const double factor : {0.95, 1.3, 3.0}) {
+        Submission sub = answersOf(s);
+        const double wrong =
+            q.answer == 0 ? q.tolerance * 10 * factor : q.answer * factor + (q.integer ? 1 : 0);
+        sub.values[std::string(t.id) + "." + q.id] = wrong;
+        const StudentGrade g = gradeStudent(s, sub);
+        for (const QuestionGrade& qg : g.exercises[0]) {
+          if (qg.right) continue;
+          SCOPED_TRACE(qg.id + ": " + qg.feedback);
+          // The student's value, the direction, the band; then what the slips and the row checks say.
+          static const std::regex shape(
+              "wrong: \\S+ is too (high|low)(, by (less than 1|1 to 10|10 to 50|50 to 100|more than 100) "
+              "%)?(; .*)?");
+          EXPECT_TRUE(std::regex_match(qg.feedback, shape));
+          EXPECT_EQ(qg.feedback.find("key"), std::string::npos);
+          EXPECT_EQ(qg.feedback.find("+-"), std::string::npos);
+          EXPECT_NE(qg.feedback.find(wrong > q.answer ? "too high" : "too low"), std::string::npos);
+        }
+      }
+    }
+  }
+}
+
+TEST(HomeworkGrader, FeedbackNamesTheBandOfTheRelativeDifference) {
+  const Assignment a = parseKeyJson(keyJson(makeAssignment({"rectangles"}, 3, 1)), "key.json");
+  const StudentExercises& s = a.students[0];
+  const Question& q = s.exercises[0].questions[0];
+  ASSERT_GT(q.answer, 0);
+  const std::pair<double, const char*> cases[] = {{0.95, "too low, by 1 to 10 %"},
+                                                  {1.3, "too high, by 10 to 50 %"},
+                                                  {0.4, "too low, by 50 to 100 %"},
+                                                  {2.5, "too high, by more than 100 %"}};
+  for (const auto& [factor, words] : cases) {
+    Submission sub = answersOf(s);
+    sub.values["rectangles." + q.id] = q.answer * factor;
+    const std::string feedback = gradeStudent(s, sub).exercises[0][0].feedback;
+    EXPECT_NE(feedback.find(words), std::string::npos) << factor << ": " << feedback;
   }
 }
 
