@@ -100,11 +100,14 @@ QString LessonTextView::styleSheet() const {
              "pre { white-space: pre-wrap; } .katex-display { overflow-x: auto; overflow-y: hidden; "
              "padding: 0.1em 0; } .katex-error { color: #d00; } table { border-collapse: collapse; }"
              "th, td { border: 1px solid %6; padding: 0.15em 0.5em; }"
-             "blockquote { border-left: 3px solid %6; margin-left: 0; padding-left: 0.8em; }")
+             // A blockquote is a boxed note (docs/lesson-format.md), as in the HTML book and the PDF.
+             "blockquote { border: 1px solid %6; border-left-width: 4px; border-radius: 3px; "
+             "margin: 0.8em 0; padding: 0.2em 0.8em; background: %7; }")
       .arg(font().family())
       .arg(textPixelSize())
       .arg(cssColour(p.color(QPalette::Text)), cssColour(p.color(QPalette::Base)),
-           cssColour(p.color(QPalette::Link)), cssColour(p.color(QPalette::Mid)));
+           cssColour(p.color(QPalette::Link)), cssColour(p.color(QPalette::Mid)))
+      .arg(cssColour(p.color(QPalette::AlternateBase)));
 }
 
 void LessonTextView::applyStyle() {

@@ -65,7 +65,9 @@ std::optional<Exercise> generateRectangles(Draw& draw) {
       const double centre = lambert(Vec3(l / 2, w / 2, 0), Vec3(0, 0, 1), pj);
       s.push_back(
           "No short catalogue formula: integrate Lambert's formula $F_{dA\\to 2} = \\frac{1}{2\\pi}"
-          "\\sum_k \\beta_k \\cos\\gamma_k$ over rectangle 1, $F_{12} = \\frac{1}{A_1}\\int_{A_1} "
+          "\\sum_k \\beta_k \\cos\\gamma_k$ ($\\beta_k$ the angle edge $k$ of rectangle 2 subtends at the "
+          "point, $\\gamma_k$ the angle between rectangle 1's normal and that of the plane through the point "
+          "and edge $k$) over rectangle 1, $F_{12} = \\frac{1}{A_1}\\int_{A_1} "
           "F_{dA\\to 2}\\,dA$ (e.g. Gauss-Legendre, with nodes crowded towards the common edge).");
       s.push_back("At the centre of rectangle 1, $F_{dA\\to 2} = " + num(centre, 6) +
                   "$; the integral (24 x 24 Gauss-Legendre nodes) gives the mean over the rectangle.");
@@ -115,7 +117,11 @@ std::optional<Exercise> generateNusselt(Draw& draw) {
   std::vector<std::string>& s = e.solution;
   s.push_back(
       "Project each corner onto the unit hemisphere, $\\hat R_k = R_k/|R_k|$; dropping it onto the base "
-      "disk keeps its $(x, y)$.");
+      "disk keeps its $(x, y)$. For Lambert's sum, edge $k$ runs from corner $k$ to corner $k+1$: "
+      "$\\beta_k$ is the angle it subtends at the patch, and $\\cos\\gamma_k = \\pm\\, n \\cdot "
+      "\\frac{R_k \\times R_{k+1}}{|R_k \\times R_{k+1}|}$, the cosine of the angle between $n$ and the "
+      "normal of the plane through the patch and the edge (one sign for all edges, the one that makes the "
+      "sum positive: it depends on the order of the corners).");
   // cos gamma_k carries a sign: an edge seen "backwards" (the zenith outside the polygon) takes area away.
   // The polygon's orientation fixes the overall sign, made positive afterwards.
   std::vector<double> betas, cosines;
@@ -154,7 +160,9 @@ std::optional<Exercise> generateNusselt(Draw& draw) {
       "and the form factor $F_{dA \\to 2}$.";
   e.hint =
       "The form factor is the projected area divided by the disk's area $\\pi$; Lambert's formula "
-      "$F = \\frac{1}{2\\pi}\\sum_k\\beta_k\\cos\\gamma_k$ computes the same area edge by edge.";
+      "$F = \\frac{1}{2\\pi}\\sum_k\\beta_k\\cos\\gamma_k$ computes the same area edge by edge ($\\beta_k$ "
+      "the angle edge $k$ subtends at the patch, $\\gamma_k$ the angle between the patch's normal and the "
+      "normal of the plane through the patch and edge $k$).";
   e.questions = {
       {"beta1",
        "$\\beta_1$ in radians",

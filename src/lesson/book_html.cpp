@@ -177,6 +177,9 @@ table { border-collapse: collapse; margin: 1em 0; }
 th, td { border: 1px solid #bbb; padding: 0.2em 0.6em; }
 .katex-display { margin: 0.8em 0; overflow-x: auto; overflow-y: hidden; }
 .katex-error { color: #b00; }
+/* A blockquote is a boxed note (docs/lesson-format.md): a note for readers of the course slides, for one. */
+blockquote { border: 1px solid #999; border-left: 4px solid #777; border-radius: 3px; background: #f6f6f1;
+             margin: 1em 0; padding: 0.2em 0.9em; break-inside: avoid; }
 a { color: #0645ad; }
 .toc-part { font-weight: bold; margin-top: 0.9em; }
 .toc-chapter { margin-left: 1em; font-weight: bold; display: flex; }

@@ -66,6 +66,16 @@ void computeLocal(StageContext& c) {
   addSurfaceValues(r, "Bdirect", RgbField(mesh.emission + direct));
   r.values["ambient"] = ambient.mean();
   r.values["local-error"] = maxRelativeDifference(mesh, r.local, r.B);
+  // The two models over the whole room: area-weighted means of the elements that only reflect.
+  double area = 0, local = 0, global = 0;
+  for (Eigen::Index i = 0; i < r.B.rows(); ++i) {
+    if ((mesh.emission.row(i).array() > 0).any()) continue;
+    area += areas[i];
+    local += areas[i] * level(r.local, i);
+    global += areas[i] * level(r.B, i);
+  }
+  r.values["Blocal.mean"] = area > 0 ? local / area : 0;
+  r.values["B.mean"] = area > 0 ? global / area : 0;
 }
 
 void computeMatrix(StageContext& c) {
@@ -125,6 +135,7 @@ void computeSolve(StageContext& c) {
   addFormFactorValues(r, *F);
   const RadiositySystem system = RadiositySystem::fromMesh(r.mesh, *F);
   r.runs.push_back(runSolver(c, c.parameters.solver, system, r.B, c.parameters.solver, true));
+  addShotValues(r, r.runs.back());
   for (const char* key : {"iterations", "residual", "seconds", "converged"})
     r.values[key] = r.values[std::string(key) + "." + c.parameters.solver];
   const Rgb emitted = emittedPower(system), absorbed = absorbedPower(system, r.B),
@@ -331,6 +342,7 @@ void computeRefine(StageContext& c) {
   r.values["t-vertices"] = static_cast<double>(solution.stats.tVertices);
   r.values["critical-segments"] = static_cast<double>(solution.stats.criticalSegments);
   r.values["seconds"] = solution.stats.seconds;
+  r.values["refine-tolerance"] = o.mode == RefineMode::Hierarchical ? o.linkTolerance : o.gradientTolerance;
 }
 
 }  // namespace rt::lesson::detail

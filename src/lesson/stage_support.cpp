@@ -83,6 +83,7 @@ SolverRun runSolver(StageContext& c, const std::string& name, const RadiositySys
     run.iteration.push_back(rec.iteration);
     run.residuals.push_back(rec.residual);
     run.elapsed.push_back(rec.seconds);
+    if (rec.shooter >= 0) run.shooters.push_back(rec.shooter);
   }
   run.seconds = outcome.seconds;
   run.iterations = outcome.iterations;
@@ -106,6 +107,22 @@ void addSurfaceValues(StepResult& r, const std::string& prefix, const RgbField& 
     r.values[prefix + "." + s.name + suffix] = mean->mean();
     for (int ch = 0; ch < 3; ++ch)
       r.values[prefix + "." + s.name + "." + channels[ch] + suffix] = (*mean)[ch];
+  }
+}
+
+void addShotValues(StepResult& r, const SolverRun& run) {
+  if (run.shooters.empty()) return;
+  for (const auto& s : r.scene.surfaces) {
+    r.values["shots." + s.name] = 0;
+    r.values["first-shot." + s.name] = 0;
+  }
+  for (std::size_t k = 0; k < run.shooters.size(); ++k) {
+    const auto e = static_cast<std::size_t>(run.shooters[k]);
+    if (e >= r.mesh.size()) continue;
+    const std::string& name = r.scene.surfaces[r.scene.patches[r.mesh.elements[e].patch].surface].name;
+    r.values["shots." + name] += 1;
+    double& first = r.values["first-shot." + name];
+    if (first == 0) first = static_cast<double>(k + 1);
   }
 }
 

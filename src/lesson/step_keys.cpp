@@ -211,7 +211,8 @@ std::vector<StepKey> makeTable() {
        .max = 1.99,
        .defaultText = "1",
        .label = "Relaxation",
-       .tooltip = "Over-relaxation factor of the Gauss-Seidel and Jacobi sweeps (1: none; above 1: SOR).",
+       .tooltip = "Over-relaxation factor of the Gauss-Seidel sweeps (1: none; above 1: SOR; below 1: "
+                  "under-relaxation). Jacobi ignores it.",
        .control = true,
        .decimals = 2,
        .step = 0.05,

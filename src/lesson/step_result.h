@@ -26,6 +26,7 @@ struct SolverRun {
   double residual = 0;
   double seconds = 0;
   std::vector<double> iteration, residuals, elapsed;  // one entry per recorded iteration
+  std::vector<int> shooters;                          // shooting solvers: the element of each shot
 };
 
 // One point of a run-time-against-error sweep.

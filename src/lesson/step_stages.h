@@ -50,6 +50,9 @@ SolverRun runSolver(StageContext& c, const std::string& name, const RadiositySys
 void addSurfaceValues(StepResult& r, const std::string& prefix, const RgbField& field,
                       const std::string& suffix = "");
 void addFormFactorValues(StepResult& r, const FormFactorMatrix& F, const std::string& suffix = "");
+// Shooting runs: per surface, how many of the run's shots its elements made (shots.<surface>) and the number
+// of its first shot, counting from 1 (first-shot.<surface>; 0 when it has not shot).
+void addShotValues(StepResult& r, const SolverRun& run);
 
 void computeLocal(StageContext& c);
 void computeMatrix(StageContext& c);

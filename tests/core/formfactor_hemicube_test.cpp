@@ -39,6 +39,20 @@ TEST(Hemicube, DeltaFormFactorsApproachTheDifferentialFormula) {
   EXPECT_NEAR(top[row * res + column], classic, 1e-4 * classic);
 }
 
+TEST(Hemicube, SideFaceDeltaFormFactorsApproachTheirDifferentialFormula) {
+  // The hemicube lesson's side-face formula: a pixel of the face x = 1 at (1, y, z), z its height above the
+  // element's plane, has z dA / (pi (y^2 + z^2 + 1)^2). The sides' rows run from the horizon upwards.
+  const int res = 256, rows = hemicubeSideRows(res);
+  const int row = 40, column = res / 2 - 30;
+  for (HemicubeFace face : {HemicubeFace::PlusU, HemicubeFace::MinusV}) {
+    const auto& side = deltaFormFactors(res, face);
+    const double y = -1 + (column + 0.5) * 2.0 / res, z = (row + 0.5) / rows;
+    const double classic =
+        (2.0 / res) * (1.0 / rows) * z / (std::numbers::pi * std::pow(y * y + z * z + 1, 2));
+    EXPECT_NEAR(side[row * res + column], classic, 1e-4 * classic) << static_cast<int>(face);
+  }
+}
+
 TEST(Hemicube, FacesOfAClosedBoxAreFullAndSeeTheRightWalls) {
   const Mesh mesh = test::meshOf(test::closedBox(1, 1, 1), 1);
   for (int res : {2, 7, 32, 65}) {

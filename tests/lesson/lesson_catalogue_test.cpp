@@ -7,7 +7,9 @@
 #include <set>
 
 #include "core/input_error.h"
+#include "lesson/book_html.h"
 #include "lesson/lesson_loader.h"
+#include "lesson/markdown_html.h"
 #include "support/test_paths.h"
 
 namespace rt::lesson {
@@ -94,6 +96,28 @@ TEST(LessonCatalogue, UnknownSurfacesAreErrorsAtTheirLine) {
     EXPECT_EQ(e.where().line, 9);
     EXPECT_NE(std::string(e.what()).find("receiver"), std::string::npos) << "lists the surfaces it has";
   }
+}
+
+// A note for readers of the course slides is a blockquote starting with its bold label, and a blockquote is
+// drawn as a box in the book (the app's text view has the same rule).
+TEST(LessonCatalogue, SlideNotesAreBoxedBlockquotes) {
+  const std::string html = markdownToHtml("> **Reading the slides.** The unit of radiosity is W/m^2.\n");
+  EXPECT_NE(html.find("<blockquote>"), std::string::npos) << html;
+  const std::string css = bookStyleSheet();
+  const auto rule = css.find("blockquote {");
+  ASSERT_NE(rule, std::string::npos);
+  EXPECT_NE(css.find("border:", rule), std::string::npos) << "a box, not a bar";
+  int notes = 0;
+  for (const auto& file : lessonFiles(repoFolders().lessons)) {
+    std::ifstream in(file);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+      if (line.find("Reading the slides") == std::string::npos) continue;
+      ++notes;
+      EXPECT_EQ(line.rfind("> **Reading the slides.**", 0), 0u) << file << ":" << number;
+    }
+  }
+  EXPECT_GT(notes, 0);
 }
 
 }  // namespace

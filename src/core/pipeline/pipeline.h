@@ -22,6 +22,7 @@ struct IterationPoint {
   int iteration = 0;
   double residual = 0;
   double seconds = 0;
+  int shooter = -1;  // shooting solvers: the element that shot in this iteration
 };
 
 struct SolveOutcome {

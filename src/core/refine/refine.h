@@ -49,8 +49,8 @@ struct RefineOptions {
   double discontinuityMaxEdge = 0;
 
   // Hierarchical: link two nodes when their estimated transfer is below linkTolerance, measured as F (oracle
-  // "F") or as F x B-luminance / mean emitter luminance (oracle "BF"). minArea (0 = minEdge^2) stops the
-  // quadtrees.
+  // "F") or as F x B-luminance / the brightest emitter's luminance (oracle "BF"). minArea (0 = minEdge^2)
+  // stops the quadtrees.
   double linkTolerance = 0.02;
   bool brightnessWeighted = true;  // the BF oracle
   double minArea = 0;
