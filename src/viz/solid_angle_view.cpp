@@ -91,11 +91,11 @@ void writeSolidAngleFigure(const SolidAngleConstruction& c, const SolidAngleView
 
   char text[320];
   std::snprintf(text, sizeof text,
-                "%s: r = %.3g m, tilt %.3g deg\nexact %.5f sr    A cos(theta) / r^2 = %.5f sr (%+.2f%%)",
+                "%s: r = %.3g m, tilt %.3g deg\nexact %.5f sr, A cos(theta) / r^2 = %.5f sr (%+.2f%%)",
                 options.title.c_str(), c.distance, c.tiltDegrees, c.solidAngle, c.smallPatch,
                 100.0 * (c.smallPatch / c.solidAngle - 1.0));
   renderer->AddViewProp(
-      makeCaption(text, readableFontSize(options.size.height, scale, 0.03), options.size.width));
+      makeCaption(text, readableFontSize(options.size.height, scale, 0.026), options.size.width));
   writeRenderWindow(window, path, options.size.dpi);
 }
 
