@@ -42,11 +42,7 @@ void writeSolidAngleFigure(const SolidAngleConstruction& c, const SolidAngleView
   figureFormatOf(path);
   const double scale = options.size.fontScale();
   auto window = makeOffscreenWindow(options.size.width, options.size.height);
-  auto renderer = vtkSmartPointer<vtkRenderer>::New();
-  renderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
-  renderer->UseFXAAOn();
-  window->AddRenderer(renderer);
-  enableDepthPeeling(window, renderer);  // the glass sphere in front of the projection
+  auto renderer = addConstructionRenderer(window);  // the glass sphere in front of the projection
 
   const Colour orange{0.902, 0.624, 0.0}, sky{0.337, 0.706, 0.914}, blue{0.0, 0.447, 0.698},
       dark{0.1, 0.1, 0.1};
