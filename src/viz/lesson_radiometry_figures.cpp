@@ -28,9 +28,11 @@ std::string renderRadiometryView(lesson::View view, const lesson::StepResult& r,
     case lesson::View::CosineLaw: {
       const Series law{"I cos(theta) / r^2", d.tilts, d.cosineLaw};
       const Series mean{"exact mean over the patch, I Omega / A", d.tilts, d.patchMean};
+      // The step's tilt: a line up to the cosine law's value there (a chart line needs two points).
       const double cosine = std::cos(d.tiltDegrees * M_PI / 180);
-      const Series here{
-          "this step's tilt", {d.tiltDegrees}, {d.intensity * cosine / (d.distance * d.distance)}};
+      const Series here{"this step's tilt",
+                        {d.tiltDegrees, d.tiltDegrees},
+                        {0.0, d.intensity * cosine / (d.distance * d.distance)}};
       ChartOptions o{"Irradiance against tilt (" + where + ")",
                      "tilt theta (degrees)",
                      "irradiance (W/m^2)",
