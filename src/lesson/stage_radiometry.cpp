@@ -110,9 +110,9 @@ void computeRadiometry(StageContext& c) {
     d.cosineLaw.push_back(d.intensity * std::cos(radians(degrees)) / r2);
     d.patchMean.push_back(d.intensity * polygonSolidAngle(d.point, tilted) / area);
   }
-  // From a twentieth of the side, where the square's irradiance nears its exitance, to fifty sides away.
+  // From a tenth of the side, where the square's irradiance nears its exitance, to fifty sides away.
   for (int k = 0; k <= 30; ++k) {
-    const double distance = d.side * 0.05 * std::pow(1000.0, k / 30.0);
+    const double distance = d.side * 0.1 * std::pow(500.0, k / 30.0);
     d.distances.push_back(distance);
     d.pointSource.push_back(pointIrradiance(distance, kPower));
     d.squareSource.push_back(squareIrradiance(distance, d.side, kPower));

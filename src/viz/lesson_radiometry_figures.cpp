@@ -27,7 +27,7 @@ std::string renderRadiometryView(lesson::View view, const lesson::StepResult& r,
     }
     case lesson::View::CosineLaw: {
       const Series law{"I cos(theta) / r^2", d.tilts, d.cosineLaw};
-      const Series mean{"exact mean over the patch, I Omega / A", d.tilts, d.patchMean};
+      const Series mean{"exact: I Omega / A", d.tilts, d.patchMean};
       // The step's tilt: a line up to the cosine law's value there (a chart line needs two points).
       const double cosine = std::cos(d.tiltDegrees * M_PI / 180);
       const Series here{"this step's tilt",
@@ -48,9 +48,8 @@ std::string renderRadiometryView(lesson::View view, const lesson::StepResult& r,
              formatted("%.3g", d.side) + " m";
     }
     case lesson::View::InverseSquare: {
-      const Series point{"point emitter, Phi / (pi r^2)", d.distances, d.pointSource};
-      const Series square{"square of side " + formatted("%.3g", d.side) + " m, same power", d.distances,
-                          d.squareSource};
+      const Series point{"point emitter", d.distances, d.pointSource};
+      const Series square{"square, same power", d.distances, d.squareSource};
       ChartOptions o{"Irradiance against distance",
                      "distance r (m)",
                      "irradiance (W/m^2)",
@@ -63,9 +62,10 @@ std::string renderRadiometryView(lesson::View view, const lesson::StepResult& r,
                         {d.distance, d.distance},
                         {r.values.at("H.point"), r.values.at("H.square")}};
       writeLineChart({point, square, here}, o, path);
-      return "Irradiance on a point facing a point emitter and a square emitter of the same power (" +
-             formatted("%.3g", d.power) +
-             " W) against distance, log-log: the point law's slope is -2; the two agree within 1% beyond " +
+      return "Irradiance on a point facing a Lambertian point emitter (Phi / (pi r^2)) and a square of "
+             "side " +
+             formatted("%.3g", d.side) + " m emitting the same power, " + formatted("%.3g", d.power) +
+             " W, against distance, log-log: the point law's slope is -2; the two agree within 1% beyond " +
              formatted("%.3g", d.onePercentDistance) + " m and part near the square";
     }
     default:
