@@ -2,6 +2,7 @@
 // `patch-tilt` and `patch-size` (no scene file). It measures the patch's solid angle exactly and by the
 // small-patch approximation, lights it with an isotropic point source at the point (the cosine law), and
 // compares a point emitter with a square emitter of the same power along the axis (the inverse-square law).
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -61,11 +62,13 @@ double onePercentDistance(double side, double power) {
   return std::sqrt(lo * hi);
 }
 
-// The scene the 3D view shows: the patch, and the point as a small emitting square facing it.
-Scene radiometryScene(const Polygon& patch, double distance, double side) {
+// The scene the 3D view shows: the patch, and the point as a small square facing it. The source emits (the
+// view outlines it): the point, a lamp lighting the patch, unless the step compares the square as a source.
+Scene radiometryScene(const Polygon& patch, double distance, double side, bool squareEmits) {
   Scene s;
   s.name = "A patch seen from a point";
-  s.materials = {{"patch", Rgb::Constant(0.6), Rgb::Zero()}, {"point", Rgb::Zero(), Rgb::Constant(1.0)}};
+  const Rgb light = Rgb::Constant(1.0), none = Rgb::Zero(), white = Rgb::Constant(0.6);
+  s.materials = {{"patch", white, squareEmits ? light : none}, {"point", white, squareEmits ? none : light}};
   s.surfaces = {{"patch", 0}, {"point", 1}};
   const double e = 0.03 * std::max(distance, side);
   const Polygon point{{-e, -e, 0}, {e, -e, 0}, {e, e, 0}, {-e, e, 0}};
@@ -150,7 +153,9 @@ void computeRadiometry(StageContext& c) {
   // Horizontal ground: the sun's rays make 90 degrees minus its elevation with the ground's normal.
   v["winter-summer"] = std::sin(radians(v["sun.winter"])) / std::sin(radians(v["sun.summer"]));
 
-  r.scene = radiometryScene(d.patch, d.distance, d.side);
+  const auto& views = c.step.views;
+  const bool squareEmits = std::find(views.begin(), views.end(), View::InverseSquare) != views.end();
+  r.scene = radiometryScene(d.patch, d.distance, d.side, squareEmits);
   r.mesh = buildMesh(r.scene);
   r.camera = r.scene.cameraOrDefault();
   v["elements"] = static_cast<double>(r.mesh.size());
