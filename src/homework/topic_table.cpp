@@ -51,6 +51,10 @@ const std::vector<Topic>& topicTable() {
       {"subdivision", "The adaptive subdivision criterion",
        "whether the gradient criterion splits an element",
        "hierarchical,meshing,patches-to-pixels,two-solutions", generateSubdivision},
+      {"irradiance", "Solid angle and irradiance",
+       "a small tilted patch lit by a point source: its solid angle, the intensity, the irradiance and the "
+       "power received",
+       "measuring-light", generateIrradiance},
   };
   return table;
 }

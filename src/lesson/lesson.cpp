@@ -8,7 +8,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 21> kViews{{
+constexpr std::array<std::pair<View, const char*>, 24> kViews{{
     {View::Scene, "scene"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
@@ -30,6 +30,9 @@ constexpr std::array<std::pair<View, const char*>, 21> kViews{{
     {View::Cost, "cost"},
     {View::Links, "links"},
     {View::Clusters, "clusters"},
+    {View::SolidAngle, "solid-angle"},
+    {View::CosineLaw, "cosine-law"},
+    {View::InverseSquare, "inverse-square"},
 }};
 
 }  // namespace
@@ -98,6 +101,13 @@ const std::vector<StageInfo>& stageTable() {
        "hierarchical-clustering; "
        "local lines' standard error for each `sweep` (rays per element); the cluster tree at `cluster-depth`",
        {V::Scene, V::Memory, V::Cost, V::Links, V::Noise, V::Clusters}},
+      {Stage::Radiometry,
+       "radiometry",
+       "a square patch of `patch-size` at `patch-distance` and `patch-tilt` from a point: its solid angle "
+       "(exact and A cos(theta) / r^2), the irradiance a point source gives it against tilt, and the "
+       "irradiance of a point source and of a square of the same power against distance (no scene: the "
+       "stage builds its own)",
+       {V::Scene, V::SolidAngle, V::CosineLaw, V::InverseSquare}},
   };
   return table;
 }

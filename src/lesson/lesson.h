@@ -32,6 +32,7 @@ enum class Stage {
   Exercise,     // a homework exercise (src/homework) the reader answers: questions, Check, hint, solution
   PathTrace,    // the radiosity image against a path-traced one of the same equation, and the two-pass image
   Scaling,      // the dense matrix's memory and time against n, clustering's links, local lines' noise
+  Radiometry,   // a patch seen from a point: solid angle, the cosine law, point against area source
 };
 
 // The figures a step can ask for; the names match the viz layer's views.
@@ -48,15 +49,18 @@ enum class View {
   Visibility,
   Error,
   Local,
-  Traced,       // path-traced and radiosity images side by side
-  Difference,   // |image - path-traced| of the radiosity and two-pass images
-  Noise,        // the path tracer's noise against its paths per pixel, log-log
-  TwoPass,      // the two-pass image beside the path-traced one
-  Walkthrough,  // the solution along the step's camera path, as numbered frames
-  Memory,       // bytes of the dense F against n, log-log, with this machine's memory
-  Cost,         // form-factor time against n, log-log
-  Links,        // clustering's links against the n^2 element pairs
-  Clusters,     // the cluster tree's boxes at one depth over the scene
+  Traced,         // path-traced and radiosity images side by side
+  Difference,     // |image - path-traced| of the radiosity and two-pass images
+  Noise,          // the path tracer's noise against its paths per pixel, log-log
+  TwoPass,        // the two-pass image beside the path-traced one
+  Walkthrough,    // the solution along the step's camera path, as numbered frames
+  Memory,         // bytes of the dense F against n, log-log, with this machine's memory
+  Cost,           // form-factor time against n, log-log
+  Links,          // clustering's links against the n^2 element pairs
+  Clusters,       // the cluster tree's boxes at one depth over the scene
+  SolidAngle,     // the patch projected onto the sphere about the point: its solid angle
+  CosineLaw,      // irradiance on the patch against its tilt
+  InverseSquare,  // irradiance against distance from a point source and from a square of the same power
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.
@@ -136,6 +140,10 @@ struct StepParameters {
   int imageSize = 128;   // pixels along each side of the images
   int gatherRays = 64;   // final-gather rays per pixel of the two-pass image
   int clusterDepth = 3;  // scaling stage: the depth of the cluster tree whose boxes are drawn
+  // radiometry stage: the patch seen from the point (metres, degrees)
+  double patchDistance = 1.0;  // from the point to the patch's centre
+  double patchTilt = 0.0;      // between the patch's normal and the line to the point
+  double patchSize = 0.5;      // the side of the square patch (and of the square source)
 };
 
 struct Step {

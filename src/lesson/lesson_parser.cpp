@@ -281,6 +281,11 @@ class Parser {
              "a " + toString(step.stage) + " step has no figures: remove 'views' or choose a stage");
       if (step.stage == Stage::Exercise && p.topic.empty())
         fail(lineOf("stage"), "an exercise step needs a 'topic' (see `radiosity homework topics`)");
+    } else if (step.stage == Stage::Radiometry) {
+      if (!step.scene.empty())
+        fail(lineOf("scene"),
+             "stage 'radiometry' builds its own patch from 'patch-distance', 'patch-tilt' and 'patch-size': "
+             "remove 'scene'");
     } else if (step.scene.empty()) {
       fail(lineOf("stage"), "stage '" + toString(step.stage) + "' needs a 'scene'");
     }

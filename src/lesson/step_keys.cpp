@@ -325,6 +325,47 @@ std::vector<StepKey> makeTable() {
        .control = true,
        .stages = {Stage::Scaling},
        .slot = &P::clusterDepth});
+  add({.name = "patch-distance",
+       .type = KeyType::Double,
+       .min = 0.05,
+       .max = 100,
+       .defaultText = "1",
+       .label = "Patch distance (m)",
+       .tooltip =
+           "Radiometry stage: the distance from the point to the centre of the square patch (and of the "
+           "square source), in metres.",
+       .control = true,
+       .decimals = 2,
+       .step = 0.1,
+       .stages = {Stage::Radiometry},
+       .slot = &P::patchDistance});
+  add({.name = "patch-tilt",
+       .type = KeyType::Double,
+       .min = 0,
+       .max = 89,
+       .defaultText = "0",
+       .label = "Patch tilt (degrees)",
+       .tooltip =
+           "Radiometry stage: the angle between the patch's normal and the line from its centre to the "
+           "point; the patch turns about one of its edges' directions.",
+       .control = true,
+       .decimals = 1,
+       .step = 5,
+       .stages = {Stage::Radiometry},
+       .slot = &P::patchTilt});
+  add({.name = "patch-size",
+       .type = KeyType::Double,
+       .min = 0.01,
+       .max = 10,
+       .defaultText = "0.5",
+       .label = "Patch side (m)",
+       .tooltip = "Radiometry stage: the side of the square patch, and of the square source compared with a "
+                  "point source of the same power, in metres.",
+       .control = true,
+       .decimals = 2,
+       .step = 0.05,
+       .stages = {Stage::Radiometry},
+       .slot = &P::patchSize});
   add({.name = "light-scale",
        .type = KeyType::Double,
        .min = 0,

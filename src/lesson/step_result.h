@@ -13,6 +13,7 @@
 #include "core/pipeline/pipeline.h"
 #include "core/scene.h"
 #include "homework/exercise.h"
+#include "lesson/radiometry_data.h"
 #include "lesson/scaling_data.h"
 #include "lesson/traced_pictures.h"
 
@@ -74,6 +75,9 @@ struct StepResult {
 
   // Scaling stage: the dense method's cost and the clustering and local-lines solvers' against n and rays.
   std::shared_ptr<const ScalingData> scaling;
+
+  // Radiometry stage: the patch, its solid angle and the irradiance curves.
+  std::shared_ptr<const RadiometryData> radiometry;
 
   // Exercise stage: the question, its answers and worked solution (values: given.<name>, answer.<id>).
   std::optional<homework::Exercise> exercise;

@@ -98,6 +98,10 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
     for (const auto& q : result.exercise->questions) result.values["answer." + q.id] = q.answer;
     return result;
   }
+  if (step.stage == Stage::Radiometry) {
+    detail::computeRadiometry(c);
+    return result;
+  }
 
   try {
     result.scene = scene(step.scene);
@@ -152,6 +156,7 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
   switch (step.stage) {
     case Stage::Text:
     case Stage::Exercise:
+    case Stage::Radiometry:
     case Stage::Scene:
       break;
     case Stage::FormFactors:

@@ -62,7 +62,8 @@ void computeBounces(StageContext& c);
 void computeExact(StageContext& c);
 void computeBenchmark(StageContext& c);
 void computeRefine(StageContext& c);
-void computePathTrace(StageContext& c);  // stage_pathtrace.cpp
-void computeScaling(StageContext& c);    // stage_scaling.cpp
+void computePathTrace(StageContext& c);   // stage_pathtrace.cpp
+void computeScaling(StageContext& c);     // stage_scaling.cpp
+void computeRadiometry(StageContext& c);  // stage_radiometry.cpp: builds its own scene, no scene file
 
 }  // namespace rt::lesson::detail

@@ -7,6 +7,7 @@
 #include "viz/chart.h"
 #include "viz/exact_visibility.h"
 #include "viz/hemicube_view.h"
+#include "viz/lesson_radiometry_figures.h"
 #include "viz/lesson_scaling_figures.h"
 #include "viz/lesson_traced_figures.h"
 #include "viz/matrix_view.h"
@@ -251,6 +252,10 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
     case View::Links:
     case View::Clusters:
       return detail::renderScalingView(view, step, r, s, path);
+    case View::SolidAngle:
+    case View::CosineLaw:
+    case View::InverseSquare:
+      return detail::renderRadiometryView(view, r, s, path);
   }
   return "";
 }

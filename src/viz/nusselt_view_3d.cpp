@@ -19,11 +19,8 @@ void writeNusseltHemisphereFigure(const NusseltConstruction& c, const NusseltVie
   figureFormatOf(path);
   const double scale = options.size.fontScale();
   auto window = makeOffscreenWindow(options.size.width, options.size.height);
-  auto renderer = vtkSmartPointer<vtkRenderer>::New();
-  renderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
-  renderer->UseFXAAOn();
-  window->AddRenderer(renderer);
-  enableDepthPeeling(window, renderer);  // the glass hemisphere in front of the disk and the projections
+  // Depth peeling: the glass hemisphere in front of the disk and the projections.
+  auto renderer = addConstructionRenderer(window);
 
   // The unit hemisphere is drawn at a radius that suits the scene: half the distance to the receiver.
   Vec3 receiverCentre = Vec3::Zero();

@@ -133,6 +133,15 @@ void enableDepthPeeling(vtkRenderWindow* window, vtkRenderer* renderer) {
   renderer->SetOcclusionRatio(0.0);  // exact: peel until no fragment is left (bounded by the peel count)
 }
 
+vtkSmartPointer<vtkRenderer> addConstructionRenderer(vtkRenderWindow* window) {
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->SetBackground(kBackground[0], kBackground[1], kBackground[2]);
+  renderer->UseFXAAOn();
+  window->AddRenderer(renderer);
+  enableDepthPeeling(window, renderer);
+  return renderer;
+}
+
 std::vector<unsigned char> captureRgb(vtkRenderWindow* window, int& width, int& height) {
   vtkSmartPointer<vtkImageData> image = grab(window);
   int dims[3];

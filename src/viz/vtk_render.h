@@ -32,6 +32,10 @@ vtkSmartPointer<vtkRenderWindow> makeOffscreenWindow(int width, int height);
 // multisampling. Call after the renderer is added to the window.
 void enableDepthPeeling(vtkRenderWindow* window, vtkRenderer* renderer);
 
+// The renderer of a 3D construction with glass parts (the Nusselt hemisphere, the solid angle's sphere): the
+// background grey, FXAA, added to `window`, with depth peeling.
+vtkSmartPointer<vtkRenderer> addConstructionRenderer(vtkRenderWindow* window);
+
 // Renders the window and reads its RGB pixels (bottom row first).
 std::vector<unsigned char> captureRgb(vtkRenderWindow* window, int& width, int& height);
 

@@ -132,8 +132,8 @@ TEST(DesktopHabits, LessonsAreNumberedAsTheTextsCiteThem) {
   RT_REQUIRE_DISPLAY();
   auto window = test::makeWindow();
   ASSERT_TRUE(window->openLesson("ray-casting", 0));
-  // "Lesson 6 estimated form factors by sampling" (the stochastic lesson): the contents say "Lesson 6".
-  const auto items = window->contents()->findItems("Lesson 6:", Qt::MatchStartsWith | Qt::MatchRecursive);
+  // "Lesson 7 estimated form factors by sampling" (the stochastic lesson): the contents say "Lesson 7".
+  const auto items = window->contents()->findItems("Lesson 7:", Qt::MatchStartsWith | Qt::MatchRecursive);
   ASSERT_EQ(items.size(), 1);
   EXPECT_TRUE(items.front()->text(0).contains("Ray casting")) << items.front()->text(0).toStdString();
   EXPECT_FALSE(items.front()->toolTip(0).isEmpty());
@@ -144,8 +144,8 @@ TEST(DesktopHabits, LessonsAreNumberedAsTheTextsCiteThem) {
   for (QLabel* l : window->findChildren<QLabel*>())
     if (l->text().contains("step 1 of")) label = l;
   ASSERT_NE(label, nullptr);
-  EXPECT_TRUE(label->text().startsWith("Lesson 6: Ray casting")) << label->text().toStdString();
+  EXPECT_TRUE(label->text().startsWith("Lesson 7: Ray casting")) << label->text().toStdString();
   EXPECT_TRUE(label->wordWrap());
   EXPECT_FALSE(label->toolTip().isEmpty());
-  EXPECT_TRUE(window->windowTitle().startsWith("Lesson 6:"));
+  EXPECT_TRUE(window->windowTitle().startsWith("Lesson 7:"));
 }

@@ -37,7 +37,7 @@ TEST(MathsPane, TheLessonPaneShowsTypesetMathsWithoutErrors) {
   EXPECT_GE(state.formulas, 5);
   EXPECT_EQ(state.katexNodes, state.formulas) << "every formula set by KaTeX";
   EXPECT_TRUE(state.errors.isEmpty()) << state.errors.join("; ").toStdString();
-  EXPECT_TRUE(window->textView()->toPlainText().contains("\\tag{2.3}")) << "numbered by the lesson";
+  EXPECT_TRUE(window->textView()->toPlainText().contains("\\tag{3.3}")) << "numbered by the lesson";
   shoot(*window, "normal");
 }
 

@@ -135,7 +135,7 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
   EXPECT_TRUE(fs::exists(out / "katex" / "fonts" / "KaTeX_Main-Regular.woff2"));
   const std::string rendering = readFile(out / "rendering-equation.html");
   EXPECT_NE(rendering.find(".svg\""), std::string::npos) << "figures as SVG";
-  EXPECT_NE(rendering.find("(2.1)"), std::string::npos) << "numbered equations";
+  EXPECT_NE(rendering.find("(3.1)"), std::string::npos) << "numbered equations";
   EXPECT_NE(rendering.find("href=\"#eq-rendering\""), std::string::npos) << "equation references";
 
   // The PDF: a page per lesson or more, every title in its text, numbered chapters.

@@ -14,6 +14,7 @@
 #include "core/formfactor/nusselt.h"
 #include "core/formfactor/sampling.h"
 #include "core/io/scene_loader.h"
+#include "core/radiometry.h"
 #include "core/refine/refine.h"
 #include "core/solvers/bounces_solver.h"
 #include "core/solvers/direct_solver.h"
@@ -288,6 +289,24 @@ TEST(HomeworkIndependent, SubdivisionAgreesWithTheCoresLuminance) {
     EXPECT_AGREES(e, "jump", jump, 0.01);
     const bool split = jump > threshold && e.given.at("edge") >= 2 * e.given.at("min_edge");
     EXPECT_EQ(answer(e, "split"), split ? 1.0 : 0.0);
+  });
+}
+
+TEST(HomeworkIndependent, IrradianceAgreesWithTheExactSolidAngle) {
+  forEachVariant("irradiance", [](const Exercise& e) {
+    // The patch as the statement describes it: centre r along +z, normal turned by the tilt from the line to
+    // the lamp at the origin.
+    const double r = e.given.at("distance"), side = e.given.at("side");
+    const double t = e.given.at("tilt") * std::numbers::pi / 180;
+    const Vec3 centre(0, 0, r), n(0, std::sin(t), -std::cos(t)), u(1, 0, 0), v = n.cross(u);
+    const Polygon patch{centre - side / 2 * (u + v), centre + side / 2 * (u - v), centre + side / 2 * (u + v),
+                        centre - side / 2 * (u - v)};
+    const double omega = polygonSolidAngle(Vec3::Zero(), patch);
+    const double intensity = e.given.at("power") / (4 * std::numbers::pi);
+    EXPECT_AGREES(e, "omega", omega, 0.6);
+    EXPECT_AGREES(e, "I", intensity, 0.01);
+    EXPECT_AGREES(e, "P", intensity * omega, 0.6);
+    EXPECT_AGREES(e, "H", intensity * omega / (side * side), 0.6);
   });
 }
 
