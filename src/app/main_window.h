@@ -259,8 +259,8 @@ class MainWindow : public QMainWindow {
   // The steps seen last, by recentKey(): a step revisited with the same settings is shown from memory.
   RecentResults recent_;
   QString pendingKey_;
-  // The automatic exposure of the step's (or scene's) first result, kept while the reader changes the light
-  // or the reflectances, so that a brighter light shows as a brighter room; 0 until a result is shown.
+  // The automatic exposure of the step's (or scene's) first result, kept while the reader changes only the
+  // light or the reflectances, so that a brighter light shows as a brighter room; 0 until a result is shown.
   double keptExposure_ = 0;  // the key of the computation under way (empty: a scene, not kept)
   bool showingKept_ = false;
   QLabel* statusLabel_ = nullptr;

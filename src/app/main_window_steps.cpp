@@ -227,6 +227,8 @@ void MainWindow::applyParameters(const lesson::StepParameters& parameters) {
   history_->recordChange(parameters_, parameters);
   const bool recolourOnly =
       mode_ == Mode::Scene && result_ && !busy() && changesOnlyDisplay(parameters_, parameters);
+  // A new mesh, method or solver is a new picture, exposed anew; a changed light is shown in the same one.
+  if (!changesOnlyLightOrDisplay(parameters_, parameters)) keptExposure_ = 0;
   parameters_ = parameters;
   saveSession();
   // A scene's solution does not depend on how it is shown: the views recolour it (a lesson step's figures

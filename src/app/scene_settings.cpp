@@ -26,8 +26,15 @@ void chooseSceneSolve(std::size_t polygons, lesson::StepParameters& p) {
   p.tolerance = 1e-3;
 }
 
-bool changesOnlyDisplay(const lesson::StepParameters& from, const lesson::StepParameters& to) {
+namespace {
+
+// Whether `to` equals `from` but for the display keys and, with `lightToo`, the light and the reflectances.
+bool sameBut(const lesson::StepParameters& from, const lesson::StepParameters& to, bool lightToo) {
   lesson::StepParameters shown = from;
+  if (lightToo) {
+    shown.lightScale = to.lightScale;
+    shown.reflectance = to.reflectance;
+  }
   shown.exposure = to.exposure;
   shown.toneMap = to.toneMap;
   shown.gamma = to.gamma;
@@ -43,6 +50,16 @@ bool changesOnlyDisplay(const lesson::StepParameters& from, const lesson::StepPa
         lesson::stepValueText(shown, key, key.name) != lesson::stepValueText(to, key, key.name))
       return false;
   return true;
+}
+
+}  // namespace
+
+bool changesOnlyDisplay(const lesson::StepParameters& from, const lesson::StepParameters& to) {
+  return sameBut(from, to, false);
+}
+
+bool changesOnlyLightOrDisplay(const lesson::StepParameters& from, const lesson::StepParameters& to) {
+  return sameBut(from, to, true);
 }
 
 }  // namespace rt::app

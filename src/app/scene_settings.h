@@ -19,5 +19,8 @@ void chooseSceneSolve(std::size_t polygons, lesson::StepParameters& p);
 // True when `to` differs from `from` only in the display keys (exposure, tone map, gamma, smooth shading,
 // mesh edges): the same solution, shown differently.
 bool changesOnlyDisplay(const lesson::StepParameters& from, const lesson::StepParameters& to);
+// The same, where the light and the reflectances may change too: the exposure in use is kept across such a
+// change, so that the picture shows it.
+bool changesOnlyLightOrDisplay(const lesson::StepParameters& from, const lesson::StepParameters& to);
 
 }  // namespace rt::app

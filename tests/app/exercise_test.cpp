@@ -96,13 +96,12 @@ TEST(AppExercise, AnAnswerTypedIntoTheFieldIsChecked) {
 TEST(AppExercise, AnswersStayWithTheirStepAcrossStepsAndRestarts) {
   RT_REQUIRE_DISPLAY();
   QSettings().remove("exercises");
-  const int lesson = 10;
   std::map<std::string, QString> typed, verdicts;
   QString summary;
   {
     auto window = rt::app::test::makeWindow();
     window->show();
-    ASSERT_EQ(window->library()->lessons()[lesson].id, "cornell-box");
+    ASSERT_GE(window->library()->indexOf("cornell-box"), 0);
     ASSERT_TRUE(window->openLesson("cornell-box", 4));
     ASSERT_TRUE(window->waitUntilIdle(20000));
     ExercisePanel* panel = window->exercisePanel();
