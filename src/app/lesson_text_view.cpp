@@ -15,6 +15,7 @@
 #include <QWebEngineView>
 
 #include "lesson/markdown_html.h"
+#include "lesson/text_apparatus.h"
 #include "typeset/web_engine.h"
 
 namespace rt::app {
@@ -100,7 +101,8 @@ QString LessonTextView::styleSheet() const {
              "pre { white-space: pre-wrap; } .katex-display { overflow-x: auto; overflow-y: hidden; "
              "padding: 0.1em 0; } .katex-error { color: #d00; } table { border-collapse: collapse; }"
              "th, td { border: 1px solid %6; padding: 0.15em 0.5em; }"
-             "blockquote { border-left: 3px solid %6; margin-left: 0; padding-left: 0.8em; }")
+             "blockquote { border-left: 3px solid %6; margin-left: 0; padding-left: 0.8em; }" +
+             QString::fromStdString(lesson::apparatusStyleSheet()).simplified())
       .arg(font().family())
       .arg(textPixelSize())
       .arg(cssColour(p.color(QPalette::Text)), cssColour(p.color(QPalette::Base)),
