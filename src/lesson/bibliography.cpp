@@ -246,12 +246,12 @@ std::vector<const Reference*> sortedEntries(const Bibliography& bibliography,
 }
 
 std::string referenceListHtml(const std::vector<const Reference*>& entries) {
-  if (entries.empty()) return {};
-  // One HTML block without blank lines, so that Markdown passes it through whole.
-  std::string html = "<ul class=\"references\">\n";
+  // One paragraph per entry, so that a long list flows from page to page in the printed book; no blank line
+  // between them, so that Markdown passes them through as one HTML block.
+  std::string html;
   for (const Reference* r : entries)
-    html += "<li id=\"ref-" + escapeHtml(r->key) + "\">" + entryHtml(*r) + "</li>\n";
-  return html + "</ul>\n";
+    html += "<p class=\"reference\" id=\"ref-" + escapeHtml(r->key) + "\">" + entryHtml(*r) + "</p>\n";
+  return html;
 }
 
 }  // namespace rt::lesson

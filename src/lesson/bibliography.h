@@ -46,7 +46,7 @@ std::string entryText(const Reference& r);
 // family name, then year, then label.
 std::vector<const Reference*> sortedEntries(const Bibliography& bibliography,
                                             const std::vector<std::string>& keys);
-// A reference list: one HTML block (a list, which Markdown passes through) whose items have the anchor ids
+// A reference list: one HTML block (which Markdown passes through) of paragraphs with the anchor ids
 // "ref-<key>" that citations link to.
 std::string referenceListHtml(const std::vector<const Reference*>& entries);
 

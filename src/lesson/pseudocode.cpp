@@ -177,11 +177,19 @@ std::string pseudocodeHtml(const Pseudocode& listing, const std::string& number)
                      "</figcaption>\n<table class=\"algorithm-lines\">\n";
   int n = 0;
   for (const PseudocodeLine& l : listing.lines) {
-    html += "<tr><td class=\"alg-number\">" + std::to_string(++n) + "</td><td class=\"alg-code\"";
-    if (l.indent > 0) html += " style=\"padding-left: calc(" + std::to_string(l.indent) + " * 1.2em)\"";
-    html += ">" + lineHtml(l.code, {"", l.line}, true) + "</td><td class=\"alg-source\">";
-    if (!l.source.empty())
-      html += "<span title=\"src/" + escapeHtml(l.source) + "\">" + escapeHtml(l.source) + "</span>";
+    // Wrapped lines hang under their first word; each level of indentation is 1.5em.
+    html += "<tr><td class=\"alg-number\">" + std::to_string(++n) +
+            "</td><td class=\"alg-code\" style=\"padding-left: calc(" + std::to_string(l.indent) +
+            " * 1.5em + 1em)\">" + lineHtml(l.code, {"", l.line}, true) + "</td><td class=\"alg-source\">";
+    if (!l.source.empty()) {
+      // The file's name and the function, small; the path under src/ on hover.
+      const std::size_t colon = l.source.find(": ");
+      const std::string path = l.source.substr(0, colon);
+      const std::string name = path.substr(path.rfind('/') + 1);
+      html += "<span title=\"src/" + escapeHtml(l.source) + "\">" + escapeHtml(name);
+      if (colon != std::string::npos) html += "<br>" + escapeHtml(l.source.substr(colon + 2));
+      html += "</span>";
+    }
     html += "</td></tr>\n";
   }
   return html + "</table></figure>\n\n";

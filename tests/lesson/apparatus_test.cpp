@@ -77,7 +77,7 @@ TEST(Bibliography, ReferenceListsAreSortedByAuthorAndAnchored) {
   EXPECT_EQ(sorted[2]->key, "kajiya1986");
   const std::string list = referenceListHtml(sorted);
   EXPECT_EQ(list.find("\n\n"), std::string::npos) << "a blank line would end the HTML block";
-  EXPECT_NE(list.find("<li id=\"ref-cohen1993\">"), std::string::npos) << list;
+  EXPECT_NE(list.find("<p class=\"reference\" id=\"ref-cohen1993\">"), std::string::npos) << list;
 }
 
 TEST(Bibliography, MistakesNameTheFileAndTheEntry) {
@@ -177,8 +177,12 @@ TEST(Pseudocode, ListingsAreNumberedAndReferencesBecomeLinks) {
   EXPECT_NE(html.find("<b>for</b> <b>each</b> element <x-equation>i</x-equation> <b>do</b>"),
             std::string::npos)
       << html;
-  EXPECT_NE(html.find("padding-left: calc(1 * 1.2em)"), std::string::npos);
-  EXPECT_NE(html.find("title=\"src/core/solvers/gathering_solvers.cpp: iterate()\""), std::string::npos);
+  EXPECT_NE(html.find("padding-left: calc(1 * 1.5em + 1em)"), std::string::npos);
+  EXPECT_NE(
+      html.find(
+          "title=\"src/core/solvers/gathering_solvers.cpp: iterate()\">gathering_solvers.cpp<br>iterate()"),
+      std::string::npos)
+      << html;
   EXPECT_NE(html.find("<p>After.</p>"), std::string::npos) << "the text after the listing is Markdown again";
   const auto formulas = algorithmFormulas(l);
   ASSERT_EQ(formulas.size(), 5u);  // the caption's and the lines'
