@@ -131,9 +131,9 @@ std::string format(const Reference& r, bool html) {
   add(r.note, t(r.note));
   std::string out;
   for (const std::string& part : parts) out += (out.empty() ? "" : " ") + part;
-  const std::string link = r.doi.empty() ? r.url : "https://doi.org/" + r.doi;
-  const std::string shown = r.doi.empty() ? r.url : "doi:" + r.doi;
-  if (!link.empty()) out += " " + (html ? "<a href=\"" + t(link) + "\">" + t(shown) + "</a>" : shown);
+  // The DOI or address as text: the book's pages link to nothing outside the book.
+  const std::string where = r.doi.empty() ? r.url : "doi:" + r.doi;
+  if (!where.empty()) out += " " + (html ? "<span class=\"doi\">" + t(where) + "</span>" : where);
   return out;
 }
 

@@ -38,7 +38,7 @@ Bibliography loadBibliography(const std::string& path);
 // Parses CSL-JSON text; `file` names it in errors.
 Bibliography parseBibliography(const std::string& json, const std::string& file);
 
-// The full entry: HTML (titles of books and venues in italics, the DOI as a link) and plain text.
+// The full entry: HTML (titles of books and venues in italics) and plain text.
 std::string entryHtml(const Reference& r);
 std::string entryText(const Reference& r);
 

@@ -178,7 +178,9 @@ std::string pseudocodeHtml(const Pseudocode& listing, const std::string& number)
   int n = 0;
   for (const PseudocodeLine& l : listing.lines) {
     // Wrapped lines hang under their first word; each level of indentation is 1.5em.
-    html += "<tr><td class=\"alg-number\">" + std::to_string(++n) +
+    // The whole line names its code on hover too: a narrow page hides the column of notes.
+    const std::string title = l.source.empty() ? "" : " title=\"src/" + escapeHtml(l.source) + "\"";
+    html += "<tr" + title + "><td class=\"alg-number\">" + std::to_string(++n) +
             "</td><td class=\"alg-code\" style=\"padding-left: calc(" + std::to_string(l.indent) +
             " * 1.5em + 1em)\">" + lineHtml(l.code, {"", l.line}, true) + "</td><td class=\"alg-source\">";
     if (!l.source.empty()) {
