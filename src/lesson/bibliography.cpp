@@ -25,6 +25,22 @@ std::string text(const json& entry, const char* field) {
   return it->dump();
 }
 
+// The CSL fields read as they are, and where they go.
+const std::pair<const char*, std::string Reference::*> kTextFields[] = {
+    {"container-title", &Reference::container},
+    {"collection-title", &Reference::collection},
+    {"number", &Reference::number},
+    {"publisher", &Reference::publisher},
+    {"publisher-place", &Reference::place},
+    {"volume", &Reference::volume},
+    {"issue", &Reference::issue},
+    {"page", &Reference::pages},
+    {"edition", &Reference::edition},
+    {"genre", &Reference::genre},
+    {"DOI", &Reference::doi},
+    {"URL", &Reference::url},
+    {"note", &Reference::note}};
+
 std::vector<Person> people(const json& entry, const char* field, const SourceLocation& where) {
   std::vector<Person> out;
   const auto it = entry.find(field);
@@ -202,19 +218,7 @@ Bibliography parseBibliography(const std::string& source, const std::string& fil
     if (r.authors.empty() && r.editors.empty())
       throw InputError(where, "entry '" + r.key + "' has no \"author\" (or \"editor\")");
     r.year = issuedYear(e, where);
-    r.container = text(e, "container-title");
-    r.collection = text(e, "collection-title");
-    r.number = text(e, "number");
-    r.publisher = text(e, "publisher");
-    r.place = text(e, "publisher-place");
-    r.volume = text(e, "volume");
-    r.issue = text(e, "issue");
-    r.pages = text(e, "page");
-    r.edition = text(e, "edition");
-    r.genre = text(e, "genre");
-    r.doi = text(e, "DOI");
-    r.url = text(e, "URL");
-    r.note = text(e, "note");
+    for (const auto& [field, member] : kTextFields) r.*member = text(e, field);
     bibliography.entries.push_back(std::move(r));
   }
   assignLabels(bibliography.entries);

@@ -37,15 +37,6 @@ const char* kSmallBibliography = R"json([
   "title": "A title"}
 ])json";
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
 TEST(Bibliography, LabelsAreAuthorYearAndEntriesAreComplete) {
   const Bibliography b = parseBibliography(kSmallBibliography, "refs.json");
   ASSERT_EQ(b.entries.size(), 5u);
@@ -82,14 +73,14 @@ TEST(Bibliography, ReferenceListsAreSortedByAuthorAndAnchored) {
 }
 
 TEST(Bibliography, MistakesNameTheFileAndTheEntry) {
-  EXPECT_NE(errorOf([] {
+  EXPECT_NE(test::inputErrorOf([] {
               parseBibliography("[{\"id\": \"x\", \"title\": \"t\", \"author\": [{\"family\": \"A\"}]}]",
                                 "r.json");
             }).find("r.json at /0: error: no year"),
             std::string::npos);
-  EXPECT_NE(errorOf([] { parseBibliography("[\n{\"id\": }\n]", "r.json"); }).find("r.json:2:"),
+  EXPECT_NE(test::inputErrorOf([] { parseBibliography("[\n{\"id\": }\n]", "r.json"); }).find("r.json:2:"),
             std::string::npos);
-  EXPECT_NE(errorOf([] {
+  EXPECT_NE(test::inputErrorOf([] {
               parseBibliography("[{\"id\": \"x\", \"title\": \"t\", \"issued\": {\"date-parts\": [[1990]]}}]",
                                 "r.json");
             }).find("has no \"author\""),
@@ -124,29 +115,20 @@ TEST(Citations, BecomeAuthorYearLinksWithTheEntryAsTitle) {
 
 TEST(Citations, UnknownOrMalformedOnesAreErrorsAtTheirLines) {
   const Bibliography b = parseBibliography(kSmallBibliography, "refs.json");
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(test::inputErrorOf([&] {
               prepareCitations("One.\n\nSee [@whitted1980].\n", 7, "l.md", b);
             }).find("l.md:9: error: citation of an unknown work '@whitted1980'"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] { findCitations("x [@a; b] y\n", 3, "l.md"); }).find("l.md:3:"), std::string::npos);
-  EXPECT_NE(errorOf([&] { findCitations("x [@a\ny]\n", 3, "l.md"); }).find("not closed"), std::string::npos);
+  EXPECT_NE(test::inputErrorOf([&] { findCitations("x [@a; b] y\n", 3, "l.md"); }).find("l.md:3:"),
+            std::string::npos);
+  EXPECT_NE(test::inputErrorOf([&] { findCitations("x [@a\ny]\n", 3, "l.md"); }).find("not closed"),
+            std::string::npos);
 }
 
 const std::string kListing =
     "Text, see @alg:sweep.\n\n```pseudocode\nid: sweep\ncaption: One sweep of $B$\n"
     "$B \\gets E$   // core/solvers/gathering_solvers.cpp: iterate()\n"
     "for each element $i$ do\n  $B_i \\gets E_i$\nreturn $B$\n```\n\nAfter.\n";
-
-Lesson lessonWithText(const std::string& text) {
-  Lesson l;
-  l.file = "lessons/x.md";
-  l.order = 4;
-  Step step;
-  step.text = text;
-  step.textLine = 10;
-  l.steps.push_back(step);
-  return l;
-}
 
 TEST(Pseudocode, ListingsAreParsedWithTheirLinesIndentationAndSources) {
   const auto listings = findPseudocode(kListing, 10, "l.md");
@@ -164,7 +146,7 @@ TEST(Pseudocode, ListingsAreParsedWithTheirLinesIndentationAndSources) {
 }
 
 TEST(Pseudocode, ListingsAreNumberedAndReferencesBecomeLinks) {
-  const Lesson l = lessonWithText(kListing);
+  const Lesson l = test::oneStepLesson(kListing);
   const AlgorithmNumbers numbers = numberAlgorithms(l);
   EXPECT_EQ(numbers.at("sweep"), "4.1");
   const std::string prepared = preparePseudocode(kListing, 10, l.file, numbers);
@@ -192,20 +174,22 @@ TEST(Pseudocode, ListingsAreNumberedAndReferencesBecomeLinks) {
 }
 
 TEST(Pseudocode, MistakesAreErrorsAtTheirLines) {
-  const Lesson l = lessonWithText(kListing);
-  EXPECT_NE(errorOf([&] {
+  const Lesson l = test::oneStepLesson(kListing);
+  EXPECT_NE(test::inputErrorOf([&] {
               preparePseudocode("See @alg:other.\n", 10, l.file, numberAlgorithms(l));
             }).find("lessons/x.md:10: error: reference to an unknown algorithm '@alg:other'"),
             std::string::npos);
-  EXPECT_NE(errorOf([] {
+  EXPECT_NE(test::inputErrorOf([] {
               findPseudocode("\n```pseudocode\ncaption: c\nx\n```\n", 1, "l.md");
             }).find("l.md:2: error: a ```pseudocode block starts with 'id: name'"),
             std::string::npos);
-  EXPECT_NE(errorOf([] {
+  EXPECT_NE(test::inputErrorOf([] {
               findPseudocode("```pseudocode\nid: a\ncaption: c\nx $y\n```\n", 1, "l.md");
             }).find("l.md:4:"),
             std::string::npos);
-  EXPECT_NE(errorOf([] { numberAlgorithms(lessonWithText(kListing + kListing)); }).find("used twice"),
+  EXPECT_NE(test::inputErrorOf([] {
+              numberAlgorithms(test::oneStepLesson(kListing + kListing));
+            }).find("used twice"),
             std::string::npos);
 }
 
