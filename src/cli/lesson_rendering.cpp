@@ -9,6 +9,7 @@
 #include "core/input_error.h"
 #include "homework/handout.h"
 #include "lesson/citations.h"
+#include "lesson/glossary.h"
 #include "lesson/step_numbers.h"
 #include "lesson/step_runner.h"
 #include "lesson/text_apparatus.h"
@@ -69,6 +70,7 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
   std::vector<homework::AppendixEntry> appendix;  // the exercises, answered at the back of the book
   std::vector<std::string> cited;                 // the works the lessons cite, for the references
   lesson::Bibliography bibliography;
+  std::vector<lesson::Lesson> loaded;  // for the glossary's first uses
   ProgressLine progress(true);
   std::filesystem::create_directories(output);
   std::ofstream skipped(std::filesystem::path(output) / "skipped.txt");  // figures this build could not draw
@@ -125,6 +127,7 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
     }
     numbers << "\n]\n";
     rendered.push_back(std::move(page));
+    loaded.push_back(l);
   }
   progress.finish();
   std::stable_sort(rendered.begin(), rendered.end(),
@@ -150,6 +153,20 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
     references.order = rendered.back().order + 1;
     references.intro = lesson::furtherReading(cited, bibliography, 0);
     rendered.push_back(std::move(references));
+  }
+  const auto glossary = lesson::loadGlossary(lesson::glossaryPath(folders.lessons));
+  if (!glossary.empty() && settings.prepareText) {
+    // Every term defined once, with a link to where the book first uses it.
+    std::stable_sort(loaded.begin(), loaded.end(),
+                     [](const auto& x, const auto& y) { return x.order < y.order; });
+    lesson::RenderedLesson terms;
+    terms.id = "glossary";
+    terms.title = "Glossary";
+    terms.chapter = "Appendix";
+    terms.summary = "The terms of the book, each defined once, with the section that first uses it.";
+    terms.order = rendered.back().order + 1;
+    terms.intro = lesson::glossaryHtml(glossary, loaded);
+    rendered.push_back(std::move(terms));
   }
   return rendered;
 }

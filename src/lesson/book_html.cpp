@@ -147,6 +147,12 @@ std::string printBookHtml(const std::vector<RenderedLesson>& lessons) {
       true);
   for (const auto& l : lessons) html += chapterBody(l, "c" + number(l) + "-", true);
   html += "</div>\n</body>\n</html>\n";
+  // Links between chapters ("hemicube.html#s5-2", from the glossary) point into the one document.
+  for (const auto& l : lessons) {
+    const std::string from = "href=\"" + lessonPageFile(l) + "#", to = "href=\"#c" + number(l) + "-";
+    for (std::size_t at = 0; (at = html.find(from, at)) != std::string::npos; at += to.size())
+      html.replace(at, from.size(), to);
+  }
   return html;
 }
 

@@ -71,7 +71,7 @@ td.alg-code { text-indent: -1em; }
 td.alg-source { width: 10em; text-align: right; color: #888; font-size: 0.68em; line-height: 1.2;
                 font-family: "DejaVu Sans Mono", monospace; overflow-wrap: anywhere; }
 @media (max-width: 30em) { td.alg-source { display: none; } }
-p.reference { padding-left: 1.5em; text-indent: -1.5em; margin: 0.35em 0; }
+p.reference, p.glossary { padding-left: 1.5em; text-indent: -1.5em; margin: 0.35em 0; }
 )";
 }
 

@@ -122,7 +122,7 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
     EXPECT_EQ(html.find("katex-error"), std::string::npos) << name << ": a formula failed";
     EXPECT_EQ(html.find("<script"), std::string::npos) << name << ": the pages need no script";
     if (name != "index.html") {
-      if (name != "references.html") {
+      if (name != "references.html" && name != "glossary.html") {
         EXPECT_NE(html.find("class=\"katex\""), std::string::npos) << name << " shows no maths";
       }
       const bool navigation =
@@ -134,8 +134,9 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
   EXPECT_TRUE(fs::exists(out / "exercise-answers.html"));
   // The works the chapters cite are listed at the back, by author.
   EXPECT_TRUE(fs::exists(out / "references.html"));
-  EXPECT_EQ(pages, static_cast<int>(titles.size()) + 3)
-      << "index.html, one page per lesson, the answers and the references";
+  EXPECT_TRUE(fs::exists(out / "glossary.html"));
+  EXPECT_EQ(pages, static_cast<int>(titles.size()) + 4)
+      << "index.html, one page per lesson, the answers, the references and the glossary";
   const std::string shooting = readFile(out / "shooting.html");
   EXPECT_NE(shooting.find("<figure class=\"algorithm\" id=\"alg-shooting\">"), std::string::npos)
       << "an algorithm listing";

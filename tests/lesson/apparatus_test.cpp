@@ -12,6 +12,7 @@
 #include "core/input_error.h"
 #include "lesson/book_html.h"
 #include "lesson/citations.h"
+#include "lesson/glossary.h"
 #include "lesson/markdown_html.h"
 #include "lesson/pseudocode.h"
 #include "lesson/text_apparatus.h"
@@ -207,6 +208,35 @@ TEST(Apparatus, ThePrintedBookKeepsEachChaptersAnchorsApart) {
   EXPECT_NE(html.find(">Further reading</h2>"), std::string::npos);
 }
 
+TEST(Glossary, TermsLinkToTheirFirstUseInBookOrder) {
+  Lesson a = test::oneStepLesson("No term here, but `form factor` in code and $form factor$ in maths.\n", 2);
+  a.id = "a";
+  Lesson b = test::oneStepLesson("Two form factors.\n", 3);
+  b.id = "b";
+  b.steps[0].title = "Pairs";
+  const auto use = firstUse("form factor", {a, b});
+  ASSERT_TRUE(use.has_value());
+  EXPECT_EQ(use->lesson->id, "b");
+  EXPECT_EQ(use->section, 1);
+  EXPECT_FALSE(firstUse("factorial", {a, b}).has_value());
+  const std::string html = glossaryHtml({{"form factor", "The fraction $F_{ij}$."}}, {a, b});
+  EXPECT_EQ(
+      html,
+      "<p class=\"glossary\" id=\"gl-form-factor\"><b>form factor</b>: The fraction "
+      "<x-equation>F_{ij}</x-equation>. First used in <a href=\"b.html#s3-1\">section 3.1, Pairs</a>.</p>\n");
+  // In the printed book the link points into the one document.
+  RenderedLesson page;
+  page.id = "b";
+  page.order = 3;
+  page.title = "B";
+  RenderedLesson terms;
+  terms.id = "glossary";
+  terms.order = 4;
+  terms.title = "Glossary";
+  terms.intro = html;
+  EXPECT_NE(printBookHtml({page, terms}).find("href=\"#c3-s3-1\""), std::string::npos);
+}
+
 // The shipped lessons and their bibliography.
 
 std::string fileText(const std::string& path) {
@@ -231,6 +261,17 @@ TEST(ShippedApparatus, EveryEntryIsCitedAndEveryCitationResolves) {
     }
   }
   for (const Reference& r : b.entries) EXPECT_TRUE(cited.count(r.key)) << r.key << " is cited nowhere";
+}
+
+TEST(ShippedApparatus, EveryGlossaryTermIsUsedInTheBook) {
+  const auto folders = test::repoFolders();
+  const auto glossary = loadGlossary(glossaryPath(folders.lessons));
+  EXPECT_GE(glossary.size(), 20u);
+  const std::vector<Lesson> lessons = loadCatalogue(folders);
+  for (const GlossaryEntry& e : glossary) EXPECT_TRUE(firstUse(e.term, lessons).has_value()) << e.term;
+  const std::string html = glossaryHtml(glossary, lessons);
+  EXPECT_NE(html.find("id=\"gl-radiosity\""), std::string::npos);
+  EXPECT_EQ(html.find("\n\n"), std::string::npos) << "a blank line would end the HTML block";
 }
 
 TEST(ShippedApparatus, TheAlgorithmChaptersListTheirAlgorithmsAndNameCodeThatExists) {
