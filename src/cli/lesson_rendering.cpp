@@ -34,6 +34,19 @@ lesson::RenderedLesson renderedHeader(const lesson::Lesson& l) {
   return r;
 }
 
+// One more chapter after the last, in the book's Appendix part.
+void appendChapter(std::vector<lesson::RenderedLesson>& book, const std::string& id, const std::string& title,
+                   const std::string& summary, std::string body) {
+  lesson::RenderedLesson chapter;
+  chapter.id = id;
+  chapter.title = title;
+  chapter.chapter = "Appendix";
+  chapter.summary = summary;
+  chapter.order = book.back().order + 1;
+  chapter.intro = std::move(body);
+  book.push_back(std::move(chapter));
+}
+
 }  // namespace
 
 lesson::LessonFolders LessonArguments::folders() const {
@@ -134,39 +147,23 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
                    [](const auto& x, const auto& y) { return x.order < y.order; });
   if (!appendix.empty()) {
     // The answers close the book: one more page after the last lesson, in the Markdown, HTML and PDF.
-    lesson::RenderedLesson answers;
-    answers.id = homework::kAnswersAppendixId;
-    answers.title = "Answers to the exercises";
-    answers.chapter = "Appendix";
-    answers.summary = "The answer and the worked solution of every exercise, lesson by lesson.";
-    answers.order = rendered.back().order + 1;
-    answers.intro = homework::answersAppendix(appendix);
-    rendered.push_back(std::move(answers));
+    appendChapter(rendered, homework::kAnswersAppendixId, "Answers to the exercises",
+                  "The answer and the worked solution of every exercise, lesson by lesson.",
+                  homework::answersAppendix(appendix));
   }
   if (!cited.empty() && settings.prepareText) {
     // Every work cited in the book, sorted by author, after the last chapter.
-    lesson::RenderedLesson references;
-    references.id = "references";
-    references.title = "References";
-    references.chapter = "Appendix";
-    references.summary = "Every work the chapters cite, by author.";
-    references.order = rendered.back().order + 1;
-    references.intro = lesson::furtherReading(cited, bibliography, 0);
-    rendered.push_back(std::move(references));
+    appendChapter(rendered, "references", "References", "Every work the chapters cite, by author.",
+                  lesson::furtherReading(cited, bibliography, 0));
   }
   const auto glossary = lesson::loadGlossary(lesson::glossaryPath(folders.lessons));
   if (!glossary.empty() && settings.prepareText) {
     // Every term defined once, with a link to where the book first uses it.
     std::stable_sort(loaded.begin(), loaded.end(),
                      [](const auto& x, const auto& y) { return x.order < y.order; });
-    lesson::RenderedLesson terms;
-    terms.id = "glossary";
-    terms.title = "Glossary";
-    terms.chapter = "Appendix";
-    terms.summary = "The terms of the book, each defined once, with the section that first uses it.";
-    terms.order = rendered.back().order + 1;
-    terms.intro = lesson::glossaryHtml(glossary, loaded);
-    rendered.push_back(std::move(terms));
+    appendChapter(rendered, "glossary", "Glossary",
+                  "The terms of the book, each defined once, with the section that first uses it.",
+                  lesson::glossaryHtml(glossary, loaded));
   }
   return rendered;
 }
