@@ -5,8 +5,9 @@
 
 #include "core/input_error.h"
 #include "core/solvers/radiosity_system.h"
-#include "lesson/maths.h"
+#include "lesson/citations.h"
 #include "lesson/step_result.h"
+#include "lesson/text_apparatus.h"
 
 namespace rt::app {
 
@@ -109,15 +110,20 @@ PipelineResult LessonLibrary::runOne(const lesson::Lesson& lesson, const lesson:
     takeSolve(out, std::move(stepResult->replay));
   }
   try {
-    // Equations are numbered over the whole lesson, so that a step shows the numbers the book prints.
-    const lesson::EquationNumbers equations = lesson::numberEquations(lesson);
-    std::string text = "## " + step.title + "\n\n" +
-                       lesson::prepareMaths(lesson::resolvedText(lesson, step, *stepResult), step.textLine,
-                                            lesson.file, equations);
-    if (step.index == 0 && !lesson.intro.empty())
+    // Equations and listings are numbered over the whole lesson, so that a step shows the numbers the book
+    // prints; the works the page cites are listed under it, where its citations link to.
+    const lesson::TextApparatus apparatus = lesson::lessonApparatus(lesson);
+    const std::string resolved = lesson::resolvedText(lesson, step, *stepResult);
+    std::vector<std::string> cited = lesson::citedKeys(resolved, step.textLine, lesson.file);
+    std::string text =
+        "## " + step.title + "\n\n" + lesson::prepareText(resolved, step.textLine, lesson.file, apparatus);
+    if (step.index == 0 && !lesson.intro.empty()) {
       text = "# " + lesson.title + "\n\n" +
-             lesson::prepareMaths(lesson.intro, lesson.introLine, lesson.file, equations) + "\n\n" + text;
-    out.text = text;
+             lesson::prepareText(lesson.intro, lesson.introLine, lesson.file, apparatus) + "\n\n" + text;
+      const auto introKeys = lesson::citedKeys(lesson.intro, lesson.introLine, lesson.file);
+      cited.insert(cited.end(), introKeys.begin(), introKeys.end());
+    }
+    out.text = text + "\n\n" + lesson::furtherReading(cited, apparatus.bibliography, 3);
   } catch (const InputError& e) {
     out.text = step.text;
     out.note = e.what();

@@ -15,6 +15,7 @@
 #include <QWebEngineView>
 
 #include "lesson/markdown_html.h"
+#include "lesson/text_apparatus.h"
 #include "typeset/web_engine.h"
 
 namespace rt::app {
@@ -103,11 +104,12 @@ QString LessonTextView::styleSheet() const {
              // A blockquote is a boxed note (docs/lesson-format.md), as in the HTML book and the PDF.
              "blockquote { border: 1px solid %6; border-left-width: 4px; border-radius: 3px; "
              "margin: 0.8em 0; padding: 0.2em 0.8em; background: %7; }")
-      .arg(font().family())
-      .arg(textPixelSize())
-      .arg(cssColour(p.color(QPalette::Text)), cssColour(p.color(QPalette::Base)),
-           cssColour(p.color(QPalette::Link)), cssColour(p.color(QPalette::Mid)))
-      .arg(cssColour(p.color(QPalette::AlternateBase)));
+             .arg(font().family())
+             .arg(textPixelSize())
+             .arg(cssColour(p.color(QPalette::Text)), cssColour(p.color(QPalette::Base)),
+                  cssColour(p.color(QPalette::Link)), cssColour(p.color(QPalette::Mid)))
+             .arg(cssColour(p.color(QPalette::AlternateBase))) +
+         QString::fromStdString(lesson::apparatusStyleSheet()).simplified();
 }
 
 void LessonTextView::applyStyle() {

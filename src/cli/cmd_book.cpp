@@ -61,11 +61,12 @@ void book(BookOptions o) {
   // Every formula first: a typing mistake in one is reported at its line before anything is computed.
   std::vector<std::string> problems;
   for (const auto& file : files)
-    for (auto& p : mathsProblems(lesson::loadLesson(file, folders.scenes))) problems.push_back(std::move(p));
-  if (!problems.empty()) fail(problems, "problem(s) in the lessons' maths");
+    for (auto& p : lessonTextProblems(lesson::loadLesson(file, folders.scenes)))
+      problems.push_back(std::move(p));
+  if (!problems.empty()) fail(problems, "problem(s) in the lessons' text");
 
   o.figures.format = "svg";  // vectors where the view is 2D (3D views are pictures inside the SVG)
-  o.figures.prepareMaths = true;
+  o.figures.prepareText = true;
   const auto lessons = renderLessons(files, folders, o.output, o.figures);
   const fs::path out = o.output;
   copyKatex(out);

@@ -45,10 +45,10 @@ void check(const LessonArguments& a, bool run) {
     try {
       const lesson::Lesson l = lesson::loadLesson(file, folders.scenes);
       lesson::checkAgainstScenes(l, folders.scenes);
-      const auto maths = mathsProblems(l);
-      if (!maths.empty()) {
-        for (const auto& problem : maths) std::cerr << problem << "\n";
-        throw InputError({l.file, 0}, std::to_string(maths.size()) + " problem(s) in its maths");
+      const auto problems = lessonTextProblems(l);
+      if (!problems.empty()) {
+        for (const auto& problem : problems) std::cerr << problem << "\n";
+        throw InputError({l.file, 0}, std::to_string(problems.size()) + " problem(s) in its text");
       }
       if (run) {
         for (const auto& step : l.steps) {
@@ -115,7 +115,7 @@ void addLessonCommand(CLI::App& app) {
   renderCommand->callback([=] {
     RenderSettings settings = *figures;
     settings.quick = *quick;
-    settings.prepareMaths = true;  // numbered equations and linked references in the Markdown too
+    settings.prepareText = true;  // numbered equations and listings, linked references in the Markdown too
     if (*quick) {
       settings.width = std::min(settings.width, 320);
       settings.height = std::min(settings.height, 240);

@@ -8,9 +8,11 @@
 #include "cli/cli_common.h"
 #include "core/input_error.h"
 #include "homework/handout.h"
-#include "lesson/maths.h"
+#include "lesson/citations.h"
+#include "lesson/glossary.h"
 #include "lesson/step_numbers.h"
 #include "lesson/step_runner.h"
+#include "lesson/text_apparatus.h"
 #ifdef RT_HAVE_VIZ
 #include "viz/lesson_figures.h"
 #endif
@@ -30,6 +32,19 @@ lesson::RenderedLesson renderedHeader(const lesson::Lesson& l) {
   r.order = l.order;
   r.intro = l.intro;
   return r;
+}
+
+// One more chapter after the last, in the book's Appendix part.
+void appendChapter(std::vector<lesson::RenderedLesson>& book, const std::string& id, const std::string& title,
+                   const std::string& summary, std::string body) {
+  lesson::RenderedLesson chapter;
+  chapter.id = id;
+  chapter.title = title;
+  chapter.chapter = "Appendix";
+  chapter.summary = summary;
+  chapter.order = book.back().order + 1;
+  chapter.intro = std::move(body);
+  book.push_back(std::move(chapter));
 }
 
 }  // namespace
@@ -66,16 +81,25 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
   options.quick = settings.quick;
   std::vector<lesson::RenderedLesson> rendered;
   std::vector<homework::AppendixEntry> appendix;  // the exercises, answered at the back of the book
+  std::vector<std::string> cited;                 // the works the lessons cite, for the references
+  lesson::Bibliography bibliography;
+  std::vector<lesson::Lesson> loaded;  // for the glossary's first uses
   ProgressLine progress(true);
   std::filesystem::create_directories(output);
   std::ofstream skipped(std::filesystem::path(output) / "skipped.txt");  // figures this build could not draw
   for (const auto& file : files) {
     const lesson::Lesson l = lesson::loadLesson(file, folders.scenes);
-    const lesson::EquationNumbers equations = lesson::numberEquations(l);
+    const lesson::TextApparatus apparatus = lesson::lessonApparatus(l);
+    bibliography = apparatus.bibliography;  // one file beside the lessons
     options.outputDir = (std::filesystem::path(output) / l.id).string();
     lesson::StepRunner runner(folders.scenes, options);
     lesson::RenderedLesson page = renderedHeader(l);
-    if (settings.prepareMaths) page.intro = lesson::prepareMaths(l.intro, l.introLine, l.file, equations);
+    if (settings.prepareText) {
+      page.intro = lesson::prepareText(l.intro, l.introLine, l.file, apparatus);
+      page.furtherReading = lesson::furtherReading(lesson::citedKeys(l), apparatus.bibliography, 0);
+    }
+    for (const auto& key : lesson::citedKeys(l))
+      if (std::find(cited.begin(), cited.end(), key) == cited.end()) cited.push_back(key);
     // The numbers behind every step, for checking against the app and for answer keys.
     std::filesystem::create_directories(options.outputDir);
     std::ofstream numbers(std::filesystem::path(options.outputDir) / "numbers.json");
@@ -97,7 +121,7 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
               << ", \"numbers\": " << lesson::stepNumbersJson(result) << "}";
       firstNumbers = false;
       std::string text = lesson::resolvedText(l, step, result);
-      if (settings.prepareMaths) text = lesson::prepareMaths(text, step.textLine, l.file, equations);
+      if (settings.prepareText) text = lesson::prepareText(text, step.textLine, l.file, apparatus);
       if (result.exercise) {
         text += homework::exerciseBookText(*result.exercise);
         appendix.push_back({std::to_string(l.order) + "." + std::to_string(step.index + 1) + " " + step.title,
@@ -116,35 +140,44 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
     }
     numbers << "\n]\n";
     rendered.push_back(std::move(page));
+    loaded.push_back(l);
   }
   progress.finish();
   std::stable_sort(rendered.begin(), rendered.end(),
                    [](const auto& x, const auto& y) { return x.order < y.order; });
   if (!appendix.empty()) {
     // The answers close the book: one more page after the last lesson, in the Markdown, HTML and PDF.
-    lesson::RenderedLesson answers;
-    answers.id = homework::kAnswersAppendixId;
-    answers.title = "Answers to the exercises";
-    answers.chapter = "Appendix";
-    answers.summary = "The answer and the worked solution of every exercise, lesson by lesson.";
-    answers.order = rendered.back().order + 1;
-    answers.intro = homework::answersAppendix(appendix);
-    rendered.push_back(std::move(answers));
+    appendChapter(rendered, homework::kAnswersAppendixId, "Answers to the exercises",
+                  "The answer and the worked solution of every exercise, lesson by lesson.",
+                  homework::answersAppendix(appendix));
+  }
+  if (!cited.empty() && settings.prepareText) {
+    // Every work cited in the book, sorted by author, after the last chapter.
+    appendChapter(rendered, "references", "References", "Every work the chapters cite, by author.",
+                  lesson::furtherReading(cited, bibliography, 0));
+  }
+  const auto glossary = lesson::loadGlossary(lesson::glossaryPath(folders.lessons));
+  if (!glossary.empty() && settings.prepareText) {
+    // Every term defined once, with a link to where the book first uses it.
+    std::stable_sort(loaded.begin(), loaded.end(),
+                     [](const auto& x, const auto& y) { return x.order < y.order; });
+    appendChapter(rendered, "glossary", "Glossary",
+                  "The terms of the book, each defined once, with the section that first uses it.",
+                  lesson::glossaryHtml(glossary, loaded));
   }
   return rendered;
 }
 
-std::vector<std::string> mathsProblems(const lesson::Lesson& l) {
-  std::vector<std::string> problems;
-  try {
-    const lesson::EquationNumbers numbers = lesson::numberEquations(l);
-    lesson::prepareMaths(l.intro, l.introLine, l.file, numbers);
-    for (const auto& step : l.steps) lesson::prepareMaths(step.text, step.textLine, l.file, numbers);
-  } catch (const InputError& e) {
-    problems.push_back(e.what());
-  }
+std::vector<std::string> lessonTextProblems(const lesson::Lesson& l) {
+  std::vector<std::string> problems = lesson::textProblems(l);
 #ifdef RT_HAVE_TYPESET
   for (auto& p : typeset::checkFormulas(lesson::lessonFormulas(l), l.file)) problems.push_back(std::move(p));
+  try {
+    for (auto& p : typeset::checkFormulas(lesson::algorithmFormulas(l), l.file))
+      problems.push_back(std::move(p));
+  } catch (const InputError&) {
+    // A malformed listing: lesson::textProblems reported it.
+  }
 #endif
   return problems;
 }

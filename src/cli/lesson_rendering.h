@@ -28,8 +28,8 @@ struct RenderSettings {
   int width = 900;
   int height = 700;
   std::string format = "png";  // of the figures: png, or svg (vectors where the view is 2D)
-  // For HTML: displayed equations numbered and references linked (lesson::prepareMaths).
-  bool prepareMaths = false;
+  // For HTML: equations and listings numbered, citations and references linked (lesson::prepareText).
+  bool prepareText = false;
 };
 
 // Runs every step of the lessons, writes figures and numbers.json to <output>/<lesson>/ and the figures a
@@ -39,9 +39,9 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
                                                   const lesson::LessonFolders& folders,
                                                   const std::string& output, const RenderSettings& settings);
 
-// The lesson's maths problems, one "FILE:LINE: error: ..." each: a reference to an unknown equation, a label
-// used twice and (in a build with Qt WebEngine, while a typeset::WebSession lives) a formula KaTeX cannot
-// set.
-std::vector<std::string> mathsProblems(const lesson::Lesson& lesson);
+// The lesson's text problems, one "FILE:LINE: error: ..." each: a reference to an unknown equation or
+// algorithm, a citation of an unknown work, a label used twice, a malformed listing and (in a build with Qt
+// WebEngine, while a typeset::WebSession lives) a formula KaTeX cannot set.
+std::vector<std::string> lessonTextProblems(const lesson::Lesson& lesson);
 
 }  // namespace rt::cli

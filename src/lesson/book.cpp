@@ -32,6 +32,7 @@ std::string writeLessonPage(const RenderedLesson& lesson, const std::string& dir
       md += "![" + f.caption + "](" + f.file + ")\n\n*" + f.caption + "*\n\n";
     if (!step.text.empty()) md += step.text + "\n";
   }
+  if (!lesson.furtherReading.empty()) md += "## Further reading\n\n" + lesson.furtherReading + "\n";
   md += "---\n\n";
   if (previous) md += "Previous: [" + heading(*previous) + "](" + previous->id + ".md) | ";
   md += "[Contents](index.md)";

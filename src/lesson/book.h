@@ -25,6 +25,7 @@ struct RenderedLesson {
   int order = 0;
   std::string intro;
   std::vector<RenderedStep> steps;
+  std::string furtherReading;  // the works the lesson cites, as an HTML list (lesson::furtherReading)
 };
 
 // Writes <dir>/<id>.md; returns its path. Throws std::runtime_error naming the path on failure.

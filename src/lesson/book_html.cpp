@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "lesson/markdown_html.h"
+#include "lesson/text_apparatus.h"
 
 namespace rt::lesson {
 namespace {
@@ -43,15 +44,20 @@ std::string chapterBody(const RenderedLesson& l, const std::string& idPrefix, bo
               "\"><img src=\"" + escapeHtml(f.file) + "\" alt=\"" + escapeHtml(f.caption) +
               "\"><figcaption><b>" + label + ".</b> " + escapeHtml(f.caption) + "</figcaption></figure>\n";
     }
-    std::string text = markdownToHtml(step.text);
-    // Equation links point into this chapter; in the printed document every chapter has its own prefix.
-    if (forPrint) {
-      for (std::size_t at = 0; (at = text.find("href=\"#eq-", at)) != std::string::npos; at += 10)
-        text.insert(at + 7, idPrefix);
-      for (std::size_t at = 0; (at = text.find("id=\"eq-", at)) != std::string::npos; at += 7)
-        text.insert(at + 4, idPrefix);
+    html += markdownToHtml(step.text);
+  }
+  if (!l.furtherReading.empty())
+    html += "<h2 class=\"further-reading\" id=\"" + idPrefix + "further-reading\">Further reading</h2>\n" +
+            l.furtherReading;
+  // Links to equations, listings and cited works point into this chapter; in the printed document every
+  // chapter has its own prefix.
+  if (forPrint) {
+    for (const std::string kind : {"eq-", "alg-", "ref-"}) {
+      for (std::size_t at = 0; (at = html.find("href=\"#" + kind, at)) != std::string::npos; at += 7)
+        html.insert(at + 7, idPrefix);
+      for (std::size_t at = 0; (at = html.find("id=\"" + kind, at)) != std::string::npos; at += 4)
+        html.insert(at + 4, idPrefix);
     }
-    html += text;
   }
   return html;
 }
@@ -141,6 +147,12 @@ std::string printBookHtml(const std::vector<RenderedLesson>& lessons) {
       true);
   for (const auto& l : lessons) html += chapterBody(l, "c" + number(l) + "-", true);
   html += "</div>\n</body>\n</html>\n";
+  // Links between chapters ("hemicube.html#s5-2", from the glossary) point into the one document.
+  for (const auto& l : lessons) {
+    const std::string from = "href=\"" + lessonPageFile(l) + "#", to = "href=\"#c" + number(l) + "-";
+    for (std::size_t at = 0; (at = html.find(from, at)) != std::string::npos; at += to.size())
+      html.replace(at, from.size(), to);
+  }
   return html;
 }
 
@@ -200,7 +212,7 @@ body.print { font-size: 11pt; }
 .print.dense .page { padding: 14mm 16mm 18mm; }
 .print .book-title { font-size: 2.4em; }
 .print .subtitle { font-size: 1.2em; color: #444; }
-)";
+)" + apparatusStyleSheet();
 }
 
 }  // namespace rt::lesson

@@ -165,25 +165,41 @@ std::string prepareMaths(const std::string& markdown, int firstLine, const std::
       throw InputError({file, lineAt(markdown, dollars, firstLine)},
                        "'$$' does not start or end a displayed formula here: close it, and keep its lines "
                        "free of blank lines and of lines that Markdown reads as headings, lists or quotes");
-    std::size_t at = begin;
-    while ((at = markdown.find("@eq:", at)) != std::string::npos && at < end) {
-      std::size_t q = at + 4;
-      while (q < end && labelChar(markdown[q])) ++q;
-      while (q > at + 4 && !std::isalnum(static_cast<unsigned char>(markdown[q - 1]))) --q;  // "@eq:x." ends
-      const std::string label = markdown.substr(at + 4, q - at - 4);
-      const auto number = numbers.byLabel.find(label);
-      if (number == numbers.byLabel.end())
-        throw InputError({file, lineAt(markdown, at, firstLine)},
-                         "reference to an unknown equation '@eq:" + label +
-                             "' (label a displayed equation with {#eq:" + label + "} after its closing $$)");
-      edits.push_back({at, q, "[(" + number->second + ")](#eq-" + label + ")"});
-      at = q;
-    }
+  }
+  for (const LabelReference& r : findReferences(markdown, firstLine, "eq")) {
+    const auto number = numbers.byLabel.find(r.label);
+    if (number == numbers.byLabel.end())
+      throw InputError({file, r.line}, "reference to an unknown equation '@eq:" + r.label +
+                                           "' (label a displayed equation with {#eq:" + r.label +
+                                           "} after its closing $$)");
+    edits.push_back({r.begin, r.end, "[(" + number->second + ")](#eq-" + r.label + ")"});
   }
   std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.begin > b.begin; });
   std::string out = markdown;
   for (const Edit& e : edits) out.replace(e.begin, e.end - e.begin, e.text);
   return out;
+}
+
+std::vector<LabelReference> findReferences(const std::string& markdown, int firstLine,
+                                           const std::string& kind) {
+  std::vector<LabelReference> found;
+  const std::string mark = "@" + kind + ":";
+  for (const auto& [begin, end] : scan(markdown).plain) {
+    std::size_t at = begin;
+    while ((at = markdown.find(mark, at)) != std::string::npos && at < end) {
+      std::size_t q = at + mark.size();
+      while (q < end && labelChar(markdown[q])) ++q;
+      while (q > at + mark.size() && !std::isalnum(static_cast<unsigned char>(markdown[q - 1]))) --q;
+      found.push_back(
+          {at, q, markdown.substr(at + mark.size(), q - at - mark.size()), lineAt(markdown, at, firstLine)});
+      at = q;
+    }
+  }
+  return found;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> plainTextPieces(const std::string& markdown) {
+  return scan(markdown).plain;
 }
 
 std::vector<Formula> lessonFormulas(const Lesson& lesson) {

@@ -43,6 +43,19 @@ EquationNumbers numberEquations(const Lesson& lesson);
 std::string prepareMaths(const std::string& markdown, int firstLine, const std::string& file,
                          const EquationNumbers& numbers);
 
+// A reference "@<kind>:label" in the text outside code and maths ("@eq:radiosity", "@alg:shooting"): its
+// offsets in the Markdown (a sentence's closing punctuation is not part of the label), label and file line.
+struct LabelReference {
+  std::size_t begin = 0, end = 0;
+  std::string label;
+  int line = 0;
+};
+std::vector<LabelReference> findReferences(const std::string& markdown, int firstLine,
+                                           const std::string& kind);
+
+// The pieces [begin, end) of the Markdown that are normal text: not code, not maths, not HTML.
+std::vector<std::pair<std::size_t, std::size_t>> plainTextPieces(const std::string& markdown);
+
 // Every formula of a lesson, with its file line and placeholders replaced by sample numbers: what the
 // typesetter checks when the lesson or the book is built.
 std::vector<Formula> lessonFormulas(const Lesson& lesson);

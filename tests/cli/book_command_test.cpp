@@ -122,7 +122,9 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
     EXPECT_EQ(html.find("katex-error"), std::string::npos) << name << ": a formula failed";
     EXPECT_EQ(html.find("<script"), std::string::npos) << name << ": the pages need no script";
     if (name != "index.html") {
-      EXPECT_NE(html.find("class=\"katex\""), std::string::npos) << name << " shows no maths";
+      if (name != "references.html" && name != "glossary.html") {
+        EXPECT_NE(html.find("class=\"katex\""), std::string::npos) << name << " shows no maths";
+      }
       const bool navigation =
           html.find("rel=\"next\"") != std::string::npos || html.find("rel=\"prev\"") != std::string::npos;
       EXPECT_TRUE(navigation) << name << " has no chapter navigation";
@@ -130,7 +132,17 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
   }
   // The lessons' exercises are answered in an appendix page after the last lesson.
   EXPECT_TRUE(fs::exists(out / "exercise-answers.html"));
-  EXPECT_EQ(pages, static_cast<int>(titles.size()) + 2) << "index.html, one page per lesson and the answers";
+  // The works the chapters cite are listed at the back, by author.
+  EXPECT_TRUE(fs::exists(out / "references.html"));
+  EXPECT_TRUE(fs::exists(out / "glossary.html"));
+  EXPECT_EQ(pages, static_cast<int>(titles.size()) + 4)
+      << "index.html, one page per lesson, the answers, the references and the glossary";
+  const std::string shooting = readFile(out / "shooting.html");
+  EXPECT_NE(shooting.find("<figure class=\"algorithm\" id=\"alg-shooting\">"), std::string::npos)
+      << "an algorithm listing";
+  EXPECT_NE(shooting.find(">Algorithm 10.1</a>"), std::string::npos) << "a reference to the listing";
+  EXPECT_NE(shooting.find(">Cohen et al. 1988</a>"), std::string::npos) << "citations, author-year";
+  EXPECT_NE(shooting.find(">Further reading</h2>"), std::string::npos);
   EXPECT_TRUE(fs::exists(out / "katex" / "katex.min.css"));
   EXPECT_TRUE(fs::exists(out / "katex" / "fonts" / "KaTeX_Main-Regular.woff2"));
   const std::string rendering = readFile(out / "rendering-equation.html");
@@ -155,6 +167,8 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
   EXPECT_NE(flat.find("Chapter 17"), std::string::npos);
   EXPECT_NE(flat.find("Figure 5.1."), std::string::npos);
   EXPECT_NE(flat.find("Radiosity after 1 bounce"), std::string::npos);
+  EXPECT_NE(flat.find("Algorithm 10.1 Progressive refinement"), std::string::npos);
+  EXPECT_NE(flat.find("Goral, Cindy M., Kenneth E. Torrance"), std::string::npos) << "the references";
   EXPECT_EQ(flat.find("after 1 bounces"), std::string::npos) << "one bounce is singular";
 
   // Its figures are not blank: the area just above every caption "Figure N.M." (where the figure is) shows

@@ -23,15 +23,6 @@ std::string lessonWith(const std::string& keys, const std::string& views = "scen
          keys + "views: " + views + "\nfigure: tour\n```\nText.\n";
 }
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(CameraSteps, TheKeysAreReadWithTheirLines) {
   const Lesson l = parseLesson(
       lessonWith("camera: above\ncamera-path: left, above, right\npath-frames: 12\n"), "views", "views.md");
@@ -39,21 +30,23 @@ TEST(CameraSteps, TheKeysAreReadWithTheirLines) {
   EXPECT_EQ(s.camera.name, "above");
   EXPECT_EQ(s.camera.path, (std::vector<std::string>{"left", "above", "right"}));
   EXPECT_EQ(s.camera.pathFrames, 12);
-  EXPECT_NE(errorOf([] { parseLesson(lessonWith("camera-path: left\n"), "v", "v.md"); }).find("v.md:10"),
-            std::string::npos);
-  const std::string noPath = errorOf([] { parseLesson(lessonWith("", "walkthrough"), "v", "v.md"); });
+  EXPECT_NE(
+      test::inputErrorOf([] { parseLesson(lessonWith("camera-path: left\n"), "v", "v.md"); }).find("v.md:10"),
+      std::string::npos);
+  const std::string noPath =
+      test::inputErrorOf([] { parseLesson(lessonWith("", "walkthrough"), "v", "v.md"); });
   EXPECT_NE(noPath.find("the walkthrough view needs a 'camera-path'"), std::string::npos) << noPath;
 }
 
 TEST(CameraSteps, AnUnknownCameraNamesTheLessonLineAndTheScenesCameras) {
   const Lesson l = parseLesson(lessonWith("camera-path: left, nowhere\n"), "views", "views.md");
-  const std::string error = errorOf([&] { checkAgainstScenes(l, test::repoFolders().scenes); });
+  const std::string error = test::inputErrorOf([&] { checkAgainstScenes(l, test::repoFolders().scenes); });
   EXPECT_NE(error.find("views.md:10"), std::string::npos) << error;
   EXPECT_NE(error.find("unknown camera 'nowhere' (the scene's cameras: "), std::string::npos) << error;
   EXPECT_NE(error.find("above"), std::string::npos) << error;
   const Lesson named = parseLesson(lessonWith("camera: nowhere\n"), "views", "views.md");
   StepRunner runner(test::repoFolders().scenes, RunOptions{.quick = true});
-  const std::string atRun = errorOf([&] { runner.run(named, named.steps.front()); });
+  const std::string atRun = test::inputErrorOf([&] { runner.run(named, named.steps.front()); });
   EXPECT_NE(atRun.find("views.md:10"), std::string::npos) << atRun;
 }
 

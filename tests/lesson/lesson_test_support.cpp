@@ -5,6 +5,7 @@
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/formfactor_method.h"
+#include "core/input_error.h"
 #include "support/test_paths.h"
 #ifdef RT_HAVE_EXACT
 #include "exact/exact_reference.h"
@@ -59,6 +60,26 @@ void ensureAnalyticMethod() {
 #endif
   if (!hasMethod("analytic"))
     registerFormFactorMethod("analytic", [] { return std::make_unique<ClosedFormMethod>(); });
+}
+
+Lesson oneStepLesson(const std::string& text, int order) {
+  Lesson l;
+  l.file = "lessons/x.md";
+  l.order = order;
+  Step step;
+  step.text = text;
+  step.textLine = 10;
+  l.steps.push_back(step);
+  return l;
+}
+
+std::string inputErrorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 }  // namespace rt::lesson::test

@@ -2,6 +2,7 @@
 // the form-factor methods a test needs are present.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "lesson/lesson.h"
@@ -17,5 +18,9 @@ bool hasMethod(const std::string& name);
 // Registers "analytic" from the closed-form polygon-to-polygon formula when the registry lacks it (unoccluded
 // scenes only), so that the runner can be tested before or without the core's method.
 void ensureAnalyticMethod();
+// A lesson of one step whose text (starting at file line 10) is `text`, as lessons/x.md with this order.
+Lesson oneStepLesson(const std::string& text, int order = 4);
+// The message of the InputError that `f` throws, or "" when it throws none.
+std::string inputErrorOf(const std::function<void()>& f);
 
 }  // namespace rt::lesson::test

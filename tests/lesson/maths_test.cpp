@@ -12,17 +12,6 @@
 namespace rt::lesson {
 namespace {
 
-Lesson lessonWith(const std::string& text, int order = 4) {
-  Lesson l;
-  l.file = "lessons/x.md";
-  l.order = order;
-  Step step;
-  step.text = text;
-  step.textLine = 10;
-  l.steps.push_back(step);
-  return l;
-}
-
 TEST(LessonMaths, FindsInlineAndDisplayedFormulasWithTheirLines) {
   const std::string text =
       "A value $\\rho_i$ here.\n\n$$\nB_i = E_i + \\rho_i \\sum_j F_{ij} B_j\n$$ {#eq:radiosity}\n\n"
@@ -39,7 +28,7 @@ TEST(LessonMaths, FindsInlineAndDisplayedFormulasWithTheirLines) {
 }
 
 TEST(LessonMaths, DisplayedEquationsAreNumberedByChapterAndReferencesBecomeLinks) {
-  const Lesson l = lessonWith("$$ a = b $$\n\n$$ c = d $$ {#eq:second}\n\nBy @eq:second, done.\n");
+  const Lesson l = test::oneStepLesson("$$ a = b $$\n\n$$ c = d $$ {#eq:second}\n\nBy @eq:second, done.\n");
   const EquationNumbers numbers = numberEquations(l);
   EXPECT_EQ(numbers.byLabel.at("second"), "4.2");
   const std::string prepared = prepareMaths(l.steps[0].text, 10, l.file, numbers);
@@ -54,7 +43,7 @@ TEST(LessonMaths, DisplayedEquationsAreNumberedByChapterAndReferencesBecomeLinks
 }
 
 TEST(LessonMaths, AnUnknownReferenceIsAnErrorAtItsLine) {
-  const Lesson l = lessonWith("Text.\n\nSee @eq:missing.\n");
+  const Lesson l = test::oneStepLesson("Text.\n\nSee @eq:missing.\n");
   try {
     prepareMaths(l.steps[0].text, 10, l.file, numberEquations(l));
     FAIL() << "no error";
@@ -66,13 +55,13 @@ TEST(LessonMaths, AnUnknownReferenceIsAnErrorAtItsLine) {
 }
 
 TEST(LessonMaths, ALabelUsedTwiceIsAnError) {
-  const Lesson l = lessonWith("$$ a $$ {#eq:same}\n\n$$ b $$ {#eq:same}\n");
+  const Lesson l = test::oneStepLesson("$$ a $$ {#eq:same}\n\n$$ b $$ {#eq:same}\n");
   EXPECT_THROW(numberEquations(l), InputError);
 }
 
 TEST(LessonMaths, ADisplayCutByMarkdownIsAnErrorAtItsLine) {
   // A line of '=' under text makes a heading: the $$ would silently stay text.
-  const Lesson l = lessonWith("$$\na\n=\nb\n$$\n");
+  const Lesson l = test::oneStepLesson("$$\na\n=\nb\n$$\n");
   try {
     prepareMaths(l.steps[0].text, 10, l.file, numberEquations(l));
     FAIL() << "no error";
@@ -82,7 +71,7 @@ TEST(LessonMaths, ADisplayCutByMarkdownIsAnErrorAtItsLine) {
 }
 
 TEST(LessonMaths, PlaceholdersInMathsAreCheckedWithSampleNumbers) {
-  const Lesson l = lessonWith("So $F = {{F.a.b:5}}$ and $p = {{x:%}}$.\n");
+  const Lesson l = test::oneStepLesson("So $F = {{F.a.b:5}}$ and $p = {{x:%}}$.\n");
   const auto formulas = lessonFormulas(l);
   ASSERT_EQ(formulas.size(), 2u);
   EXPECT_EQ(formulas[0].tex, "F = 0.125");

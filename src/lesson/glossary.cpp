@@ -1,0 +1,142 @@
+#include "lesson/glossary.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "core/input_error.h"
+#include "lesson/markdown_html.h"
+#include "lesson/maths.h"
+
+namespace rt::lesson {
+namespace {
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+bool letter(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_';
+}
+
+// True when the text's normal pieces hold the term as a whole word ("form factor", "form factors").
+bool uses(const std::string& text, const std::string& term) {
+  const std::string t = lower(term);
+  for (const auto& [begin, end] : plainTextPieces(text)) {
+    const std::string piece = lower(text.substr(begin, end - begin));
+    for (std::size_t at = piece.find(t); at != std::string::npos; at = piece.find(t, at + 1)) {
+      std::size_t after = at + t.size();
+      if (after < piece.size() && piece[after] == 's') ++after;
+      if ((at == 0 || !letter(piece[at - 1])) && (after >= piece.size() || !letter(piece[after])))
+        return true;
+    }
+  }
+  return false;
+}
+
+// Definitions are plain text with maths: the maths becomes <x-equation> for the typesetter.
+std::string definitionHtml(const std::string& text) {
+  std::string html;
+  bool maths = false;
+  std::string piece;
+  auto flush = [&] {
+    html += maths ? "<x-equation>" + escapeHtml(piece) + "</x-equation>" : escapeHtml(piece);
+    piece.clear();
+  };
+  for (const char c : text) {
+    if (c == '$') {
+      flush();
+      maths = !maths;
+    } else {
+      piece += c;
+    }
+  }
+  flush();
+  return html;
+}
+
+std::string anchor(const std::string& term) {
+  std::string id = "gl-";
+  for (const char c : lower(term)) id += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+  return id;
+}
+
+}  // namespace
+
+std::string glossaryPath(const std::string& lessonsDir) {
+  return lessonsDir + "/glossary.json";
+}
+
+std::vector<GlossaryEntry> loadGlossary(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {};
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(buffer.str());
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError({path}, std::string("not valid JSON: ") + e.what());
+  }
+  if (!doc.is_array())
+    throw InputError({path, 0, "/"}, "the glossary is a list of {\"term\", \"definition\"}");
+  std::vector<GlossaryEntry> entries;
+  std::set<std::string> terms;
+  for (std::size_t k = 0; k < doc.size(); ++k) {
+    const SourceLocation where{path, 0, "/" + std::to_string(k)};
+    const auto& e = doc[k];
+    if (!e.is_object() || !e.value("term", nlohmann::json()).is_string() ||
+        !e.value("definition", nlohmann::json()).is_string())
+      throw InputError(where, "an entry needs a \"term\" and a \"definition\", both text");
+    GlossaryEntry entry{e["term"].get<std::string>(), e["definition"].get<std::string>()};
+    if (entry.term.empty() || entry.definition.empty())
+      throw InputError(where, "an empty term or definition");
+    if (std::count(entry.definition.begin(), entry.definition.end(), '$') % 2 != 0)
+      throw InputError(where,
+                       "the definition of '" + entry.term + "' opens maths with '$' and does not close it");
+    if (!terms.insert(lower(entry.term)).second)
+      throw InputError(where, "the term '" + entry.term + "' is defined twice");
+    entries.push_back(std::move(entry));
+  }
+  return entries;
+}
+
+std::optional<FirstUse> firstUse(const std::string& term, const std::vector<Lesson>& lessons) {
+  for (const Lesson& l : lessons) {
+    if (uses(l.title, term) || uses(l.intro, term)) return FirstUse{&l, 0};
+    for (std::size_t k = 0; k < l.steps.size(); ++k)
+      if (uses(l.steps[k].title, term) || uses(l.steps[k].text, term))
+        return FirstUse{&l, static_cast<int>(k + 1)};
+  }
+  return std::nullopt;
+}
+
+std::string glossaryHtml(const std::vector<GlossaryEntry>& entries, const std::vector<Lesson>& lessons) {
+  std::vector<const GlossaryEntry*> sorted;
+  for (const GlossaryEntry& e : entries) sorted.push_back(&e);
+  std::sort(sorted.begin(), sorted.end(),
+            [](const GlossaryEntry* a, const GlossaryEntry* b) { return lower(a->term) < lower(b->term); });
+  // One paragraph per term and no blank line: Markdown passes the block through whole.
+  std::string html;
+  for (const GlossaryEntry* e : sorted) {
+    html += "<p class=\"glossary\" id=\"" + anchor(e->term) + "\"><b>" + escapeHtml(e->term) +
+            "</b>: " + definitionHtml(e->definition);
+    if (const auto use = firstUse(e->term, lessons)) {
+      const Lesson& l = *use->lesson;
+      const std::string order = std::to_string(l.order);
+      const std::string target = use->section == 0 ? "top" : "s" + order + "-" + std::to_string(use->section);
+      const std::string where = use->section == 0 ? "chapter " + order + ", " + escapeHtml(l.title)
+                                                  : "section " + order + "." + std::to_string(use->section) +
+                                                        ", " + escapeHtml(l.steps[use->section - 1].title);
+      html += " First used in <a href=\"" + l.id + ".html#" + target + "\">" + where + "</a>.";
+    }
+    html += "</p>\n";
+  }
+  return html;
+}
+
+}  // namespace rt::lesson
