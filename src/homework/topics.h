@@ -20,5 +20,6 @@ std::optional<Exercise> generateBounces(Draw& draw);
 std::optional<Exercise> generateSpectralRadius(Draw& draw);
 std::optional<Exercise> generateToneMapping(Draw& draw);
 std::optional<Exercise> generateSubdivision(Draw& draw);
+std::optional<Exercise> generateStochasticJacobi(Draw& draw);
 
 }  // namespace rt::homework

@@ -8,7 +8,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 21> kViews{{
+constexpr std::array<std::pair<View, const char*>, 22> kViews{{
     {View::Scene, "scene"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
@@ -30,6 +30,7 @@ constexpr std::array<std::pair<View, const char*>, 21> kViews{{
     {View::Cost, "cost"},
     {View::Links, "links"},
     {View::Clusters, "clusters"},
+    {View::Hits, "hits"},
 }};
 
 }  // namespace
@@ -56,8 +57,9 @@ const std::vector<StageInfo>& stageTable() {
        {V::Scene, V::FormFactor, V::Matrix, V::Nusselt}},
       {Stage::Rays,
        "rays",
-       "F by ray casting or Monte Carlo",
-       {V::Scene, V::FormFactor, V::Matrix, V::Rays, V::Visibility}},
+       "F by ray casting or Monte Carlo; with `reference`, the `from` element's local lines per surface "
+       "against the reference's F",
+       {V::Scene, V::FormFactor, V::Matrix, V::Rays, V::Visibility, V::Hits}},
       {Stage::Exact,
        "exact",
        "F by `methods` and by `reference`, both solved",

@@ -57,6 +57,7 @@ enum class View {
   Cost,         // form-factor time against n, log-log
   Links,        // clustering's links against the n^2 element pairs
   Clusters,     // the cluster tree's boxes at one depth over the scene
+  Hits,         // rays stage: the local lines' hit fractions per surface with their standard errors, and F
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.

@@ -61,5 +61,8 @@ void computeBenchmark(StageContext& c);
 void computeRefine(StageContext& c);
 void computePathTrace(StageContext& c);  // stage_pathtrace.cpp
 void computeScaling(StageContext& c);    // stage_scaling.cpp
+// Rays stage with a `reference`: the `from` element's local lines per surface against the reference's F
+// (lines.<surface>, lines-se.<surface>, lines.<surface>.reference, lines-z.<surface>, lines-z.max, lines).
+void addLocalLineValues(StageContext& c);  // stage_rays.cpp
 
 }  // namespace rt::lesson::detail

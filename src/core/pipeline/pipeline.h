@@ -22,6 +22,8 @@ struct IterationPoint {
   int iteration = 0;
   double residual = 0;
   double seconds = 0;
+  long rays = 0;      // stochastic solvers: the rays so far
+  double unshot = 0;  // shooting solvers: the unshot power as a fraction of the emitted power
 };
 
 struct SolveOutcome {
