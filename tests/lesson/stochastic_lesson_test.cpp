@@ -4,6 +4,7 @@
 // solver's burn-in is the bound the text gives, and the comparison's numbers say what its text says.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/solvers/local_lines_solver.h"
@@ -80,6 +81,57 @@ TEST(StochasticLesson, IncrementalJacobiShootsMostInItsFirstIteration) {
   const double later = (*r.value("rays") - *r.value("rays.first")) / (*r.value("iterations") - 1);
   EXPECT_LT(later, *r.value("rays.first"));
   EXPECT_LT(*r.value("unshot.first"), 1.0);
+}
+
+TEST(StochasticLesson, TheComparisonSaysWhatItsTextSays) {
+  if (!test::hasMethod("quadrature")) GTEST_SKIP() << "quadrature is not in this build";
+  const Ran ran = runStep("stochastic-jacobi");
+  const StepResult& r = ran.result;
+  // F once, for the direct solve only.
+  EXPECT_EQ(ran.formFactorComputations, 1);
+  const double n = static_cast<double>(r.mesh.size());
+  EXPECT_EQ(*r.value("bytes.F"), 8 * n * n);
+  // "The estimated and the measured errors agree."
+  for (const std::string s : {"local-lines-regular", "local-lines"}) {
+    const double estimated = *r.value("standard-error." + s), measured = *r.value("rms-error." + s);
+    EXPECT_GT(measured, 0.5 * estimated) << s;
+    EXPECT_LT(measured, 1.5 * estimated) << s;
+  }
+  // "Its largest error sits on a small element."
+  // Among the reflecting elements, as the error map shows them (the light's own B is mostly its emission).
+  Eigen::VectorXd error = (r.B - r.reference).cwiseAbs().rowwise().mean();
+  for (Eigen::Index i = 0; i < error.size(); ++i)
+    if (r.mesh.emission.row(i).maxCoeff() > 0) error(i) = 0;
+  Eigen::Index worst = 0;
+  error.maxCoeff(&worst);
+  Eigen::VectorXd areas = r.mesh.areas();
+  const double area = areas(worst);
+  std::sort(areas.begin(), areas.end());
+  EXPECT_LT(area, areas(areas.size() / 2)) << "smaller than the median element";
+  // Standard error times sqrt(rays): the regular solver is the less efficient over all its rays, about as
+  // efficient over the iterates it averaged.
+  const double perIteration = *r.value("rays-per-iteration");
+  const double regular = std::pow(*r.value("standard-error.local-lines-regular"), 2);
+  const double incremental =
+      std::pow(*r.value("standard-error.local-lines"), 2) * *r.value("rays.local-lines");
+  const double allRays = *r.value("rays.local-lines-regular");
+  const double averaged = allRays - *r.value("burn-in.local-lines-regular") * perIteration;
+  EXPECT_GT(regular * allRays, 2 * incremental);
+  EXPECT_GT(regular * averaged, incremental / 1.5);
+  EXPECT_LT(regular * averaged, incremental * 1.5);
+  // "For a rough answer, yes, even here": the lines finish before F and the exact solve (measured about five
+  // times sooner).
+  EXPECT_LT(*r.value("seconds.local-lines"), *r.value("seconds.formfactors") + *r.value("seconds.direct"));
+}
+
+TEST(StochasticLesson, TheAbsorptionEstimatorNeedsMoreWalksForTheSameNoise) {
+  if (!test::hasMethod("quadrature")) GTEST_SKIP() << "quadrature is not in this build";
+  const StepResult r = runStep("random-walk").result;
+  for (const std::string s : {"random-walk", "random-walk-absorption"}) {
+    EXPECT_EQ(*r.value("converged." + s), 1.0) << s;
+    EXPECT_LE(*r.value("standard-error." + s), *r.value("tolerance")) << s;
+  }
+  EXPECT_GT(*r.value("rays.random-walk-absorption"), 1.5 * *r.value("rays.random-walk"));
 }
 
 }  // namespace
