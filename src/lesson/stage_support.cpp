@@ -84,6 +84,10 @@ SolverRun runSolver(StageContext& c, const std::string& name, const RadiositySys
     run.iteration.push_back(rec.iteration);
     run.residuals.push_back(rec.residual);
     run.elapsed.push_back(rec.seconds);
+    if (rec.rays > 0) {
+      run.rays.push_back(static_cast<double>(rec.rays));
+      run.standardErrors.push_back(rec.standardError);
+    }
   }
   run.seconds = outcome.seconds;
   run.iterations = outcome.iterations;

@@ -26,6 +26,8 @@ struct SolverRun {
   double residual = 0;
   double seconds = 0;
   std::vector<double> iteration, residuals, elapsed;  // one entry per recorded iteration
+  // Stochastic solvers, one entry per iteration: the rays so far and the relative standard error of B.
+  std::vector<double> rays, standardErrors;
 };
 
 // One point of a run-time-against-error sweep.

@@ -196,19 +196,18 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
         if (!line.x.empty()) series.push_back(line);
       }
       if (series.empty()) throw std::runtime_error(path + ": no convergence history to plot");
-      // A stochastic solver (one that takes a ray budget) stops on a measure of its own, not the residual.
-      bool stochastic = false;
+      // A solver that traces its lines has no F to compute the residual with: it records its own measure.
+      bool traced = false;
       for (const auto& run : r.runs)
         for (const SolverInfo& info : solverTable())
-          if (info.name == run.label)
-            for (const std::string& key : info.settings) stochastic |= key == "rays-per-iteration";
-      const char* measure = stochastic ? "stopping measure" : "relative residual";
+          traced |= info.name == run.label && info.input == SolverInput::Geometry;
+      const char* measure = traced ? "residual or stopping measure" : "relative residual";
       ChartOptions o{"Convergence", "iteration", measure, false, true, s.width, s.height};
       writeLineChart(series, o, path);
-      if (stochastic)
-        return "Each solver's stopping measure after each iteration: the relative residual ||K B - E|| / "
-               "||E|| "
-               "for those that read F, the measure the text describes for the stochastic ones";
+      if (traced)
+        return "After each iteration, the relative residual ||K B - E|| / ||E|| of the solvers that read F, "
+               "and "
+               "the measure they stop on for those that trace their lines (the text says which)";
       return "Relative residual ||K B - E|| / ||E|| after each iteration";
     }
     case View::RuntimeError: {
@@ -280,8 +279,25 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
              " (the first frame; the others are numbered beside it)";
     }
     case View::Noise:
-      // The scaling stage measures a solver's noise against its rays, the pathtrace stage the tracer's.
+      // The scaling stage measures a solver's noise against its rays, the pathtrace stage the tracer's, a
+      // compare step each stochastic solver's own estimate of its noise after each iteration.
       if (r.scaling) return detail::renderScalingView(view, step, r, s, path);
+      if (step.stage == lesson::Stage::Compare) {
+        std::vector<Series> series;
+        for (const auto& run : r.runs)
+          if (!run.rays.empty()) series.push_back({run.label, run.rays, run.standardErrors});
+        if (series.empty()) throw std::runtime_error(path + ": no stochastic solver to plot");
+        ChartOptions o{"Noise against rays",
+                       "rays (or walks) so far",
+                       "relative standard error",
+                       true,
+                       true,
+                       s.width,
+                       s.height};
+        writeLineChart(series, o, path);
+        return "Each stochastic solver's relative standard error after each iteration, against the rays (or "
+               "walks) it has used so far";
+      }
       return detail::renderTracedView(view, step, r, s, path);
     case View::Traced:
     case View::Difference:

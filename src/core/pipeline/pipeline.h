@@ -22,8 +22,9 @@ struct IterationPoint {
   int iteration = 0;
   double residual = 0;
   double seconds = 0;
-  long rays = 0;      // stochastic solvers: the rays so far
-  double unshot = 0;  // shooting solvers: the unshot power as a fraction of the emitted power
+  long rays = 0;             // stochastic solvers: the rays so far
+  double standardError = 0;  // stochastic solvers: the relative standard error of B
+  double unshot = 0;         // shooting solvers: the unshot power as a fraction of the emitted power
 };
 
 struct SolveOutcome {
