@@ -119,6 +119,18 @@ TEST(StochasticLesson, TheComparisonSaysWhatItsTextSays) {
   EXPECT_GT(regular * allRays, 2 * incremental);
   EXPECT_GT(regular * averaged, incremental / 1.5);
   EXPECT_LT(regular * averaged, incremental * 1.5);
+  // The noise chart: the incremental solver's estimate grows as it adds light, the regular one's falls once
+  // it averages.
+  for (const SolverRun& run : r.runs) {
+    if (run.label == "local-lines") {
+      EXPECT_GT(run.standardErrors.back(), run.standardErrors.front());
+    }
+    if (run.label == "local-lines-regular") {
+      const auto burnIn = static_cast<std::size_t>(*r.value("burn-in.local-lines-regular"));
+      ASSERT_GT(run.standardErrors.size(), burnIn);
+      EXPECT_LT(run.standardErrors.back(), 0.5 * run.standardErrors[burnIn - 1]);
+    }
+  }
   // "For a rough answer, yes, even here": the lines finish before F and the exact solve (measured about five
   // times sooner).
   EXPECT_LT(*r.value("seconds.local-lines"), *r.value("seconds.formfactors") + *r.value("seconds.direct"));
