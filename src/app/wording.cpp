@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <QRegularExpression>
+#include <algorithm>
 
 #include "lesson/step_keys.h"
 
@@ -13,7 +14,12 @@ QString counted(long long n, const QString& singular, const QString& plural) {
 }
 
 bool isStochasticSolver(const std::string& solver) {
-  return solver == "stochastic-jacobi" || solver == "random-walk";
+  // The solver table's own word for it: the solvers whose budget is a number of rays (or walks).
+  for (const SolverInfo& info : solverTable())
+    if (info.name == solver)
+      return std::find(info.settings.begin(), info.settings.end(), "rays-per-iteration") !=
+             info.settings.end();
+  return false;
 }
 
 QString iterationUnit(const std::string& solver) {

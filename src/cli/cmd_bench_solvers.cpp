@@ -54,7 +54,8 @@ SolverOptions optionsFor(const std::string& name, std::size_t n, const BenchArgu
   }
   if (name == "progressive") o.ambient = true;
   if (name == "stochastic-jacobi" || name == "local-lines") o.tolerance = 1e-8;
-  if (name == "random-walk") {
+  if (name == "local-lines-regular") o.tolerance = 2e-3;  // burn-in bound, then the mean's standard error
+  if (name.rfind("random-walk", 0) == 0) {
     o.tolerance = 1e-4;  // relative standard error
     o.maxIterations = 60;
   }

@@ -39,7 +39,11 @@ const std::vector<Topic>& topicTable() {
        "two Jacobi and two Gauss-Seidel sweeps, and the exact solution", "gathering,local-vs-global",
        generateJacobiGaussSeidel},
       {"southwell", "Southwell shooting", "three shots, the shooter and the unshot power after each",
-       "cornell-box,shooting,stochastic,when-n-squared-is-too-big", generateSouthwell},
+       "cornell-box,shooting,when-n-squared-is-too-big", generateSouthwell},
+      {"stochastic-jacobi", "One iteration of stochastic Jacobi",
+       "lines drawn from a table of random numbers by power and by F, the estimate, its standard error and "
+       "the deterministic sweep",
+       "stochastic", generateStochasticJacobi},
       {"bounces", "The k-th bounce", "the power carried by bounce k and its share of the total",
        "local-vs-global,rendering-equation,shooting", generateBounces},
       {"spectral-radius", "Spectral radius and iteration count",

@@ -8,7 +8,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 24> kViews{{
+constexpr std::array<std::pair<View, const char*>, 25> kViews{{
     {View::Scene, "scene"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
@@ -33,6 +33,7 @@ constexpr std::array<std::pair<View, const char*>, 24> kViews{{
     {View::SolidAngle, "solid-angle"},
     {View::CosineLaw, "cosine-law"},
     {View::InverseSquare, "inverse-square"},
+    {View::Hits, "hits"},
 }};
 
 }  // namespace
@@ -59,8 +60,9 @@ const std::vector<StageInfo>& stageTable() {
        {V::Scene, V::FormFactor, V::Matrix, V::Nusselt}},
       {Stage::Rays,
        "rays",
-       "F by ray casting or Monte Carlo",
-       {V::Scene, V::FormFactor, V::Matrix, V::Rays, V::Visibility}},
+       "F by ray casting or Monte Carlo; with `reference`, the `from` element's local lines per surface "
+       "against the reference's F",
+       {V::Scene, V::FormFactor, V::Matrix, V::Rays, V::Visibility, V::Hits}},
       {Stage::Exact,
        "exact",
        "F by `methods` and by `reference`, both solved",
@@ -75,8 +77,8 @@ const std::vector<StageInfo>& stageTable() {
        {V::Scene, V::FormFactor, V::Matrix, V::Convergence, V::Walkthrough}},
       {Stage::Compare,
        "compare",
-       "several `solvers`, `methods` or `subdivisions`",
-       {V::Scene, V::FormFactor, V::Matrix, V::Convergence, V::Error}},
+       "several `solvers`, `methods` or `subdivisions`; the stochastic solvers' noise against their rays",
+       {V::Scene, V::FormFactor, V::Matrix, V::Convergence, V::Error, V::Noise}},
       {Stage::Bounces,
        "bounces",
        "B after 0..`bounces` bounces, and the exact B",

@@ -61,6 +61,7 @@ enum class View {
   SolidAngle,     // the patch projected onto the sphere about the point: its solid angle
   CosineLaw,      // irradiance on the patch against its tilt
   InverseSquare,  // irradiance against distance from a point source and from a square of the same power
+  Hits,           // rays stage: the local lines' hit fractions per surface with their standard errors, and F
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.

@@ -1,5 +1,6 @@
 // The stages that go beyond "compute F": local illumination, the matrix, solving, comparing, bounces, the
 // exact reference, benchmarks and refinement.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -8,6 +9,8 @@
 #include "core/io/matrix_export.h"
 #include "core/refine/refine.h"
 #include "core/solvers/energy.h"
+#include "core/solvers/solver.h"
+#include "core/solvers/solver_support.h"
 #include "lesson/step_stages.h"
 
 namespace rt::lesson::detail {
@@ -131,6 +134,16 @@ void computeMatrix(StageContext& c) {
 
 void computeSolve(StageContext& c) {
   StepResult& r = c.result;
+  if (!solverNeedsMatrix(c.parameters.solver)) {
+    // A solver that traces its own rays: no form factor is computed, the result holds no F.
+    const RadiositySystem system = RadiositySystem::fromGeometry(r.mesh);
+    r.runs.push_back(runSolver(c, c.parameters.solver, system, r.B, c.parameters.solver, true));
+    for (const char* key : {"iterations", "residual", "seconds", "converged", "rays", "standard-error",
+                            "rays.first", "seconds.first", "unshot.first", "burn-in"})
+      if (const auto it = r.values.find(std::string(key) + "." + c.parameters.solver); it != r.values.end())
+        r.values[key] = it->second;
+    return;
+  }
   const auto F = mainFormFactors(c);
   addFormFactorValues(r, *F);
   const RadiositySystem system = RadiositySystem::fromMesh(r.mesh, *F);
@@ -149,17 +162,29 @@ void computeCompare(StageContext& c) {
   StepResult& r = c.result;
   const StepParameters& p = c.parameters;
   if (!p.solvers.empty()) {
-    const auto F = mainFormFactors(c);
-    const RadiositySystem system = RadiositySystem::fromMesh(r.mesh, *F);
+    // F only when a listed solver reads it; the solvers that trace rays get the geometry alone either way.
+    const bool matrix = std::any_of(p.solvers.begin(), p.solvers.end(), solverNeedsMatrix);
+    const auto F = matrix ? mainFormFactors(c) : nullptr;
+    const RadiositySystem traced = RadiositySystem::fromGeometry(r.mesh);
+    const RadiositySystem withF = F ? RadiositySystem::fromMesh(r.mesh, *F) : traced;
+    if (F) {
+      const double n = static_cast<double>(r.mesh.size());
+      r.values["bytes.F"] = 8.0 * n * n;  // dense, in doubles
+      r.values["seconds.formfactors"] = r.formFactorStats.seconds;
+    }
     // The first solver is the reference the others are measured against (the error view shows the last one).
     for (const auto& s : p.solvers) {
       RgbField B;
-      r.runs.push_back(runSolver(c, s, system, B, s, true));
+      r.runs.push_back(runSolver(c, s, solverNeedsMatrix(s) ? withF : traced, B, s, true));
       addSurfaceValues(r, "B", B, "." + s);
-      if (r.reference.rows() == 0)
+      if (r.reference.rows() == 0) {
         r.reference = B;
-      else
+      } else {
         r.values["difference." + s] = maxRelativeDifference(r.mesh, B, r.reference);
+        // The measure the stochastic solvers' standard error is given in, so that the two can be compared.
+        r.values["rms-error." + s] =
+            solver_detail::relativeAreaRms(B - r.reference, r.reference, r.mesh.areas());
+      }
       r.B = B;
     }
     if (r.runs.size() >= 2 && r.runs[1].iterations > 0)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/solvers/local_lines_solver.h"
 #include "core/solvers/solver.h"
 #include "lesson/lesson_parser.h"
 #include "lesson/step_settings.h"
@@ -84,6 +85,10 @@ SolverRun runSolver(StageContext& c, const std::string& name, const RadiositySys
     run.residuals.push_back(rec.residual);
     run.elapsed.push_back(rec.seconds);
     if (rec.shooter >= 0) run.shooters.push_back(rec.shooter);
+    if (rec.rays > 0) {
+      run.rays.push_back(static_cast<double>(rec.rays));
+      run.standardErrors.push_back(rec.standardError);
+    }
   }
   run.seconds = outcome.seconds;
   run.iterations = outcome.iterations;
@@ -94,6 +99,24 @@ SolverRun runSolver(StageContext& c, const std::string& name, const RadiositySys
   r.values["residual" + suffix] = run.residual;
   r.values["seconds" + suffix] = run.seconds;
   r.values["converged" + suffix] = outcome.status == SolverStatus::Success ? 1.0 : 0.0;
+  const SolverOptions options = solverOptionsFor(c.parameters);
+  r.values["tolerance"] = options.tolerance;
+  if (name == "local-lines-regular")
+    r.values["burn-in" + suffix] = regularBurnIn(system.reflectance.maxCoeff(), options.tolerance);
+  if (outcome.rays > 0) {
+    // Stochastic solvers: the rays, the noise, and what the first iteration already showed.
+    if (options.raysPerIteration > 0)
+      r.values["rays-per-iteration"] = static_cast<double>(options.raysPerIteration);
+    else if (name.rfind("local-lines", 0) == 0)
+      r.values["rays-per-iteration"] = static_cast<double>(localLinesDefaultRays(system.size()));
+    r.values["rays" + suffix] = static_cast<double>(outcome.rays);
+    r.values["standard-error" + suffix] = outcome.standardError;
+    if (!outcome.trace.empty()) {
+      r.values["rays.first" + suffix] = static_cast<double>(outcome.trace.front().rays);
+      r.values["seconds.first" + suffix] = outcome.trace.front().seconds;
+      r.values["unshot.first" + suffix] = outcome.trace.front().unshot;
+    }
+  }
   if (record) r.replay = std::move(outcome);
   return run;
 }

@@ -77,8 +77,9 @@ std::vector<StepKey> makeTable() {
        .type = KeyType::Choice,
        .choices = &knownMethods,
        .label = "Reference",
-       .tooltip = "The method errors are measured against.",
-       .stages = {Stage::Exact, Stage::Benchmark},
+       .tooltip = "The method errors are measured against (rays: the form factors the local lines' hit "
+                  "fractions are compared with).",
+       .stages = {Stage::Exact, Stage::Benchmark, Stage::Rays},
        .slot = &P::reference});
   add({.name = "resolution",
        .type = KeyType::Int,

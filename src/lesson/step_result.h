@@ -28,6 +28,8 @@ struct SolverRun {
   double seconds = 0;
   std::vector<double> iteration, residuals, elapsed;  // one entry per recorded iteration
   std::vector<int> shooters;                          // shooting solvers: the element of each shot
+  // Stochastic solvers, one entry per iteration: the rays so far and the relative standard error of B.
+  std::vector<double> rays, standardErrors;
 };
 
 // One point of a run-time-against-error sweep.

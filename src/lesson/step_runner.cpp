@@ -166,6 +166,7 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
       result.method = c.method();
       result.F = c.formFactors(result.mesh, result.method, "method", result.formFactorStats);
       detail::addFormFactorValues(result, *result.F);
+      if (step.stage == Stage::Rays) detail::addLocalLineValues(c);
       break;
     }
     case Stage::Local:

@@ -1,12 +1,17 @@
 #include "viz/lesson_figures.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
 #include "core/formfactor/hemicube.h"
+#include "core/formfactor/ray_scene.h"
+#include "core/solvers/solver.h"
 #include "viz/chart.h"
 #include "viz/exact_visibility.h"
 #include "viz/hemicube_view.h"
+#include "viz/hits_chart.h"
 #include "viz/lesson_radiometry_figures.h"
 #include "viz/lesson_scaling_figures.h"
 #include "viz/lesson_traced_figures.h"
@@ -49,6 +54,10 @@ void formFactorRow(const lesson::Step& step, const StepResult& r, const StepFigu
   SceneViewData data;
   data.scalar = r.F->row(r.sourceElement).transpose();
   writeSceneFigure(r.mesh, r.camera, data, o, path);
+}
+
+std::string surfaceNameOf(const StepResult& r, int element) {
+  return r.scene.surfaces[r.scene.patches[r.mesh.elements[element].patch].surface].name;
 }
 
 // The element a Nusselt or rays view looks at: the first highlighted element other than the source, otherwise
@@ -113,6 +122,27 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
     }
     case View::Rays: {
       const int to = targetElement(r);
+      if (r.method == "montecarlo") {
+        // The lines the Monte Carlo row counted (the same generator and seed), the first few hundred drawn.
+        const int count =
+            static_cast<int>(r.formFactorStats.raysCast / std::max<std::size_t>(1, r.mesh.size()));
+        const RayScene scene(r.mesh);
+        std::vector<LocalLine> lines =
+            shootLocalLines(r.mesh, scene, r.sourceElement, count, step.parameters.seed.value_or(1));
+        if (lines.size() > 300) lines.resize(300);
+        RaysViewOptions o;
+        o.size = {s.width, s.height, 96.0};
+        std::size_t landed = 0;
+        for (const LocalLine& line : lines) landed += line.hit == to ? 1 : 0;
+        o.caption = std::to_string(lines.size()) + " of the " + std::to_string(count) +
+                    " local lines from the " + surfaceNameOf(r, r.sourceElement) +
+                    " (blue): " + std::to_string(landed) + " land first on the " + surfaceNameOf(r, to) +
+                    " (orange)";
+        writeLocalLinesFigure(r.mesh, r.camera, r.sourceElement, to, lines, count, o, path);
+        return "Local lines from " + from +
+               ": cosine-distributed rays from uniform points, each counted on the "
+               "element it reaches first";
+      }
       const RaySample sample =
           sampleRays(r.mesh, r.sourceElement, to, std::min(step.parameters.samples.value_or(32), 256),
                      step.parameters.seed.value_or(1));
@@ -167,8 +197,18 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
         if (!line.x.empty()) series.push_back(line);
       }
       if (series.empty()) throw std::runtime_error(path + ": no convergence history to plot");
-      ChartOptions o{"Convergence", "iteration", "relative residual", false, true, s.width, s.height};
+      // A solver that traces its lines has no F to compute the residual with: it records its own measure.
+      bool traced = false;
+      for (const auto& run : r.runs)
+        for (const SolverInfo& info : solverTable())
+          traced |= info.name == run.label && info.input == SolverInput::Geometry;
+      const char* measure = traced ? "residual or stopping measure" : "relative residual";
+      ChartOptions o{"Convergence", "iteration", measure, false, true, s.width, s.height};
       writeLineChart(series, o, path);
+      if (traced)
+        return "After each iteration, the relative residual ||K B - E|| / ||E|| of the solvers that read F, "
+               "and "
+               "the measure they stop on for those that trace their lines (the text says which)";
       return "Relative residual ||K B - E|| / ||E|| after each iteration";
     }
     case View::RuntimeError: {
@@ -240,13 +280,56 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
              " (the first frame; the others are numbered beside it)";
     }
     case View::Noise:
-      // The scaling stage measures a solver's noise against its rays, the pathtrace stage the tracer's.
+      // The scaling stage measures a solver's noise against its rays, the pathtrace stage the tracer's, a
+      // compare step each stochastic solver's own estimate of its noise after each iteration.
       if (r.scaling) return detail::renderScalingView(view, step, r, s, path);
+      if (step.stage == lesson::Stage::Compare) {
+        std::vector<Series> series;
+        for (const auto& run : r.runs)
+          if (!run.rays.empty()) series.push_back({run.label, run.rays, run.standardErrors});
+        if (series.empty()) throw std::runtime_error(path + ": no stochastic solver to plot");
+        ChartOptions o{"Noise against rays",
+                       "rays (or walks) so far",
+                       "relative standard error",
+                       true,
+                       true,
+                       s.width,
+                       s.height};
+        writeLineChart(series, o, path);
+        return "Each stochastic solver's relative standard error after each iteration, against the rays (or "
+               "walks) it has used so far";
+      }
       return detail::renderTracedView(view, step, r, s, path);
     case View::Traced:
     case View::Difference:
     case View::TwoPass:
       return detail::renderTracedView(view, step, r, s, path);
+    case View::Hits: {
+      std::vector<HitRow> rows;
+      for (const auto& surface : r.scene.surfaces) {
+        const auto estimate = r.value("lines." + surface.name);
+        if (!estimate)
+          throw std::runtime_error(path + ": the step counted no local lines (give it a reference)");
+        const double reference = r.value("lines." + surface.name + ".reference").value_or(0.0);
+        if (*estimate <= 0 && reference <= 0) continue;  // a surface the source cannot see
+        rows.push_back(
+            {surface.name, *estimate, r.value("lines-se." + surface.name).value_or(0.0), reference});
+      }
+      // The lines that hit nothing: the part of the row that leaves through openings.
+      const double escaped = r.value("lines.escaped").value_or(0.0),
+                   escapedReference = r.value("lines.escaped.reference").value_or(0.0);
+      if (escaped > 0 || escapedReference > 0) {
+        const double lines = std::max(1.0, r.value("lines").value_or(1.0));
+        rows.push_back({"(escaped)", escaped, std::sqrt(escaped * (1 - escaped) / lines), escapedReference});
+      }
+      HitsChartOptions o;
+      o.size = {s.width, s.height, 96.0};
+      o.title = std::to_string(static_cast<long>(r.value("lines").value_or(0))) + " local lines from the " +
+                surfaceNameOf(r, r.sourceElement) + " against " + step.parameters.reference;
+      writeHitsChart(rows, o, path);
+      return "Where the local lines from " + from + " land first, per surface, against the form factors by " +
+             step.parameters.reference;
+    }
     case View::Memory:
     case View::Cost:
     case View::Links:

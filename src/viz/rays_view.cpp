@@ -55,13 +55,11 @@ RaySample sampleRays(const Mesh& mesh, int from, int to, int count, std::uint64_
   return sample;
 }
 
-void writeRaysFigure(const Mesh& mesh, const Camera& camera, const RaySample& sample,
-                     const RaysViewOptions& options, const std::string& path) {
-  figureFormatOf(path);
-  const double scale = options.size.fontScale();
-  auto window = makeOffscreenWindow(options.size.width, options.size.height);
+namespace {
 
-  // The scene by reflectance, faint, so that the rays inside stay visible.
+// The scene by reflectance, faint, so that the rays inside stay visible.
+vtkSmartPointer<vtkRenderer> fadedScene(const Mesh& mesh, const Camera& camera,
+                                        const RaysViewOptions& options, vtkRenderWindow* window) {
   SceneViewOptions sceneOptions;
   sceneOptions.colouring = SceneColouring::Reflectance;
   sceneOptions.image.showEdges = true;
@@ -75,6 +73,68 @@ void writeRaysFigure(const Mesh& mesh, const Camera& camera, const RaySample& sa
   while (vtkActor* actor = actors->GetNextActor()) actor->GetProperty()->SetOpacity(0.3);
   window->AddRenderer(renderer);
   enableDepthPeeling(window, renderer);  // the faint room around the rays
+  return renderer;
+}
+
+}  // namespace
+
+void writeLocalLinesFigure(const Mesh& mesh, const Camera& camera, int from, int target,
+                           const std::vector<LocalLine>& lines, long total, const RaysViewOptions& options,
+                           const std::string& path) {
+  figureFormatOf(path);
+  const int n = static_cast<int>(mesh.size());
+  if (from < 0 || from >= n)
+    throw std::invalid_argument("local lines need an element in 0.." + std::to_string(n - 1));
+  const double scale = options.size.fontScale();
+  auto window = makeOffscreenWindow(options.size.width, options.size.height);
+  vtkSmartPointer<vtkRenderer> renderer = fadedScene(mesh, camera, options, window);
+  const Colour sky{0.337, 0.706, 0.914}, orange{0.902, 0.624, 0.0}, green{0.0, 0.62, 0.451};
+  renderer->AddActor(polygonActor(mesh.polygon(from), sky, 1.0));
+  if (target >= 0 && target < n && target != from)
+    renderer->AddActor(polygonActor(mesh.polygon(target), orange, 1.0));
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  const double size = Vec3(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]).norm();
+  std::vector<Vec3> onTarget, elsewhere, escaped, ends;
+  std::size_t hits = 0;
+  for (const LocalLine& line : lines) {
+    const bool gone = line.struck < 0;
+    const Vec3 end = line.origin + (gone ? 0.1 * size : line.distance) * line.direction;
+    std::vector<Vec3>& into = gone ? escaped : line.hit == target ? onTarget : elsewhere;
+    into.push_back(line.origin);
+    into.push_back(end);
+    if (!gone) ends.push_back(end);
+    hits += line.hit == target ? 1 : 0;
+  }
+  const double lineWidth = std::max(1.0, 1.5 * scale);
+  if (!elsewhere.empty()) renderer->AddActor(linesActor(elsewhere, green, lineWidth));
+  if (!onTarget.empty()) renderer->AddActor(linesActor(onTarget, orange, 1.5 * lineWidth));
+  if (!escaped.empty()) {
+    auto faint = linesActor(escaped, {0.6, 0.6, 0.6}, 1.0);
+    faint->GetProperty()->SetOpacity(0.5);
+    renderer->AddActor(faint);
+  }
+  if (!ends.empty()) renderer->AddActor(pointsActor(ends, {0.2, 0.2, 0.2}, 0.0025 * size));
+  renderer->ResetCameraClippingRange();
+  std::string caption = options.caption;
+  if (caption.empty()) {
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "%zu of the %ld local lines from element %d (blue): %zu land first on element %d (orange)",
+                  lines.size(), total, from, hits, target);
+    caption = text;
+  }
+  renderer->AddViewProp(
+      makeCaption(caption, readableFontSize(options.size.height, scale, 0.028), options.size.width));
+  writeRenderWindow(window, path, options.size.dpi);
+}
+
+void writeRaysFigure(const Mesh& mesh, const Camera& camera, const RaySample& sample,
+                     const RaysViewOptions& options, const std::string& path) {
+  figureFormatOf(path);
+  const double scale = options.size.fontScale();
+  auto window = makeOffscreenWindow(options.size.width, options.size.height);
+  vtkSmartPointer<vtkRenderer> renderer = fadedScene(mesh, camera, options, window);
 
   const Colour sky{0.337, 0.706, 0.914}, orange{0.902, 0.624, 0.0}, green{0.0, 0.62, 0.451},
       vermillion{0.835, 0.369, 0.0};

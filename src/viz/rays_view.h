@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/formfactor/local_lines.h"
 #include "core/mesh.h"
 #include "core/scene.h"
 #include "viz/figure_output.h"
@@ -35,6 +36,13 @@ struct RaysViewOptions {
   FigureSize size{1200, 900, 96.0};
   std::string caption;  // empty: "rays from i to j: k of n unoccluded"
 };
+
+// Local lines leaving element `from` (core/formfactor/local_lines.h), the ones landing first on `target`
+// in one colour, those landing elsewhere in another, the escaped ones faint and cut at a tenth of the scene.
+// `total` is the number of lines the estimate counted (the figure may draw fewer, the first ones).
+void writeLocalLinesFigure(const Mesh& mesh, const Camera& camera, int from, int target,
+                           const std::vector<LocalLine>& lines, long total, const RaysViewOptions& options,
+                           const std::string& path);
 
 // PNG; PDF/SVG embed the rendered image.
 void writeRaysFigure(const Mesh& mesh, const Camera& camera, const RaySample& sample,

@@ -46,15 +46,15 @@ TEST(MathsPane, ListingsAndCitationsShowInThePane) {
   auto window = test::makeWindow();
   window->resize(1600, 1000);
   window->show();
-  ASSERT_TRUE(window->openLesson("shooting", 2));  // the ambient term: a citation and Algorithm 10.1
+  ASSERT_TRUE(window->openLesson("shooting", 2));  // the ambient term: a citation and Algorithm 11.1
   const LessonTextView::MathsState state = window->textView()->mathsState();
   ASSERT_TRUE(state.ready) << "the page was not typeset in time";
   EXPECT_TRUE(state.errors.isEmpty()) << state.errors.join("; ").toStdString();
   EXPECT_EQ(state.katexNodes, state.formulas) << "the listing's maths set by KaTeX too";
   const QString text = window->textView()->toPlainText();
   EXPECT_TRUE(
-      text.contains("<figure class=\"algorithm\" id=\"alg-shooting\"><figcaption><b>Algorithm 10.1</b>"));
-  EXPECT_TRUE(text.contains("[Algorithm 10.1](#alg-shooting)"));
+      text.contains("<figure class=\"algorithm\" id=\"alg-shooting\"><figcaption><b>Algorithm 11.1</b>"));
+  EXPECT_TRUE(text.contains("[Algorithm 11.1](#alg-shooting)"));
   // A citation links to the works listed under the step, its full entry on hover.
   EXPECT_TRUE(text.contains("[Cohen et al. 1988](#ref-cohen1988 \"Cohen, Michael F., Shenchang Eric Chen"))
       << text.toStdString();

@@ -140,7 +140,7 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
   const std::string shooting = readFile(out / "shooting.html");
   EXPECT_NE(shooting.find("<figure class=\"algorithm\" id=\"alg-shooting\">"), std::string::npos)
       << "an algorithm listing";
-  EXPECT_NE(shooting.find(">Algorithm 10.1</a>"), std::string::npos) << "a reference to the listing";
+  EXPECT_NE(shooting.find(">Algorithm 11.1</a>"), std::string::npos) << "a reference to the listing";
   EXPECT_NE(shooting.find(">Cohen et al. 1988</a>"), std::string::npos) << "citations, author-year";
   EXPECT_NE(shooting.find(">Further reading</h2>"), std::string::npos);
   EXPECT_TRUE(fs::exists(out / "katex" / "katex.min.css"));
@@ -167,7 +167,7 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
   EXPECT_NE(flat.find("Chapter 17"), std::string::npos);
   EXPECT_NE(flat.find("Figure 5.1."), std::string::npos);
   EXPECT_NE(flat.find("Radiosity after 1 bounce"), std::string::npos);
-  EXPECT_NE(flat.find("Algorithm 10.1 Progressive refinement"), std::string::npos);
+  EXPECT_NE(flat.find("Algorithm 11.1 Progressive refinement"), std::string::npos);
   EXPECT_NE(flat.find("Goral, Cindy M., Kenneth E. Torrance"), std::string::npos) << "the references";
   EXPECT_EQ(flat.find("after 1 bounces"), std::string::npos) << "one bounce is singular";
 

@@ -53,6 +53,7 @@ TEST(Checks, ShippedScenesPassEveryCheckThroughMeshFormFactorsAndSolve) {
         auto s = makeSolver(solver);
         SolverOptions so;
         so.maxIterations = 50;
+        so.raysPerIteration = 5000;
         so.recordHistory = false;
         s->setOptions(so);
         EXPECT_NO_THROW(s->compute(system).solve()) << name << " " << method << " " << solver;

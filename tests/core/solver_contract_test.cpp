@@ -18,8 +18,8 @@ namespace {
 // Solvers that report a per-element error instead of reaching the exact solution: the stochastic ones (a
 // standard error) and hierarchical-clustering (an error estimate: its links approximate F).
 bool isStochastic(const std::string& name) {
-  return name == "stochastic-jacobi" || name == "random-walk" || name == "local-lines" ||
-         name == "hierarchical-clustering";
+  return name == "stochastic-jacobi" || name.rfind("random-walk", 0) == 0 || name == "local-lines" ||
+         name == "local-lines-regular" || name == "hierarchical-clustering";
 }
 
 // Options under which each solver should reach the direct solution on a small system.
@@ -31,7 +31,12 @@ SolverOptions convergingOptions(const std::string& name) {
     o.tolerance = 1e-9;
     o.raysPerIteration = 200000;
   }
-  if (name == "random-walk") {
+  if (name == "local-lines-regular") {
+    o.tolerance = 3e-3;  // the burn-in's bound rho_max^k and then the relative standard error of the mean
+    o.raysPerIteration = 200000;
+    o.maxIterations = 1000;
+  }
+  if (name.rfind("random-walk", 0) == 0) {
     o.tolerance = 2e-3;  // relative standard error
     o.raysPerIteration = 20000;
     o.maxIterations = 200;
@@ -184,8 +189,9 @@ INSTANTIATE_TEST_SUITE_P(AllSolvers, SolverContract, ::testing::ValuesIn(solverN
                          });
 
 TEST(SolverRegistry, KnowsEveryMethodAndRejectsOthers) {
-  EXPECT_EQ(solverNames().size(), 10u);
+  EXPECT_EQ(solverNames().size(), 12u);
   EXPECT_FALSE(solverNeedsMatrix("local-lines"));
+  EXPECT_FALSE(solverNeedsMatrix("local-lines-regular"));
   EXPECT_FALSE(solverNeedsMatrix("hierarchical-clustering"));
   EXPECT_TRUE(solverNeedsMatrix("stochastic-jacobi"));
   EXPECT_TRUE(solverNeedsMatrix("southwell"));

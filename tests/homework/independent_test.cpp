@@ -235,6 +235,43 @@ TEST(HomeworkIndependent, ShotsAgreeWithTheCoresSouthwell) {
   });
 }
 
+TEST(HomeworkIndependent, StochasticJacobiAgreesWithItsLinesAndTheCoresJacobiSweep) {
+  forEachVariant("stochastic-jacobi", [](const Exercise& e) {
+    FormFactorMatrix F;
+    const RadiositySystem system = systemOf(e, F);
+    const Eigen::MatrixXd& lines = data(e, "lines");
+    const Eigen::VectorXd& L = system.areas;
+    const Eigen::VectorXd E = system.emission.col(0), rho = system.reflectance.col(0);
+    const Eigen::VectorXd power = E.cwiseProduct(L);
+    const auto n = L.size();
+    // The lines of the table, drawn again with the running sums the statement describes.
+    Eigen::VectorXd counts = Eigen::VectorXd::Zero(n);
+    for (Eigen::Index k = 0; k < lines.rows(); ++k) {
+      Eigen::Index from = 0, to = 0;
+      for (double sum = power[0] / power.sum(); lines(k, 0) >= sum; sum += power[from] / power.sum()) ++from;
+      for (double sum = F(from, 0); lines(k, 1) >= sum; sum += F(from, to)) ++to;
+      ASSERT_LT(to, n) << "seed " << e.seed;
+      counts[to] += 1;
+    }
+    const double perRay = power.sum() / static_cast<double>(lines.rows());
+    EXPECT_AGREES(e, "perRay", perRay, 1e-6);
+    for (Eigen::Index j = 0; j < n; ++j) {
+      const std::string side = "[" + std::to_string(j + 1) + "]";
+      EXPECT_EQ(answer(e, "count" + side), counts[j]) << "seed " << e.seed;
+      EXPECT_AGREES(e, "B1" + side, E[j] + rho[j] * counts[j] * perRay / L[j], 1e-6);
+    }
+    // The deterministic sweep is the core's Jacobi sweep from E (the rounded F's reciprocity is good to far
+    // less than the tolerance).
+    SolverOptions options;
+    options.tolerance = 0;
+    options.maxIterations = 1;
+    RgbField B;
+    jacobi(system, B, options);
+    const int asked = static_cast<int>(e.given.at("asked"));
+    EXPECT_AGREES(e, "exact", B(asked - 1, 0), 0.5);
+  });
+}
+
 TEST(HomeworkIndependent, BouncesAgreeWithTheNeumannSeriesAndTheDirectSolver) {
   forEachVariant("bounces", [](const Exercise& e) {
     FormFactorMatrix F;

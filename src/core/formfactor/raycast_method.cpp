@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "core/formfactor/analytic_method.h"
+#include "core/formfactor/local_lines.h"
 #include "core/formfactor/pair_matrix.h"
 #include "core/formfactor/raycast_pair.h"
 #include "core/formfactor/sampling.h"
@@ -42,10 +43,10 @@ class RaycastMethod : public FormFactorMethod {
   }
 };
 
-// "montecarlo": local lines / form-factor sampling. From each element i, N = options.samples rays leave
-// uniformly chosen points in cosine-distributed directions; the fraction whose first hit is the front of
-// element j estimates F_ij. Unbiased, noisy: each entry has variance F(1-F)/N, reported as the RMS standard
-// error.
+// "montecarlo": local lines / form-factor sampling (local_lines.h). From each element i, N = options.samples
+// rays leave uniformly chosen points in cosine-distributed directions; the fraction whose first hit is the
+// front of element j estimates F_ij. Unbiased, noisy: each entry has variance F(1-F)/N, reported as the RMS
+// standard error.
 class MonteCarloMethod : public FormFactorMethod {
  public:
   std::string name() const override { return "montecarlo"; }
@@ -68,17 +69,8 @@ class MonteCarloMethod : public FormFactorMethod {
     FormFactorMatrix F = zeroFormFactorMatrix(n);
     forEachRow(mesh.size(), options, progress, "form factors (montecarlo)", stats,
                [&](int i, RowCounters& counters) {
-                 const ElementPolygon a(mesh, i);
-                 const Vec3& normal = mesh.elements[i].normal;
-                 PairRandom random(options.seed, static_cast<std::uint64_t>(i), 0x6d6f6e7465ull);
-                 const double lift = 1e-9 * rays.sceneSize();
-                 for (int k = 0; k < samples; ++k) {
-                   const Vec2 s = jitteredSample(k, samples, random);
-                   const Vec3 x = pointOnPolygon(a.v.data(), a.count, s.x(), s.y()) + lift * normal;
-                   const Vec3 direction = cosineDirection(normal, random.uniform(), random.uniform());
-                   const RayHit hit = rays.firstHit(x, direction, i);
-                   if (hit.element >= 0 && hit.frontSide) F(i, hit.element) += 1;  // exact up to 2^53
-                 }
+                 for (const LocalLine& line : shootLocalLines(mesh, rays, i, samples, options.seed))
+                   if (line.hit >= 0) F(i, line.hit) += 1;  // whole counts: exact up to 2^53
                  counters.raysCast += static_cast<std::size_t>(samples);
                  // Hits are counted whole and divided once: adding 1/N per hit drifts by rounding, and
                  // over millions of rays a row of a closed scene came out above 1.

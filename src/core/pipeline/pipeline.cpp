@@ -29,7 +29,8 @@ SolveOutcome solveRadiosity(const RadiositySystem& system, const std::string& re
   // The solver reports its own progress (by iterations and by residual, never backwards).
   solver->setProgress(&progress);
   solver->setObserver([&out, &observer](const IterationRecord& r) {
-    out.trace.push_back({r.iteration, r.residual, r.seconds, r.shooter});
+    out.trace.push_back({r.iteration, r.residual, r.seconds, r.shooter, r.rays, r.standardError,
+                         r.emittedPower > 0 ? r.unshotPower / r.emittedPower : 0.0});
     out.standardError = r.standardError;
     out.rays = r.rays;
     out.links = r.links;

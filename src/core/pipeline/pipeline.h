@@ -22,7 +22,10 @@ struct IterationPoint {
   int iteration = 0;
   double residual = 0;
   double seconds = 0;
-  int shooter = -1;  // shooting solvers: the element that shot in this iteration
+  int shooter = -1;          // shooting solvers: the element that shot in this iteration
+  long rays = 0;             // stochastic solvers: the rays so far
+  double standardError = 0;  // stochastic solvers: the relative standard error of B
+  double unshot = 0;         // shooting solvers: the unshot power as a fraction of the emitted power
 };
 
 struct SolveOutcome {

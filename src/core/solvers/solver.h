@@ -130,7 +130,8 @@ const SolverInfo& solverInfo(const std::string& name);
 bool solverNeedsMatrix(const std::string& name);
 
 // Registry by name (solverTable()): direct, jacobi, gauss-seidel, southwell, progressive, bounces,
-// stochastic-jacobi, random-walk, local-lines, hierarchical-clustering.
+// stochastic-jacobi, random-walk, random-walk-absorption, local-lines, local-lines-regular,
+// hierarchical-clustering.
 std::unique_ptr<Solver> makeSolver(const std::string& name);  // throws std::invalid_argument
 std::vector<std::string> solverNames();
 // The solver used when none is named: a direct solve for small n, an iterative one otherwise.

@@ -32,15 +32,26 @@ const std::vector<SolverInfo>& solverTable() {
       {"bounces", Matrix, "one more bounce of the Neumann series per iteration", {"tolerance", "iterations"}},
       {"stochastic-jacobi",
        Matrix,
-       "shoots the unshot power with random lines drawn from the rows of F",
+       "incremental stochastic Jacobi drawing its lines from the rows of a stored F",
        {"tolerance", "iterations", "seed", "rays-per-iteration"}},
       {"random-walk",
        Matrix,
-       "random walks from the emitters, jumping by the rows of F",
+       "random walks from the emitters, jumping by the rows of F; every collision scores (collision "
+       "estimator)",
+       {"tolerance", "iterations", "seed", "rays-per-iteration"}},
+      {"random-walk-absorption",
+       Matrix,
+       "the same random walks, scoring only where each walk is absorbed (absorption estimator)",
        {"tolerance", "iterations", "seed", "rays-per-iteration"}},
       {"local-lines",
        Geometry,
-       "shoots the unshot power with rays traced through the scene; stores no form factor, memory O(n)",
+       "incremental stochastic Jacobi: shoots the unshot power with rays traced through the scene; stores no "
+       "form factor, memory O(n)",
+       {"tolerance", "iterations", "seed", "rays-per-iteration"}},
+      {"local-lines-regular",
+       Geometry,
+       "regular stochastic Jacobi: every iteration shoots all the power again with rays traced through the "
+       "scene and the iterates after a burn-in are averaged; stores no form factor",
        {"tolerance", "iterations", "seed", "rays-per-iteration"}},
       {"hierarchical-clustering",
        Geometry,
@@ -74,7 +85,10 @@ std::unique_ptr<Solver> makeSolver(const std::string& name) {
   if (name == "bounces") return std::make_unique<BouncesSolver>();
   if (name == "stochastic-jacobi") return std::make_unique<StochasticSolver>(name, &stochasticJacobi);
   if (name == "random-walk") return std::make_unique<StochasticSolver>(name, &randomWalk);
+  if (name == "random-walk-absorption")
+    return std::make_unique<StochasticSolver>(name, &randomWalkAbsorption);
   if (name == "local-lines") return std::make_unique<StochasticSolver>(name, &localLines);
+  if (name == "local-lines-regular") return std::make_unique<StochasticSolver>(name, &regularLocalLines);
   if (name == "hierarchical-clustering")
     return std::make_unique<StochasticSolver>(name, &hierarchicalClustering);
   throw std::logic_error("solver '" + name + "' is in the table but has no implementation");

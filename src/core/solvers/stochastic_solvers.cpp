@@ -150,6 +150,7 @@ SolverStatus randomWalk(const RadiositySystem& system, RgbField& B, const Solver
   RgbField sum = RgbField::Zero(n, 3), sumSquares = RgbField::Zero(n, 3);
   double absorbed = 0.0, escaped = 0.0;
   long walks = 0;
+  bool truncated = false;
   std::vector<std::pair<int, Eigen::RowVector3d>> scores;
   // A walk ends with probability 1, but at rho = 1 (a singular system) not in finite time. Truncating at this
   // length biases the result by at most q^kMaxSteps of the weight: below 1e-13 for every survival probability
@@ -173,7 +174,8 @@ SolverStatus randomWalk(const RadiositySystem& system, RgbField& B, const Solver
       const double sourcePower = system.emission.row(at).sum() * A(at);
       if (sourcePower <= 0.0) continue;
       Eigen::RowVector3d weight = system.emission.row(at) * A(at) * (emitted / sourcePower);
-      for (int step = 0; step < kMaxSteps; ++step) {
+      int step = 0;
+      for (; step < kMaxSteps; ++step) {
         const int hit = lines.sample(at, random.uniform());
         if (hit < 0) {
           escaped += weight.sum();
@@ -191,6 +193,9 @@ SolverStatus randomWalk(const RadiositySystem& system, RgbField& B, const Solver
         weight = reflected / q;
         at = hit;
       }
+      // A walk cut off by the limit scored nothing under the absorption estimator: the estimate of a system
+      // that (nearly) never absorbs is not to be trusted, whatever its standard error says.
+      if (step == kMaxSteps) truncated = true;
       for (const auto& [element, value] : scores) {
         sum.row(element) += value;
         sumSquares.row(element) += value.cwiseProduct(value);
@@ -213,12 +218,19 @@ SolverStatus randomWalk(const RadiositySystem& system, RgbField& B, const Solver
     rec.standardError = relativeAreaRms(se, B, A);
     rec.rays = walks;
     rec.seconds = clock.seconds();
-    const bool done = rec.standardError <= options.tolerance;
+    const bool done = !truncated && rec.standardError <= options.tolerance;
     if (standardError) *standardError = se;
     if (sink) sink(std::move(rec));
     if (done) return SolverStatus::Success;
   }
   return SolverStatus::NoConvergence;
+}
+
+SolverStatus randomWalkAbsorption(const RadiositySystem& system, RgbField& B, const SolverOptions& options,
+                                  const IterationSink& sink, RgbField* standardError) {
+  SolverOptions absorption = options;
+  absorption.walkEstimator = SolverOptions::WalkEstimator::Absorption;
+  return randomWalk(system, B, absorption, sink, standardError);
 }
 
 StochasticSolver::StochasticSolver(std::string name, Function function)

@@ -31,6 +31,10 @@ SolverStatus stochasticJacobi(const RadiositySystem& system, RgbField& B, const 
                               const IterationSink& sink = {}, RgbField* standardError = nullptr);
 SolverStatus randomWalk(const RadiositySystem& system, RgbField& B, const SolverOptions& options,
                         const IterationSink& sink = {}, RgbField* standardError = nullptr);
+// randomWalk with options.walkEstimator set to Absorption, whatever it was: the registry's
+// random-walk-absorption, so that the two estimators can be run side by side under one set of options.
+SolverStatus randomWalkAbsorption(const RadiositySystem& system, RgbField& B, const SolverOptions& options,
+                                  const IterationSink& sink = {}, RgbField* standardError = nullptr);
 
 class StochasticSolver : public solver_detail::AlgorithmSolver {
  public:

@@ -1,0 +1,150 @@
+// The stochastic radiosity lesson's claims, on its own steps: the local lines' counts agree with the
+// quadrature's form factors within their binomial standard errors, the steps that say they compute no form
+// factor compute none (the step result holds no F and the runner's cache computed nothing), the regular
+// solver's burn-in is the bound the text gives, and the comparison's numbers say what its text says.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/solvers/local_lines_solver.h"
+#include "lesson/step_runner.h"
+#include "lesson_test_support.h"
+
+namespace rt::lesson {
+namespace {
+
+struct Ran {
+  StepResult result;
+  int formFactorComputations = 0;
+};
+
+Ran runStep(const std::string& figure) {
+  const Lesson lesson = test::shippedLesson("stochastic");
+  const Step& step = test::stepWithFigure(lesson, figure);
+  StepRunner runner(test::repoFolders().scenes);
+  Ran ran{runner.run(lesson, step), 0};
+  ran.formFactorComputations = runner.formFactorComputations();
+  EXPECT_NO_THROW(resolvedText(lesson, step, ran.result));
+  return ran;
+}
+
+TEST(StochasticLesson, LocalLinesLandWhereTheFormFactorsSayWithinTheirNoise) {
+  if (!test::hasMethod("quadrature")) GTEST_SKIP() << "quadrature is not in this build";
+  const StepResult r = runStep("local-lines").result;
+  const double lines = *r.value("lines");
+  EXPECT_EQ(lines, 4000);
+  // The text: within a few standard errors on every surface, and one of them the floor.
+  EXPECT_LE(*r.value("lines-z.max"), 3.5);
+  const double floor = *r.value("lines.floor"), exact = *r.value("lines.floor.reference");
+  EXPECT_NEAR(floor, exact, 3.5 * *r.value("lines-se.floor"));
+  EXPECT_NEAR(*r.value("lines-se.floor"), std::sqrt(floor * (1 - floor) / lines), 1e-12);
+  // The open front lets lines escape, as the quadrature's row says.
+  const double escaped = *r.value("lines.escaped"), escapedExact = *r.value("lines.escaped.reference");
+  EXPECT_GT(escapedExact, 0.01);
+  EXPECT_NEAR(escaped, escapedExact, 3.5 * std::sqrt(escapedExact * (1 - escapedExact) / lines));
+  // The step's F is the Monte Carlo one: the row of the light is the counts.
+  EXPECT_TRUE(r.F);
+  EXPECT_EQ(r.method, "montecarlo");
+}
+
+TEST(StochasticLesson, TheSolversThatTraceLinesComputeNoFormFactor) {
+  for (const char* figure : {"regular", "incremental"}) {
+    const Ran ran = runStep(figure);
+    EXPECT_FALSE(ran.result.F) << figure << ": the step result holds a form-factor matrix";
+    EXPECT_EQ(ran.formFactorComputations, 0) << figure << ": the pipeline computed form factors";
+    EXPECT_GT(*ran.result.value("rays"), 0) << figure;
+    EXPECT_EQ(ran.result.B.rows(), static_cast<Eigen::Index>(ran.result.mesh.size())) << figure;
+  }
+}
+
+TEST(StochasticLesson, RegularJacobiDiscardsItsBurnInAndAveragesTheRest) {
+  const StepResult r = runStep("regular").result;
+  const double tolerance = *r.value("tolerance");
+  const int burnIn = static_cast<int>(*r.value("burn-in"));
+  const double rhoMax = r.mesh.reflectance.maxCoeff();
+  EXPECT_EQ(burnIn, regularBurnIn(rhoMax, tolerance));
+  EXPECT_LE(std::pow(rhoMax, burnIn), tolerance);
+  EXPECT_GT(std::pow(rhoMax, burnIn - 1), tolerance);
+  EXPECT_GT(*r.value("iterations"), burnIn);
+  EXPECT_EQ(*r.value("converged"), 1.0);
+  EXPECT_LE(*r.value("standard-error"), tolerance);
+  // N lines every iteration, the same number each time.
+  EXPECT_EQ(*r.value("rays"), *r.value("iterations") * *r.value("rays-per-iteration"));
+}
+
+TEST(StochasticLesson, IncrementalJacobiShootsMostInItsFirstIteration) {
+  const StepResult r = runStep("incremental").result;
+  EXPECT_EQ(*r.value("converged"), 1.0);
+  EXPECT_EQ(*r.value("rays.first"), *r.value("rays-per-iteration"));
+  // Later iterations shoot less power and so cast fewer lines than the first.
+  const double later = (*r.value("rays") - *r.value("rays.first")) / (*r.value("iterations") - 1);
+  EXPECT_LT(later, *r.value("rays.first"));
+  EXPECT_LT(*r.value("unshot.first"), 1.0);
+}
+
+TEST(StochasticLesson, TheComparisonSaysWhatItsTextSays) {
+  if (!test::hasMethod("quadrature")) GTEST_SKIP() << "quadrature is not in this build";
+  const Ran ran = runStep("stochastic-jacobi");
+  const StepResult& r = ran.result;
+  // F once, for the direct solve only.
+  EXPECT_EQ(ran.formFactorComputations, 1);
+  const double n = static_cast<double>(r.mesh.size());
+  EXPECT_EQ(*r.value("bytes.F"), 8 * n * n);
+  // "The estimated and the measured errors agree."
+  for (const std::string s : {"local-lines-regular", "local-lines"}) {
+    const double estimated = *r.value("standard-error." + s), measured = *r.value("rms-error." + s);
+    EXPECT_GT(measured, 0.5 * estimated) << s;
+    EXPECT_LT(measured, 1.5 * estimated) << s;
+  }
+  // "Its largest error sits on a small element."
+  // Among the reflecting elements, as the error map shows them (the light's own B is mostly its emission).
+  Eigen::VectorXd error = (r.B - r.reference).cwiseAbs().rowwise().mean();
+  for (Eigen::Index i = 0; i < error.size(); ++i)
+    if (r.mesh.emission.row(i).maxCoeff() > 0) error(i) = 0;
+  Eigen::Index worst = 0;
+  error.maxCoeff(&worst);
+  Eigen::VectorXd areas = r.mesh.areas();
+  const double area = areas(worst);
+  std::sort(areas.begin(), areas.end());
+  EXPECT_LT(area, areas(areas.size() / 2)) << "smaller than the median element";
+  // Standard error times sqrt(rays): the regular solver is the less efficient over all its rays, about as
+  // efficient over the iterates it averaged.
+  const double perIteration = *r.value("rays-per-iteration");
+  const double regular = std::pow(*r.value("standard-error.local-lines-regular"), 2);
+  const double incremental =
+      std::pow(*r.value("standard-error.local-lines"), 2) * *r.value("rays.local-lines");
+  const double allRays = *r.value("rays.local-lines-regular");
+  const double averaged = allRays - *r.value("burn-in.local-lines-regular") * perIteration;
+  EXPECT_GT(regular * allRays, 2 * incremental);
+  EXPECT_GT(regular * averaged, incremental / 1.5);
+  EXPECT_LT(regular * averaged, incremental * 1.5);
+  // The noise chart: the incremental solver's estimate grows as it adds light, the regular one's falls once
+  // it averages.
+  for (const SolverRun& run : r.runs) {
+    if (run.label == "local-lines") {
+      EXPECT_GT(run.standardErrors.back(), run.standardErrors.front());
+    }
+    if (run.label == "local-lines-regular") {
+      const auto burnIn = static_cast<std::size_t>(*r.value("burn-in.local-lines-regular"));
+      ASSERT_GT(run.standardErrors.size(), burnIn);
+      EXPECT_LT(run.standardErrors.back(), 0.5 * run.standardErrors[burnIn - 1]);
+    }
+  }
+  // "For a rough answer, yes, even here": the lines finish before F and the exact solve (measured about five
+  // times sooner).
+  EXPECT_LT(*r.value("seconds.local-lines"), *r.value("seconds.formfactors") + *r.value("seconds.direct"));
+}
+
+TEST(StochasticLesson, TheAbsorptionEstimatorNeedsMoreWalksForTheSameNoise) {
+  if (!test::hasMethod("quadrature")) GTEST_SKIP() << "quadrature is not in this build";
+  const StepResult r = runStep("random-walk").result;
+  for (const std::string s : {"random-walk", "random-walk-absorption"}) {
+    EXPECT_EQ(*r.value("converged." + s), 1.0) << s;
+    EXPECT_LE(*r.value("standard-error." + s), *r.value("tolerance")) << s;
+  }
+  EXPECT_GT(*r.value("rays.random-walk-absorption"), 1.5 * *r.value("rays.random-walk"));
+}
+
+}  // namespace
+}  // namespace rt::lesson
