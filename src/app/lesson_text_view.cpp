@@ -15,6 +15,7 @@
 #include <QWebEngineView>
 
 #include "lesson/markdown_html.h"
+#include "lesson/maths.h"
 #include "lesson/text_apparatus.h"
 #include "typeset/web_engine.h"
 
@@ -109,7 +110,7 @@ QString LessonTextView::styleSheet() const {
              .arg(cssColour(p.color(QPalette::Text)), cssColour(p.color(QPalette::Base)),
                   cssColour(p.color(QPalette::Link)), cssColour(p.color(QPalette::Mid)))
              .arg(cssColour(p.color(QPalette::AlternateBase))) +
-         QString::fromStdString(lesson::apparatusStyleSheet()).simplified();
+         QString::fromStdString(lesson::apparatusStyleSheet() + lesson::equationStyleSheet()).simplified();
 }
 
 void LessonTextView::applyStyle() {
@@ -176,8 +177,13 @@ LessonTextView::MathsState LessonTextView::mathsState(int timeoutMs) {
   view_->page()->runJavaScript(
       "(function () { var eq = Array.prototype.map.call(document.querySelectorAll('.katex'), function (e) {"
       " return parseFloat(getComputedStyle(e).fontSize); });"
+      " var overlaps = 0; document.querySelectorAll('.katex-display').forEach(function (d) {"
+      "  var tag = d.querySelector('.tag'); if (!tag) return; var t = tag.getBoundingClientRect();"
+      "  d.querySelectorAll('.katex-html > .base').forEach(function (b) { var r = b.getBoundingClientRect();"
+      "   if (r.right > t.left + 0.5 && r.left < t.right - 0.5 && r.bottom > t.top && r.top < t.bottom)"
+      "    overlaps++; }); });"
       " return JSON.stringify({katex: eq.length, body: parseFloat(getComputedStyle(document.body).fontSize),"
-      " smallest: eq.length ? Math.min.apply(null, eq) : 0}); })()",
+      " smallest: eq.length ? Math.min.apply(null, eq) : 0, overlaps: overlaps}); })()",
       [&](const QVariant& value) {
         answer = value;
         loop.quit();
@@ -191,6 +197,7 @@ LessonTextView::MathsState LessonTextView::mathsState(int timeoutMs) {
   state.katexNodes = o.value("katex").toInt();
   state.bodyPixels = o.value("body").toDouble();
   state.smallestEquationPixels = o.value("smallest").toDouble();
+  state.numbersOverEquations = o.value("overlaps").toInt();
   return state;
 }
 

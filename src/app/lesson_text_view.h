@@ -36,6 +36,7 @@ class LessonTextView : public QWidget {
     QStringList errors;     // KaTeX's messages for formulas that failed
     double bodyPixels = 0;  // computed font sizes on the page
     double smallestEquationPixels = 0;
+    int numbersOverEquations = 0;  // displayed equations whose number's box meets the equation's
   };
   MathsState mathsState(int timeoutMs = 15000);
   // Waits until the page of the last setMarkdown is typeset and has had time to be drawn (screenshots).

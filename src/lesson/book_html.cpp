@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "lesson/markdown_html.h"
+#include "lesson/maths.h"
 #include "lesson/text_apparatus.h"
 
 namespace rt::lesson {
@@ -212,7 +213,8 @@ body.print { font-size: 11pt; }
 .print.dense .page { padding: 14mm 16mm 18mm; }
 .print .book-title { font-size: 2.4em; }
 .print .subtitle { font-size: 1.2em; color: #444; }
-)" + apparatusStyleSheet();
+)" + apparatusStyleSheet() +
+         equationStyleSheet();
 }
 
 }  // namespace rt::lesson

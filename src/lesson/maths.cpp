@@ -220,4 +220,18 @@ std::vector<Formula> lessonFormulas(const Lesson& lesson) {
   return all;
 }
 
+std::string equationStyleSheet() {
+  // KaTeX places \tag's number absolutely at the right of the display, over whatever reaches there. As a
+  // flex row of the equation's pieces (KaTeX cuts it into .base boxes at its relations) and the number, with
+  // the free space before the first piece and before the number (or after the last piece), the equation is
+  // centred in the room the number leaves; a pane too narrow for it breaks the equation at a relation and
+  // puts the number under it, as LaTeX does, instead of over its last terms.
+  return R"(.katex-display > .katex > .katex-html { display: flex; flex-wrap: wrap; align-items: baseline; }
+.katex-display > .katex > .katex-html > .base:first-child { margin-left: auto; }
+.katex-display > .katex > .katex-html > .base:last-child { margin-right: auto; }
+.katex-display > .katex > .katex-html > .tag { position: static !important; padding-left: 1em; flex: none;
+                                               margin-left: auto; }
+)";
+}
+
 }  // namespace rt::lesson

@@ -60,4 +60,9 @@ std::vector<std::pair<std::size_t, std::size_t>> plainTextPieces(const std::stri
 // typesetter checks when the lesson or the book is built.
 std::vector<Formula> lessonFormulas(const Lesson& lesson);
 
+// CSS for KaTeX's displayed equations, the same in the app's pane and the book: a numbered equation is
+// centred in the width its number leaves, the number flush right, and a line too narrow for both puts the
+// number under the equation (as LaTeX does) instead of over its last terms.
+std::string equationStyleSheet();
+
 }  // namespace rt::lesson

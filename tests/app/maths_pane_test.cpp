@@ -6,6 +6,8 @@
 #include <QApplication>
 #include <QDir>
 #include <QTest>
+#include <utility>
+#include <vector>
 
 #include "app/lesson_text_view.h"
 #include "app/screenshot.h"
@@ -73,6 +75,31 @@ TEST(MathsPane, EveryLessonsMathsTypesetsInThePane) {
     ASSERT_TRUE(state.ready) << lesson;
     EXPECT_TRUE(state.errors.isEmpty()) << lesson << ": " << state.errors.join("; ").toStdString();
     EXPECT_EQ(state.katexNodes, state.formulas) << lesson;
+  }
+}
+
+// At the default window size and at a projector's 1024 pixels, no equation number sits on its equation (the
+// pages whose numbers (12.1), (11.2), (4.1) and (9.1) did): a number that does not fit beside its equation
+// goes under it.
+TEST(MathsPane, EquationNumbersKeepClearOfTheirEquations) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->show();
+  for (const QSize size : {QSize(1600, 1000), QSize(1024, 700)}) {
+    window->resize(size);
+    for (const auto& [lesson, step] : std::vector<std::pair<const char*, int>>{{"cornell-box", 0},
+                                                                               {"gathering", 1},
+                                                                               {"gathering", 2},
+                                                                               {"form-factor", 1},
+                                                                               {"radiosity-matrix", 1},
+                                                                               {"rendering-equation", 1},
+                                                                               {"measuring-light", 3},
+                                                                               {"shooting", 2}}) {
+      ASSERT_TRUE(window->openLesson(lesson, step)) << lesson;
+      const auto state = window->textView()->mathsState();
+      ASSERT_TRUE(state.ready) << lesson;
+      EXPECT_EQ(state.numbersOverEquations, 0) << lesson << " step " << step << " at " << size.width();
+    }
   }
 }
 

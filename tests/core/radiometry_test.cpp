@@ -69,7 +69,9 @@ TEST(Radiometry, TheSmallPatchApproximationHoldsFarAwayAndOverestimatesNear) {
     const double exact = polygonSolidAngle(Vec3::Zero(), p), approx = smallPatchSolidAngle(Vec3::Zero(), p);
     EXPECT_DOUBLE_EQ(approx, 1.0 / (h * h));
     EXPECT_GT(approx, exact) << h;  // every other point of the patch is farther and more oblique
-    if (h >= 100) EXPECT_NEAR(approx / exact, 1.0, 1e-4);
+    if (h >= 100) {
+      EXPECT_NEAR(approx / exact, 1.0, 1e-4);
+    }
   }
   // Tilted by 60 degrees about the x axis: the cosine halves it.
   const double t = kPi / 3;
