@@ -1,9 +1,9 @@
-// How long the reader waits (docs/benchmarks.md, "The app's latency"): Page Down to the next step's result
+// How long the reader waits, as a table for docs/benchmarks.md: Page Down to the next step's result
 // on screen, Page Up back to a step just seen (shown from memory), and a control changed through its widget
 // to the new picture, on steps of up to 1,000 elements. Driven through the real window with keys, timed
 // until the window is idle and painted. Disabled by default (it walks many steps and prints a table rather
 // than asserting a machine's speed). Run it idle, under Xvfb:
-//   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/release/tests/app_tests \
+//   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/release/tests/app_tests
 //     --gtest_also_run_disabled_tests --gtest_filter='AppLatencyBenchmark.*'
 #include <gtest/gtest.h>
 
