@@ -27,6 +27,8 @@ struct FirstUse {
   int section = 0;  // 0: the introduction; k: the k-th step
 };
 std::optional<FirstUse> firstUse(const std::string& term, const std::vector<Lesson>& lessons);
+// The answer points into `lessons`, so they must outlive it.
+std::optional<FirstUse> firstUse(const std::string& term, std::vector<Lesson>&& lessons) = delete;
 
 // The Glossary chapter's body: one paragraph per term (anchor "gl-<term>", alphabetical), each ending with a
 // link to its first use: "<lesson id>.html#s<order>-<k>", or "#top" for an introduction.

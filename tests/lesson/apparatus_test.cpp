@@ -214,11 +214,12 @@ TEST(Glossary, TermsLinkToTheirFirstUseInBookOrder) {
   Lesson b = test::oneStepLesson("Two form factors.\n", 3);
   b.id = "b";
   b.steps[0].title = "Pairs";
-  const auto use = firstUse("form factor", {a, b});
+  const std::vector<Lesson> lessons{a, b};
+  const auto use = firstUse("form factor", lessons);
   ASSERT_TRUE(use.has_value());
   EXPECT_EQ(use->lesson->id, "b");
   EXPECT_EQ(use->section, 1);
-  EXPECT_FALSE(firstUse("factorial", {a, b}).has_value());
+  EXPECT_FALSE(firstUse("factorial", lessons).has_value());
   const std::string html = glossaryHtml({{"form factor", "The fraction $F_{ij}$."}}, {a, b});
   EXPECT_EQ(
       html,
