@@ -1,5 +1,7 @@
 #include "app/lesson_text_view.h"
 
+#include <functional>
+
 #include <QChildEvent>
 #include <QDesktopServices>
 #include <QElapsedTimer>
@@ -22,19 +24,30 @@
 namespace rt::app {
 namespace {
 
-// Links to a place on the page stay in the view; any other link opens in the reader's browser, never here.
+// Links to a place on the page stay in the view; a link to another lesson ("form-factor.html#top", written
+// beside the page) opens that lesson in the app; any other link opens in the reader's browser, never here.
 class LessonPage : public QWebEnginePage {
  public:
-  using QWebEnginePage::QWebEnginePage;
+  LessonPage(QObject* parent, std::function<void(const QString&)> openLesson)
+      : QWebEnginePage(parent), openLesson_(std::move(openLesson)) {}
 
  protected:
   bool acceptNavigationRequest(const QUrl& url, NavigationType type, bool) override {
     if (type != NavigationTypeLinkClicked) return true;
     if (url.hasFragment() && url.adjusted(QUrl::RemoveFragment) == this->url().adjusted(QUrl::RemoveFragment))
       return true;
+    const QUrl beside = this->url().adjusted(QUrl::RemoveFilename | QUrl::RemoveFragment);
+    if (url.isLocalFile() && url.adjusted(QUrl::RemoveFilename | QUrl::RemoveFragment) == beside &&
+        url.fileName().endsWith(".html")) {
+      openLesson_(url.fileName().chopped(5));
+      return false;
+    }
     QDesktopServices::openUrl(url);
     return false;
   }
+
+ private:
+  std::function<void(const QString&)> openLesson_;
 };
 
 QString cssColour(const QColor& c) {
@@ -47,7 +60,7 @@ LessonTextView::LessonTextView(QWidget* parent) : QWidget(parent) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   view_ = new QWebEngineView(this);
-  view_->setPage(new LessonPage(view_));
+  view_->setPage(new LessonPage(view_, [this](const QString& id) { emit lessonLinkClicked(id); }));
   view_->setContextMenuPolicy(Qt::NoContextMenu);
   layout->addWidget(view_);
   setFocusProxy(view_);
@@ -199,6 +212,32 @@ LessonTextView::MathsState LessonTextView::mathsState(int timeoutMs) {
   state.smallestEquationPixels = o.value("smallest").toDouble();
   state.numbersOverEquations = o.value("overlaps").toInt();
   return state;
+}
+
+QRect LessonTextView::linkRect(const QString& hrefSuffix, int timeoutMs) {
+  if (!waitUntilShown(timeoutMs)) return {};
+  QEventLoop loop;
+  QVariant answer;
+  QString suffix = hrefSuffix;
+  suffix.replace('\\', "\\\\").replace('\'', "\\'");
+  view_->page()->runJavaScript(
+      "(function () { var a = Array.prototype.find.call(document.querySelectorAll('a[href]'), function (e) {"
+      " return e.getAttribute('href').endsWith('" +
+          suffix +
+          "'); }); if (!a) return ''; a.scrollIntoView({block: 'center'}); var r = a.getBoundingClientRect();"
+          " return JSON.stringify({x: r.left, y: r.top, w: r.width, h: r.height}); })()",
+      [&](const QVariant& value) {
+        answer = value;
+        loop.quit();
+      });
+  QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+  loop.exec();
+  const QJsonObject o = QJsonDocument::fromJson(answer.toString().toUtf8()).object();
+  if (o.isEmpty()) return {};
+  const double zoom = view_->zoomFactor();
+  return QRectF(o.value("x").toDouble() * zoom, o.value("y").toDouble() * zoom,
+                o.value("w").toDouble() * zoom, o.value("h").toDouble() * zoom)
+      .toAlignedRect();
 }
 
 }  // namespace rt::app

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <QPalette>
+#include <QRect>
 #include <QString>
 #include <QStringList>
 #include <QWidget>
@@ -39,12 +40,17 @@ class LessonTextView : public QWidget {
     int numbersOverEquations = 0;  // displayed equations whose number's box meets the equation's
   };
   MathsState mathsState(int timeoutMs = 15000);
+  // Where the first link whose target ends with `hrefSuffix` is, in viewport() coordinates, once scrolled
+  // into view (waits for the page like mathsState); empty when the page has no such link.
+  QRect linkRect(const QString& hrefSuffix, int timeoutMs = 15000);
   // Waits until the page of the last setMarkdown is typeset and has had time to be drawn (screenshots).
   bool waitUntilShown(int timeoutMs = 15000);
 
  signals:
   // The page of the last setMarkdown is shown and its maths set.
   void typeset(int formulas, const QStringList& errors);
+  // A reference to another lesson (lesson::prepareLessonReferences) was clicked.
+  void lessonLinkClicked(const QString& id);
 
  protected:
   void changeEvent(QEvent* event) override;

@@ -292,6 +292,7 @@ void MainWindow::buildUi() {
   statusBar()->addPermanentWidget(progress_);
   // `radiosity lesson check` reports a broken formula at its line; a lesson opened without that check still
   // says so here (the page shows the formula's TeX in red) rather than leaving a reader to guess.
+  connect(text_, &LessonTextView::lessonLinkClicked, this, [this](const QString& id) { openLesson(id); });
   connect(text_, &LessonTextView::typeset, this, [this](int, const QStringList& errors) {
     if (errors.isEmpty()) return;
     statusLabel_->setText(tr("A formula on this page does not typeset: %1").arg(errors.first()));

@@ -57,8 +57,11 @@ std::vector<Citation> findCitations(const std::string& markdown, int firstLine, 
   std::vector<Citation> found;
   for (std::size_t at = markdown.find("[@"); at != std::string::npos; at = markdown.find("[@", at + 1)) {
     if (!plain[at] || !plain[at + 1]) continue;
-    // The label references @eq: and @alg: are not citations, even in brackets.
-    if (markdown.compare(at + 1, 4, "@eq:") == 0 || markdown.compare(at + 1, 5, "@alg:") == 0) continue;
+    // The label references (@eq:, @alg:, @lesson:) are not citations, even in brackets.
+    bool reference = false;
+    for (const char* kind : {"@eq:", "@alg:", "@lesson:", "@Lesson:"})
+      reference = reference || markdown.compare(at + 1, std::char_traits<char>::length(kind), kind) == 0;
+    if (reference) continue;
     const int line = firstLine + static_cast<int>(std::count(markdown.begin(),
                                                              markdown.begin() + static_cast<long>(at), '\n'));
     const SourceLocation where{file, line};

@@ -11,8 +11,9 @@ TextApparatus lessonApparatus(const Lesson& lesson) {
   TextApparatus a;
   a.equations = numberEquations(lesson);
   a.algorithms = numberAlgorithms(lesson);
-  a.bibliography =
-      loadBibliography(bibliographyPath(std::filesystem::path(lesson.file).parent_path().string()));
+  const std::string folder = std::filesystem::path(lesson.file).parent_path().string();
+  a.bibliography = loadBibliography(bibliographyPath(folder));
+  a.lessons = lessonNumbers(folder);
   return a;
 }
 
@@ -20,6 +21,7 @@ std::string prepareText(const std::string& markdown, int firstLine, const std::s
                         const TextApparatus& apparatus) {
   // Citations and maths keep the text's lines; the listings, set last, do not.
   std::string text = prepareCitations(markdown, firstLine, file, apparatus.bibliography);
+  text = prepareLessonReferences(text, firstLine, file, apparatus.lessons);
   text = prepareMaths(text, firstLine, file, apparatus.equations);
   return preparePseudocode(text, firstLine, file, apparatus.algorithms);
 }
@@ -50,6 +52,7 @@ std::vector<std::string> textProblems(const Lesson& lesson) {
       }
     };
     attempt([&] { prepareCitations(text, firstLine, lesson.file, apparatus.bibliography); });
+    attempt([&] { prepareLessonReferences(text, firstLine, lesson.file, apparatus.lessons); });
     attempt([&] { prepareMaths(text, firstLine, lesson.file, apparatus.equations); });
     attempt([&] { preparePseudocode(text, firstLine, lesson.file, apparatus.algorithms); });
   };

@@ -1,6 +1,6 @@
 // A lesson's text made ready for a page: equations numbered, algorithm listings set and numbered, citations
-// linked, references (@eq:, @alg:) resolved. The app's text pane, the HTML book and the PDF all call
-// prepareText, so they number and cite alike.
+// linked, references (@eq:, @alg:, @lesson:) resolved. The app's text pane, the HTML book and the PDF all
+// call prepareText, so they number and cite alike.
 #pragma once
 
 #include <string>
@@ -8,6 +8,7 @@
 
 #include "lesson/bibliography.h"
 #include "lesson/lesson.h"
+#include "lesson/lesson_references.h"
 #include "lesson/maths.h"
 #include "lesson/pseudocode.h"
 
@@ -17,6 +18,7 @@ struct TextApparatus {
   EquationNumbers equations;
   AlgorithmNumbers algorithms;
   Bibliography bibliography;  // the references.json beside the lesson file
+  LessonNumbers lessons;      // the chapter numbers of the lessons beside it
 };
 
 // Numbers the lesson's equations and listings and reads its bibliography. InputError on a label used twice
@@ -33,7 +35,7 @@ std::string prepareText(const std::string& markdown, int firstLine, const std::s
 std::string furtherReading(const std::vector<std::string>& keys, const Bibliography& bibliography, int level);
 
 // The problems of a lesson's text that need no typesetter, one "FILE:LINE: error: ..." each: unknown
-// equations, algorithms or cited works, labels used twice, malformed listings or citations.
+// equations, algorithms, lessons or cited works, labels used twice, malformed listings or citations.
 std::vector<std::string> textProblems(const Lesson& lesson);
 
 // The style of listings, citations and reference lists, shared by the book's pages and the app.

@@ -149,3 +149,19 @@ TEST(DesktopHabits, LessonsAreNumberedAsTheTextsCiteThem) {
   EXPECT_FALSE(label->toolTip().isEmpty());
   EXPECT_TRUE(window->windowTitle().startsWith("Lesson 7:"));
 }
+
+TEST(DesktopHabits, AReferenceToAnotherLessonOpensItWhenClicked) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->show();
+  // The rendering equation's introduction says "Lesson 2 derives these quantities" (written
+  // @Lesson:measuring-light): the number is the chapter's, and the link opens it here, not in a browser.
+  ASSERT_TRUE(window->openLesson("rendering-equation", 0)) << window->lastError().toStdString();
+  EXPECT_TRUE(window->textView()->toPlainText().contains("[Lesson 2](measuring-light.html#top)"));
+  const QRect link = window->textView()->linkRect("measuring-light.html#top");
+  ASSERT_FALSE(link.isEmpty());
+  QTest::mouseClick(window->textView()->viewport(), Qt::LeftButton, {}, link.center());
+  for (int k = 0; k < 100 && !window->windowTitle().startsWith("Lesson 2:"); ++k) QTest::qWait(50);
+  EXPECT_TRUE(window->windowTitle().startsWith("Lesson 2: Measuring light"))
+      << window->windowTitle().toStdString();
+}
