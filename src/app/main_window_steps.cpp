@@ -404,9 +404,10 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
     }
   }
   chart_->setRuns(names, runs);
-  int longest = static_cast<int>(r.history.size());
-  if (compare_ && r.compared) longest = std::max(longest, static_cast<int>(r.compared->history.size()));
-  player_->setIterationCount(longest);
+  // The player counts as the status line does, after the longer run when two are compared.
+  const PipelineResult& longest =
+      compare_ && r.compared && r.compared->history.size() > r.history.size() ? *r.compared : r;
+  player_->setIterations(iterationNumbers(longest), iterationUnit(longest.solverName));
   pathPlayer_->setPath(stepResult ? stepResult->cameraPath : std::vector<Camera>{});
   matrix_->setMatrix(r.F);
   figures_->clear();
