@@ -7,6 +7,8 @@
 #include <QTimer>
 #include <QToolButton>
 
+#include "app/wording.h"
+
 namespace rt::app {
 
 IterationPlayer::IterationPlayer(QWidget* parent) : QWidget(parent) {
@@ -60,8 +62,16 @@ IterationPlayer::IterationPlayer(QWidget* parent) : QWidget(parent) {
 }
 
 void IterationPlayer::setIterationCount(int count) {
+  std::vector<int> numbers(static_cast<std::size_t>(std::max(0, count)));
+  for (std::size_t k = 0; k < numbers.size(); ++k) numbers[k] = static_cast<int>(k) + 1;
+  setIterations(std::move(numbers), tr("iteration"));
+}
+
+void IterationPlayer::setIterations(std::vector<int> numbers, const QString& unit) {
   pause();
-  count_ = std::max(0, count);
+  numbers_ = std::move(numbers);
+  unit_ = unit;
+  count_ = static_cast<int>(numbers_.size());
   const QSignalBlocker block(slider_);
   slider_->setRange(0, std::max(0, count_ - 1));
   current_ = std::max(0, count_ - 1);
@@ -117,7 +127,14 @@ void IterationPlayer::previous() {
 
 void IterationPlayer::updateLabels() {
   playButton_->setText(playing() ? tr("Pause") : tr("Play"));
-  label_->setText(count_ > 0 ? tr("%1 / %2").arg(current_ + 1).arg(count_) : tr("no iterations"));
+  label_->setText(count_ > 0 ? tr("%1 / %2")
+                                   .arg(numbers_[static_cast<std::size_t>(current_)])
+                                   .arg(counted(numbers_.back(), unit_))
+                             : tr("no iterations"));
+}
+
+QString IterationPlayer::label() const {
+  return label_->text();
 }
 
 }  // namespace rt::app

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <QWidget>
+#include <vector>
 
 class QLabel;
 class QToolButton;
@@ -21,6 +22,11 @@ class IterationPlayer : public QWidget {
   // Number of recorded iterations (0 hides the controls' meaning: everything disabled). Jumps to the last
   // one.
   void setIterationCount(int count);
+  // The same, with what each record stands for: record k is after numbers[k] of `unit` (wording's
+  // iterationUnit: a bounces run's record 0 is the emission, after 0 bounces). The label reads
+  // "3 / 3 bounces", as the status line's "after 3 bounces".
+  void setIterations(std::vector<int> numbers, const QString& unit);
+  QString label() const;
   int iterationCount() const { return count_; }
   int current() const { return current_; }
   bool playing() const;
@@ -43,6 +49,8 @@ class IterationPlayer : public QWidget {
 
   int count_ = 0;
   int current_ = 0;
+  std::vector<int> numbers_;  // the count each record stands for
+  QString unit_;
   QToolButton* playButton_ = nullptr;
   QToolButton* nextButton_ = nullptr;
   QToolButton* firstButton_ = nullptr;

@@ -164,6 +164,8 @@ class MainWindow : public QMainWindow {
   void saveSession();
   // The step's text; its equations (code blocks, set in a fixed font of their own size) at the text's size.
   void setStepMarkdown(const QString& markdown);
+  // The 3D view and the iteration player (hidden while a kept result without a solution is shown).
+  void showViewPane(bool shown);
   bool restoreSession();
   bool isLongStep(int lessonIndex, int step) const;
   // The restored session's parameters, over the step's or scene's own (once, by openStep / openScene).

@@ -164,6 +164,9 @@ bool MainWindow::showKeptResult() {
          "again.*\n\n%2")
           .arg(when, kept->markdown));
   if (figures_->showImages(kept->figures, kept->captions) > 0) tabs_->setCurrentWidget(figures_);
+  // The kept result holds the figures and the text, not the solution: an empty 3D view and a player over
+  // nothing would look broken, so they stay hidden until the step is computed.
+  showViewPane(false);
   statusLabel_->setText(tr("Showing the results of %1: Go > Compute this step (F5) to recompute").arg(when));
   return true;
 }
@@ -190,9 +193,16 @@ bool MainWindow::isLongStep(int lessonIndex, int step) const {
   return QSettings().value(stepKey(lesson.id, step), 0).toLongLong() > kLongStepMs;
 }
 
+void MainWindow::showViewPane(bool shown) {
+  viewSplitter_->setVisible(shown && !largeFigure_);
+  player_->setVisible(shown && !largeFigure_);
+}
+
 void MainWindow::computeNow() {
   if (mode_ == Mode::None) return;
   deferred_ = false;
+  showingKept_ = false;
+  showViewPane(true);
   computeButton_->hide();
   newStepPending_ = true;
   requestComputation();
@@ -234,8 +244,7 @@ void MainWindow::setLargeFigure(bool on) {
     largeFigureAction_->setChecked(largeFigure_);
   }
   // The figures tab takes the place of the 3D view and the player, at the size of the pane.
-  viewSplitter_->setVisible(!largeFigure_);
-  player_->setVisible(!largeFigure_);
+  showViewPane(!showingKept_);
   figures_->setFillPane(largeFigure_);
   if (largeFigure_) tabs_->setCurrentWidget(figures_);
 }

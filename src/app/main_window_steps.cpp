@@ -155,6 +155,7 @@ bool MainWindow::openStep(int lessonIndex, int step) {
   const bool defer = deferred_;
   computeButton_->setVisible(defer);
   showingKept_ = false;
+  showViewPane(true);
   // The panel shows the step's own controls and values at once (not the previous step's while this one
   // computes); the scene's surfaces come with the result.
   panel_->setStep(parameters_, s.controls, false, {});
@@ -327,6 +328,7 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   showStale(false);
   if (newStep) keptExposure_ = 0;
   showingKept_ = false;
+  showViewPane(true);
   const bool longStep = recordComputeTime();
   // The views still point at the previous mesh until they get the new one: keep it alive until then.
   const std::shared_ptr<const PipelineResult> previous = result_;
@@ -402,9 +404,10 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
     }
   }
   chart_->setRuns(names, runs);
-  int longest = static_cast<int>(r.history.size());
-  if (compare_ && r.compared) longest = std::max(longest, static_cast<int>(r.compared->history.size()));
-  player_->setIterationCount(longest);
+  // The player counts as the status line does, after the longer run when two are compared.
+  const PipelineResult& longest =
+      compare_ && r.compared && r.compared->history.size() > r.history.size() ? *r.compared : r;
+  player_->setIterations(iterationNumbers(longest), iterationUnit(longest.solverName));
   pathPlayer_->setPath(stepResult ? stepResult->cameraPath : std::vector<Camera>{});
   matrix_->setMatrix(r.F);
   figures_->clear();

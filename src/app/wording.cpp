@@ -42,9 +42,17 @@ QString solveSummary(const std::string& solver, SolverStatus status, int iterati
 }
 
 QString solveSummary(const PipelineResult& r) {
-  int count = r.iterations;
-  if (r.solverName == "bounces" && !r.history.empty()) count = static_cast<int>(r.history.size()) - 1;
+  const std::vector<int> numbers = iterationNumbers(r);
+  const int count = r.solverName == "bounces" && !numbers.empty() ? numbers.back() : r.iterations;
   return solveSummary(r.solverName, r.status, count, r.residual);
+}
+
+std::vector<int> iterationNumbers(const PipelineResult& r) {
+  std::vector<int> numbers;
+  numbers.reserve(r.history.size());
+  for (std::size_t k = 0; k < r.history.size(); ++k)
+    numbers.push_back(r.solverName == "bounces" ? static_cast<int>(k) : r.history[k].iteration);
+  return numbers;
 }
 
 QString inAppTerms(const QString& message) {

@@ -6,6 +6,7 @@
 
 #include <QString>
 #include <string>
+#include <vector>
 
 #include "app/pipeline.h"
 #include "core/solvers/solver.h"
@@ -29,6 +30,11 @@ QString solveSummary(const std::string& solver, SolverStatus status, int iterati
 
 // The same for a result: a bounces run counts its bounces (its history holds B after 0, 1, ... bounces).
 QString solveSummary(const PipelineResult& result);
+
+// What each record of the result's history stands for, in iterationUnit(result.solverName): a bounces run's
+// record k is B after k bounces (record 0 the emission), another solver's the iteration it was taken after.
+// The last one is the count solveSummary gives.
+std::vector<int> iterationNumbers(const PipelineResult& result);
 
 // A message from the core, which names settings as the command line spells them ("use a coarser mesh, e.g.
 // --max-edge 40"), in the app's terms: each option that is a step key becomes its control's label in the

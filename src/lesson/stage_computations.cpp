@@ -265,6 +265,8 @@ void computeBounces(StageContext& c) {
     run.elapsed.push_back(0);
   }
   run.iterations = c.parameters.bounces;
+  // Counted as the app counts them: bounce 0 is the emission, so B after this many bounces is the sum.
+  r.values["iterations.bounces"] = run.iterations;
   run.residual = run.residuals.back();
   r.runs.push_back(run);
   r.B = sum;

@@ -136,8 +136,17 @@ TEST(Session, ALongStepShowsWhatItShowedLastTimeAfterARestart) {
   auto* compute = window->findChild<QPushButton*>("computeButton");
   ASSERT_NE(compute, nullptr);
   EXPECT_TRUE(compute->isVisible());
+  // No empty 3D view beside the kept figures: the view shows a scene or is not there.
+  EXPECT_FALSE(window->primaryView()->isVisible() && !window->primaryView()->hasMesh())
+      << "an empty 3D view beside the kept result";
   QTest::qWait(100);
   window->grab().save(QString::fromStdString(rt::test::scratchDir("app-session") + "/kept-result.png"));
+  // Computing the step brings the 3D view back, with the scene in it.
+  QTest::mouseClick(compute, Qt::LeftButton);
+  ASSERT_TRUE(window->waitUntilIdle());
+  EXPECT_FALSE(window->showingKeptResult());
+  EXPECT_TRUE(window->primaryView()->isVisible());
+  EXPECT_TRUE(window->primaryView()->hasMesh());
   QSettings().clear();
   QDir(StepResultCache().folder()).removeRecursively();
 }

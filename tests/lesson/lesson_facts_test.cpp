@@ -153,6 +153,9 @@ TEST_F(LessonFacts, BouncesConvergeToTheSolution) {
   RUN_OR_SKIP(many, "cornell-box", "bounce-12");
   EXPECT_GT(*many.value("fraction[12]"), 0.95);
   EXPECT_LT(*many.value("fraction[1]"), *many.value("fraction[12]"));
+  // "After {{iterations.bounces}} bounces": terms 0 (the emission) to that count are summed.
+  EXPECT_EQ(*many.value("iterations.bounces"), static_cast<double>(many.bounceTerms.size() - 1));
+  EXPECT_EQ(*many.value("iterations.bounces"), 12.0) << "the text quotes fraction[12]";
 }
 
 TEST_F(LessonFacts, TheAmbientTermBringsTheFirstShotsCloserToTheAnswer) {
