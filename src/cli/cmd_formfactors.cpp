@@ -1,5 +1,5 @@
 // radiosity formfactors SCENE [--method NAME] [mesh options] [--resolution R] [--samples N] [--seed S]
-//                            [--tolerance T]
+//                            [--ff-tolerance T]
 //                            [--enforce-reciprocity] [--normalize-rows] [--output F.csv|F.mtx|F.npy|F.tex]
 //                            [--compare-to REFERENCE.npy]
 // Computes the form-factor matrix of a scene's mesh, prints one summary line and one diagnostics line, and
@@ -109,15 +109,9 @@ void addFormFactorsCommand(CLI::App& app) {
           "element; nusselt: segments per arc; hybrid: rays per 1 % of an occluded pair's form factor")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command
-      ->add_option(
-          "--tolerance,--ff-tolerance", arguments->options.tolerance,
-          "exact: relative tolerance of every entry (the cubature refines until its error estimate "
-          "is below it; occluded pairs take much longer at small values); quadrature: absolute "
-          "error allowed in every entry (1e-3 is far cheaper than 1e-6); 0, the default: the method's own "
-          "(quadrature 1e-5, exact 1e-9)")
-      ->check(CLI::Range(1e-14, 0.5))
-      ->capture_default_str();
+  // --tolerance is the solver's in every other command; here it was the form factors' and still works.
+  addDeprecatedAlias(*command, "--tolerance",
+                     addSettingOption(*command, "ff-tolerance", arguments->options.tolerance));
   command->add_option(
       "--compare-to", arguments->compareTo,
       "Print the error against a reference matrix (.npy, e.g. written by --method exact --output)");

@@ -45,8 +45,11 @@ class QuadratureMethod : public FormFactorMethod {
             0.1,
             1e-5};
   }
+  double entryErrorBound(double, const FormFactorOptions& options) const override {
+    return options.tolerance;
+  }
   std::string description() const override {
-    return "every entry to an absolute --tolerance: exact contour integral for near pairs, Gauss quadrature "
+    return "every entry to an absolute --ff-tolerance: exact contour integral for near pairs, Gauss quadrature "
            "of Lambert's formula with an a-priori order elsewhere, the hidden part clipped per point in "
            "double precision and integrated over cells cut along the visibility events";
   }
