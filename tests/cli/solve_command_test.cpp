@@ -127,7 +127,7 @@ TEST(SolveCommand, PlyCarriesRadiosityPerFaceAndVertex) {
   const std::string out = scratchDir("solve-ply") + "/mesh.ply";
   std::string log;
   ASSERT_EQ(runCommand(cliPath() + " solve " + sourcePath("scenes/furnace-cube.json") +
-                           " --subdivide 2 --ply " + out,
+                           " --subdivide 2 --method analytic --ply " + out,
                        &log),
             0)
       << log;
