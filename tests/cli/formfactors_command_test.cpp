@@ -145,5 +145,31 @@ TEST(FormFactorsCommand, AReferenceOfAnotherMeshOrNoMatrixIsAClearError) {
   EXPECT_NE(log.find("missing.npy: error: cannot open the file"), std::string::npos) << log;
 }
 
+// --explain I,J: one pair's route through the quadrature method and its value, without the matrix; only
+// quadrature has stages to show, and the elements must be in the mesh.
+TEST(FormFactorsCommand, ExplainPrintsOnePairsRouteAndValue) {
+  const std::string scene = sourcePath("scenes/cornell-box.json") + " --subdivide 2 --quiet";
+  std::string log;
+  ASSERT_EQ(runCommand(cliPath() + " formfactors " + scene + " --explain 3,40", &log), 0) << log;
+  for (const char* part : {"pair 3 -> 40", "route: ", "F_3,40 = "})
+    EXPECT_NE(log.find(part), std::string::npos) << part << " in\n" << log;
+  EXPECT_EQ(log.find("pairs computed"), std::string::npos) << "no matrix: " << log;
+  EXPECT_NE(runCommand(cliPath() + " formfactors " + scene + " --method hemicube --explain 3,40", &log), 0);
+  EXPECT_NE(log.find("--explain"), std::string::npos) << log;
+  EXPECT_NE(runCommand(cliPath() + " formfactors " + scene + " --explain 3,4000", &log), 0);
+  EXPECT_NE(log.find("element 4000 is not in the mesh"), std::string::npos) << log;
+}
+
+TEST(FormFactorsCommand, TheQuadratureNotesCountThePairsOnEachRoute) {
+  std::string log;
+  ASSERT_EQ(runCommand(cliPath() + " formfactors " + sourcePath("scenes/cornell-box.json") +
+                           " --subdivide 2 --quiet",
+                       &log),
+            0)
+      << log;
+  EXPECT_NE(log.find("(routes: "), std::string::npos) << log;
+  EXPECT_NE(log.find(" cells "), std::string::npos) << log;
+}
+
 }  // namespace
 }  // namespace rt::test

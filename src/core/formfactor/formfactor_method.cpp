@@ -1,7 +1,7 @@
 #include "core/formfactor/formfactor_method.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <mutex>
