@@ -62,8 +62,10 @@ std::vector<StepKey> makeTable() {
        .choices = &knownMethods,
        .defaultText = defaultFormFactorMethod(),
        .label = "Form factors",
-       .tooltip = "The form-factor method. Stages named after a method (hemicube, nusselt, rays) use theirs "
-                  "unless the step names another.",
+       .tooltip =
+           "The form-factor method. Stages named after a method (hemicube, nusselt, rays) use theirs "
+           "unless the step names another. analytic-visibility is biased where a shadow edge crosses a "
+           "pair; analytic and nusselt ignore occluders.",
        .control = true,
        .stages = computeF,
        .slot = &P::method});

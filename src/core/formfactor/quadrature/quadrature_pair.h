@@ -6,9 +6,9 @@
 //  - each block among the shaft test's candidates judged from its penumbra and umbra regions
 //    (block_shadow_regions.h), then from its cross-sections (shadow_clipper.h): dropped, or the pair hidden;
 //  - U: the exact contour integral for near pairs, Gauss quadrature of Lambert's formula elsewhere;
-//  - H, where occluders remain after the clipper's own tests: block by block where their shadows never overlap
-//    (shadow_overlap.h), over cells cut along the visibility events (visibility_events.h), or by the guarded
-//    adaptive rules (hidden_integral.h).
+//  - H, where occluders remain after the clipper's own tests: block by block where their shadows never
+//    overlap (shadow_overlap.h), over cells cut along the visibility events (visibility_events.h), or by the
+//    guarded adaptive rules (hidden_integral.h).
 // Keeps its working vectors from pair to pair: millions of pairs would otherwise spend as long in the heap as
 // in the arithmetic.
 #pragma once
