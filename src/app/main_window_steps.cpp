@@ -36,14 +36,6 @@
 namespace rt::app {
 namespace {
 
-// The form-factor method for scenes the reader opens: one that handles occlusion when the build has it.
-std::string defaultMethod() {
-  const auto names = formFactorMethodNames();
-  for (const char* preferred : {"hemicube", "raycast", "analytic"})
-    if (std::find(names.begin(), names.end(), preferred) != names.end()) return preferred;
-  return names.empty() ? std::string("analytic") : names.front();
-}
-
 QString sceneSummary(const PipelineResult& r) {
   QString md =
       QString("# %1\n\n").arg(QString::fromStdString(r.scene->name.empty() ? "Scene" : r.scene->name));
@@ -205,8 +197,7 @@ bool MainWindow::openScene(const QString& path) {
   }
   mode_ = Mode::Scene;
   lesson_ = step_ = -1;
-  parameters_ = lesson::StepParameters{};
-  parameters_.method = defaultMethod();
+  parameters_ = lesson::StepParameters{};  // the default form-factor method among them
   chooseSceneSolve(scene_.patches.size(), parameters_);
   applySessionParameters();
   history_->clear();

@@ -26,7 +26,7 @@ namespace {
 
 struct BenchArguments {
   std::string scene = "scenes/cornell-box.json";
-  std::string formFactors = "analytic-visibility";
+  std::string formFactors = defaultFormFactorMethod();
   std::string output = "bench-solvers";
   double tolerance = 1e-10;
   std::uint64_t seed = 1;

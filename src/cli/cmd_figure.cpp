@@ -93,6 +93,7 @@ void addFigureCommand(CLI::App& app) {
       *command, "--max-iterations",
       addSettingOption(*command, "iterations", a->request.maxIterations)->default_str("the view's own"));
   addSettingOption(*command, "resolution", a->request.resolution);
+  addSettingOption(*command, "ff-tolerance", a->request.formFactorTolerance);
   command->add_option("--samples", a->request.samples, "Ray samples (rays view, ray-cast methods)")
       ->capture_default_str();
   command

@@ -1,9 +1,10 @@
 // radiosity formfactors SCENE [--method NAME] [mesh options] [--resolution R] [--samples N] [--seed S]
-//                            [--tolerance T]
+//                            [--ff-tolerance T]
 //                            [--enforce-reciprocity] [--normalize-rows] [--output F.csv|F.mtx|F.npy|F.tex]
-//                            [--compare-to REFERENCE.npy]
+//                            [--compare-to REFERENCE.npy] [--explain I,J]
 // Computes the form-factor matrix of a scene's mesh, prints one summary line and one diagnostics line, and
 // with --compare-to one line of its error against a reference matrix saved earlier (e.g. by --method exact).
+// With --explain I,J it computes one pair of the quadrature method instead and prints how.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -12,6 +13,7 @@
 #include "cli/commands.h"
 #include "cli/setting_options.h"
 #include "core/formfactor/formfactor_method.h"
+#include "core/formfactor/quadrature/pair_explanation.h"
 #include "core/input_error.h"
 #include "core/io/matrix_export.h"
 #include "core/io/matrix_import.h"
@@ -29,7 +31,22 @@ struct FormFactorsArguments {
   bool quiet = false;
   std::string output;
   std::string compareTo;
+  std::vector<int> explain;  // I, J: one pair's way through the quadrature method, no matrix
 };
+
+// --explain I,J: the route the pair takes through the quadrature method's stages, what each found, F_ij.
+void explainPair(const Mesh& mesh, const FormFactorsArguments& a) {
+  if (a.method != "quadrature")
+    throw CLI::ValidationError(
+        "--explain", "it follows the quadrature method's stages; --method " + a.method + " has none to show");
+  const int n = static_cast<int>(mesh.size());
+  for (int k : a.explain)
+    if (k < 0 || k >= n)
+      throw CLI::ValidationError("--explain", "element " + std::to_string(k) + " is not in the mesh (0 to " +
+                                                  std::to_string(n - 1) + ")");
+  QuadratureExplainer explain(mesh, a.options.tolerance);
+  std::cout << explain(a.explain[0], a.explain[1]).text();
+}
 
 void checkShape(const Eigen::MatrixXd& reference, Eigen::Index n, const std::string& path) {
   if (reference.rows() != n || reference.cols() != n)
@@ -57,6 +74,7 @@ void printComparison(const FormFactorMatrix& F, const Eigen::MatrixXd& reference
 void run(const FormFactorsArguments& a) {
   const Scene scene = loadSceneReportingWarnings(a.scene);
   const Mesh mesh = buildMesh(scene, a.mesh.options());
+  if (!a.explain.empty()) return explainPair(mesh, a);
   const auto method = makeFormFactorMethod(a.method);
   // Read the reference first: a wrong path should not cost a whole computation.
   const Eigen::MatrixXd reference = a.compareTo.empty() ? Eigen::MatrixXd() : readNpyMatrix(a.compareTo);
@@ -109,15 +127,15 @@ void addFormFactorsCommand(CLI::App& app) {
           "element; nusselt: segments per arc; hybrid: rays per 1 % of an occluded pair's form factor")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  // --tolerance is the solver's in every other command; here it was the form factors' and still works.
+  addDeprecatedAlias(*command, "--tolerance",
+                     addSettingOption(*command, "ff-tolerance", arguments->options.tolerance));
   command
-      ->add_option(
-          "--tolerance,--ff-tolerance", arguments->options.tolerance,
-          "exact: relative tolerance of every entry (the cubature refines until its error estimate "
-          "is below it; occluded pairs take much longer at small values); quadrature: absolute "
-          "error allowed in every entry (1e-3 is far cheaper than 1e-6); 0, the default: the method's own "
-          "(quadrature 1e-5, exact 1e-9)")
-      ->check(CLI::Range(1e-14, 0.5))
-      ->capture_default_str();
+      ->add_option("--explain", arguments->explain,
+                   "I,J: print the route the pair I -> J takes through the quadrature method's stages, the "
+                   "occluders found and kept, the source's pieces and F_IJ (no matrix)")
+      ->delimiter(',')
+      ->expected(2);
   command->add_option(
       "--compare-to", arguments->compareTo,
       "Print the error against a reference matrix (.npy, e.g. written by --method exact --output)");

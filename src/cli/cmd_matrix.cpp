@@ -102,6 +102,7 @@ void addMatrixCommand(CLI::App& app) {
       ->check(CLI::IsMember({"F", "K", "rho", "E", "B"}));
   addSettingOption(*command, "resolution", a->formFactorOptions.hemicubeResolution);
   addSettingOption(*command, "samples", a->formFactorOptions.samples);
+  addSettingOption(*command, "ff-tolerance", a->formFactorOptions.tolerance);
   addSettingOption(*command, "seed", a->formFactorOptions.seed);
   command->add_option("--channel", a->channel, "Colour channel of K and of the spectral radius: r, g or b")
       ->capture_default_str();

@@ -82,10 +82,6 @@ void addDeprecatedAlias(CLI::App& command, const std::string& oldName, CLI::Opti
       ->group("");  // not listed in --help
 }
 
-const std::string& defaultFormFactorMethod() {
-  return row("method").defaultText;
-}
-
 bool isSolverName(const std::string& name) {
   const auto& solvers = lesson::knownSolvers();
   return std::find(solvers.begin(), solvers.end(), name) != solvers.end();

@@ -9,10 +9,6 @@
 
 namespace rt::cli {
 
-// The form-factor method a command uses when none is given: the table's default for `method`, one that
-// handles occluders.
-const std::string& defaultFormFactorMethod();
-
 // `--<key>` bound to `target`, described, defaulted and checked as the table says. Throws std::logic_error
 // for a key the table does not have.
 CLI::Option* addSettingOption(CLI::App& command, const std::string& key, std::string& target);

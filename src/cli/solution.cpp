@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/setting_options.h"
+#include "core/formfactor/formfactor_method.h"
 
 namespace rt::cli {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/formfactor/analytic.h"
-#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
 #include "core/polygon.h"
 #include "exact/adaptive_cubature.h"
 #include "exact/exact_kernel.h"

@@ -26,9 +26,12 @@ class ExactMethod : public FormFactorMethod {
             0.1,
             1e-9};
   }
+  double entryErrorBound(double entry, const FormFactorOptions& options) const override {
+    return options.tolerance * entry;
+  }
   std::string description() const override {
     return "exact reference: visibility by exact 2D Booleans (CGAL), Lambert's formula, adaptive cubature to "
-           "--tolerance";
+           "--ff-tolerance";
   }
   FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
                                  FormFactorStats& stats) const override {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/formfactor/formfactor_method.h"
 #include "core/scene.h"
 
 namespace rt::lesson {
@@ -101,12 +102,12 @@ struct CameraOverride {
 
 // The parameters of a step. Unset optionals mean "the method's or solver's default".
 struct StepParameters {
-  std::string method = "analytic-visibility";  // form-factor method (handles occluders)
-  std::vector<std::string> methods;            // compare / benchmark / exact: several methods
-  std::string reference;                       // exact / benchmark: the method errors are measured against
-  std::optional<int> resolution;               // hemicube resolution
-  std::optional<int> samples;                  // raycast / montecarlo samples
-  std::optional<double> formFactorTolerance;   // quadrature / exact: the form factors' tolerance
+  std::string method = defaultFormFactorMethod();
+  std::vector<std::string> methods;           // compare / benchmark / exact: several methods
+  std::string reference;                      // exact / benchmark: the method errors are measured against
+  std::optional<int> resolution;              // hemicube resolution
+  std::optional<int> samples;                 // raycast / montecarlo samples
+  std::optional<double> formFactorTolerance;  // quadrature / exact: the form factors' tolerance
   std::optional<std::uint64_t> seed;
   std::optional<int> subdivide;   // N x N per patch
   std::optional<double> maxEdge;  // or: split until no edge is longer than this

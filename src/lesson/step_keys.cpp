@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "core/formfactor/formfactor_method.h"
 #include "homework/topic_table.h"
 #include "lesson/lesson_parser.h"
 #include "lesson/value_parsing.h"
@@ -59,10 +60,12 @@ std::vector<StepKey> makeTable() {
   add({.name = "method",
        .type = KeyType::Choice,
        .choices = &knownMethods,
-       .defaultText = "analytic-visibility",
+       .defaultText = defaultFormFactorMethod(),
        .label = "Form factors",
-       .tooltip = "The form-factor method. Stages named after a method (hemicube, nusselt, rays) use theirs "
-                  "unless the step names another.",
+       .tooltip =
+           "The form-factor method. Stages named after a method (hemicube, nusselt, rays) use theirs "
+           "unless the step names another. analytic-visibility is biased where a shadow edge crosses a "
+           "pair; analytic and nusselt ignore occluders.",
        .control = true,
        .stages = computeF,
        .slot = &P::method});

@@ -16,6 +16,7 @@ FormFactorMatrix formFactors(const Computed& c, const std::string& name, const F
   FormFactorOptions options;
   options.hemicubeResolution = a.resolution;
   options.samples = a.samples;
+  options.tolerance = a.formFactorTolerance;
   const auto cached = c.pipeline.formFactors(c.mesh, name, options, progressOf(a));
   say(a, "form factors (", name, "): ", cached->stats.summary());
   for (const std::string& w : cached->stats.warnings) say(a, "warning: ", w);

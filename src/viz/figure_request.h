@@ -29,6 +29,7 @@ struct FigureRequest {
   // default).
   std::string formFactors, referenceFormFactors, solver;
   int resolution = 128, samples = 16, maxIterations = 0;
+  double formFactorTolerance = 0;  // quadrature / exact; 0: the method's own
   // Whether the reader gave these (otherwise each view picks a telling default).
   bool solverGiven = false, iterationsGiven = false, referenceGiven = false, resolutionGiven = false,
        samplesGiven = false, colourGiven = false;

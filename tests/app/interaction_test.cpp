@@ -259,3 +259,23 @@ TEST(Interaction, TheParameterPanelShowsTheMethodTheStepUsed) {
   EXPECT_EQ(methods->currentText().toStdString(), "hemicube");
   EXPECT_FALSE(methods->isEnabled());
 }
+
+// A scene the reader opens computes its form factors with the default method (quadrature), as the CLI
+// does; the method box says where analytic-visibility is biased.
+TEST(Interaction, AnOpenedSceneUsesTheDefaultFormFactorMethod) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  ASSERT_TRUE(window->openScene(QString())) << window->lastError().toStdString();
+  QApplication::processEvents();
+  EXPECT_EQ(window->parameterPanel()->parameters().method, rt::defaultFormFactorMethod());
+  const PipelineResult* r = window->result();
+  ASSERT_NE(r, nullptr);
+  EXPECT_EQ(r->formFactorMethod, "quadrature");
+  QComboBox* methods = nullptr;
+  for (QComboBox* box : window->parameterPanel()->findChildren<QComboBox*>())
+    if (box->findText("hybrid") >= 0) methods = box;
+  ASSERT_NE(methods, nullptr);
+  const int visibility = methods->findText("analytic-visibility");
+  ASSERT_GE(visibility, 0);
+  EXPECT_TRUE(methods->itemData(visibility, Qt::ToolTipRole).toString().contains("biased"));
+}

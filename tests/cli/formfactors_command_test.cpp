@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "core/formfactor/formfactor_method.h"
 #include "support/test_paths.h"
 
 namespace rt::test {
@@ -58,7 +59,7 @@ TEST(FormFactorsCommand, ExactMethodHonoursTheTolerance) {
   std::string log;
   ASSERT_EQ(
       runCommand(cliPath() + " formfactors " + sourcePath("scenes/parallel-squares.json") +
-                     " --no-subdivide --method exact --tolerance 1e-10 --quiet --output " + dir + "/F.csv",
+                     " --no-subdivide --method exact --ff-tolerance 1e-10 --quiet --output " + dir + "/F.csv",
                  &log),
       0)
       << log;
@@ -68,10 +69,35 @@ TEST(FormFactorsCommand, ExactMethodHonoursTheTolerance) {
 TEST(FormFactorsCommand, ToleranceOutOfRangeIsRejectedByName) {
   std::string log;
   EXPECT_NE(runCommand(cliPath() + " formfactors " + sourcePath("scenes/parallel-squares.json") +
-                           " --method exact --tolerance 0",
+                           " --method exact --ff-tolerance 2",
                        &log),
             0);
-  EXPECT_NE(log.find("--tolerance"), std::string::npos) << log;
+  EXPECT_NE(log.find("--ff-tolerance"), std::string::npos) << log;
+}
+
+// --tolerance is the solver's everywhere else; here, where it used to be the form factors', it still sets
+// --ff-tolerance and says so.
+TEST(FormFactorsCommand, TheOldToleranceSpellingSetsTheFormFactorsToleranceWithANote) {
+  const std::string scene = sourcePath("scenes/parallel-squares.json") + " --no-subdivide --quiet";
+  std::string old, now;
+  ASSERT_EQ(runCommand(cliPath() + " formfactors " + scene + " --tolerance 1e-3", &old), 0) << old;
+  ASSERT_EQ(runCommand(cliPath() + " formfactors " + scene + " --ff-tolerance 1e-3", &now), 0) << now;
+  EXPECT_NE(old.find("--tolerance is deprecated, use --ff-tolerance"), std::string::npos) << old;
+  EXPECT_NE(old.find("absolute tolerance 0.001"), std::string::npos) << old;
+  EXPECT_NE(now.find("absolute tolerance 0.001"), std::string::npos) << now;
+}
+
+// Unnamed, the method is the registry's default (quadrature) in every command that computes F.
+TEST(FormFactorsCommand, TheDefaultMethodIsQuadrature) {
+  EXPECT_EQ(defaultFormFactorMethod(), "quadrature");
+  std::string log;
+  ASSERT_EQ(runCommand(cliPath() + " formfactors " + sourcePath("scenes/cornell-box.json") +
+                           " --subdivide 2 --quiet",
+                       &log),
+            0)
+      << log;
+  EXPECT_NE(log.find("\nquadrature: "), std::string::npos) << log;  // after the scene's own warning
+  EXPECT_EQ(log.find("rows of F"), std::string::npos) << log;
 }
 
 TEST(FormFactorsCommand, ComparesWithAReferenceMatrixSavedEarlier) {
@@ -117,6 +143,32 @@ TEST(FormFactorsCommand, AReferenceOfAnotherMeshOrNoMatrixIsAClearError) {
   EXPECT_NE(runCommand(cliPath() + " formfactors " + scene + " --compare-to " + dir + "/missing.npy", &log),
             0);
   EXPECT_NE(log.find("missing.npy: error: cannot open the file"), std::string::npos) << log;
+}
+
+// --explain I,J: one pair's route through the quadrature method and its value, without the matrix; only
+// quadrature has stages to show, and the elements must be in the mesh.
+TEST(FormFactorsCommand, ExplainPrintsOnePairsRouteAndValue) {
+  const std::string scene = sourcePath("scenes/cornell-box.json") + " --subdivide 2 --quiet";
+  std::string log;
+  ASSERT_EQ(runCommand(cliPath() + " formfactors " + scene + " --explain 3,40", &log), 0) << log;
+  for (const char* part : {"pair 3 -> 40", "route: ", "F_3,40 = "})
+    EXPECT_NE(log.find(part), std::string::npos) << part << " in\n" << log;
+  EXPECT_EQ(log.find("pairs computed"), std::string::npos) << "no matrix: " << log;
+  EXPECT_NE(runCommand(cliPath() + " formfactors " + scene + " --method hemicube --explain 3,40", &log), 0);
+  EXPECT_NE(log.find("--explain"), std::string::npos) << log;
+  EXPECT_NE(runCommand(cliPath() + " formfactors " + scene + " --explain 3,4000", &log), 0);
+  EXPECT_NE(log.find("element 4000 is not in the mesh"), std::string::npos) << log;
+}
+
+TEST(FormFactorsCommand, TheQuadratureNotesCountThePairsOnEachRoute) {
+  std::string log;
+  ASSERT_EQ(runCommand(cliPath() + " formfactors " + sourcePath("scenes/cornell-box.json") +
+                           " --subdivide 2 --quiet",
+                       &log),
+            0)
+      << log;
+  EXPECT_NE(log.find("(routes: "), std::string::npos) << log;
+  EXPECT_NE(log.find(" cells "), std::string::npos) << log;
 }
 
 }  // namespace

@@ -68,11 +68,14 @@ TEST(SettingOptions, OldSpellingsStillWorkWithANote) {
   EXPECT_NE(log.find("--channel 1 is deprecated, use r, g or b"), std::string::npos) << log;
 }
 
-TEST(SettingOptions, TheDefaultFormFactorMethodHandlesOccludersInEveryCommand) {
+// One default form-factor method (the registry's: quadrature, which handles occluders), and one spelling of
+// its accuracy knob, in every command that computes F.
+TEST(SettingOptions, TheDefaultFormFactorMethodAndItsToleranceAreTheSameInEveryCommand) {
   for (const std::string command : {"solve", "matrix", "figure", "formfactors"}) {
     std::string help;
     runCommand(cli(command + " --help"), &help);
-    EXPECT_NE(help.find("--method TEXT=analytic-visibility"), std::string::npos) << command << ":\n" << help;
+    EXPECT_NE(help.find("--method TEXT=quadrature"), std::string::npos) << command << ":\n" << help;
+    EXPECT_NE(help.find("--ff-tolerance FLOAT=0"), std::string::npos) << command << ":\n" << help;
   }
 }
 

@@ -1,7 +1,7 @@
 // BlockShadowRegion and its two caches: a block is said to miss a pair only when no segment between the two
 // elements meets it, and to hide all only when every segment does, checked by brute force (segments between
 // grids of points, against the box by slabs); and both verdicts are given for most pairs that have one.
-#include "core/formfactor/block_shadow_regions.h"
+#include "core/formfactor/quadrature/block_shadow_regions.h"
 
 #include <gtest/gtest.h>
 

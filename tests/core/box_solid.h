@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "core/formfactor/closed_solids.h"
-#include "core/formfactor/shadow_clipper.h"
-#include "core/formfactor/solid_silhouette.h"
+#include "core/formfactor/quadrature/closed_solids.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
+#include "core/formfactor/quadrature/solid_silhouette.h"
 
 namespace rt {
 

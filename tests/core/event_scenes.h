@@ -4,7 +4,7 @@
 #pragma once
 
 #include "core/box_solid.h"
-#include "core/formfactor/source_panels.h"
+#include "core/formfactor/quadrature/source_panels.h"
 
 namespace rt::event_scenes {
 

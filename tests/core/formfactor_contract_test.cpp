@@ -40,8 +40,9 @@ bool promiseOf(const std::string& name, Promise& p) {
   if (name == "analytic") {
     p.rowSlack = 1e-9, p.ignoresOccluders = true, p.reciprocity = 1e-12, p.fineError = 1e-9;
   } else if (name == "analytic-visibility" || name == "raycast" || name == "hybrid") {
-    // Rays: rows overshoot by their sampling noise, 0.8 % relative RMS at 256 samples (docs/formfactors.md),
-    // within the 1e-2 the methods that cast rays are allowed before a warning (formfactor_method.cpp).
+    // Rays: rows overshoot by their sampling noise, 0.8 % relative RMS at 256 samples
+    // (docs/formfactor-methods.md), within the 1e-2 the methods that cast rays are allowed before a warning
+    // (formfactor_method.cpp).
     p.run.samples = 256, p.rowSlack = 1e-2, p.reciprocity = 1e-12;
     p.coarse = 4, p.fine = 256, p.fineError = 1e-3;
   } else if (name == "quadrature") {

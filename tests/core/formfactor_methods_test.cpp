@@ -126,6 +126,27 @@ TEST(FormFactorMethods, IgnoringOccludersOnAnOccludedSceneWarns) {
   EXPECT_TRUE(closed.warnings.empty()) << closed.warnings.front();
 }
 
+// The row-sum warning allows for the error a method states per entry (quadrature: its tolerance on each
+// one), so a correct run is silent at every tolerance; an overshoot beyond it names the rows.
+TEST(FormFactorMethods, RowSumsWarnOnlyBeyondTheMethodsStatedErrorAndNameTheRows) {
+  const Mesh mesh = test::meshOf(test::roomWithBlock(), 3);
+  for (double tolerance : {1e-2, 1e-3, 1e-5}) {
+    FormFactorOptions options;
+    options.tolerance = tolerance;
+    FormFactorStats stats;
+    runMethod("quadrature", mesh, options, &stats);
+    EXPECT_TRUE(stats.warnings.empty()) << tolerance << ": " << stats.warnings.front();
+  }
+  FormFactorStats open;
+  const FormFactorMatrix F = runMethod("analytic", mesh, {}, &open);
+  ASSERT_EQ(open.warnings.size(), 2u);
+  Eigen::Index first = 0;
+  while (first < F.rows() && F.row(first).sum() <= 1 + 1e-6) ++first;
+  ASSERT_LT(first, F.rows());
+  EXPECT_NE(open.warnings[1].find("elements " + std::to_string(first)), std::string::npos)
+      << open.warnings[1];
+}
+
 TEST(FormFactorMethods, ElementsThatSeeNothingAreNamedAndLeftOutOfTheRowSums) {
   // A closed room with a solid block, bottom included: the bottom lies on the floor facing it and sees
   // nothing, and so does the floor element entirely under the block. Both are right; the summary names them

@@ -9,9 +9,9 @@
 
 #include "core/formfactor/formfactor_method.h"
 #include "core/formfactor/pair_matrix.h"
-#include "core/formfactor/quadrature_pair.h"
-#include "core/formfactor/quadrature_scene.h"
-#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/quadrature/quadrature_pair.h"
+#include "core/formfactor/quadrature/quadrature_scene.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
 #include "core/formfactor/shaft_culling.h"
 #include "occluder_room.h"
 

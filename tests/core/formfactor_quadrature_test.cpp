@@ -8,7 +8,7 @@
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/formfactor_method.h"
-#include "core/formfactor/source_panels.h"
+#include "core/formfactor/quadrature/source_panels.h"
 #include "formfactor_scenes.h"
 
 namespace rt {
@@ -204,7 +204,8 @@ TEST(QuadratureMethod, TriangleOrderMeetsTheTolerance) {
 // Occluded entries do not yet meet the requested tolerance everywhere: a thin shadow that falls between all
 // the points of a panel and its children goes unseen (measured here: 7.2e-4 between tolerances 1e-5 and
 // 1e-7), and the hidden part's work bound stops some pairs early (ceiling rows 2.2e-5 from 1 at 1e-7). The
-// bounds below are those measurements, rounded up, so that a regression shows; docs/formfactors.md says so.
+// bounds below are those measurements, rounded up, so that a regression shows; docs/formfactor-methods.md
+// says so.
 TEST(QuadratureMethod, OccludedRoomConvergesAndCloses) {
   const Mesh mesh = test::meshOf(test::roomWithBlock(), 3);
   const FormFactorMatrix open = runMethod("analytic", mesh);

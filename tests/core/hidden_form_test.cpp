@@ -10,8 +10,8 @@
 #include "core/event_scenes.h"
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/lambert_four.h"
-#include "core/formfactor/shadow_clipper.h"
-#include "core/formfactor/visibility_events.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
+#include "core/formfactor/quadrature/visibility_events.h"
 
 namespace rt {
 namespace {

@@ -1,7 +1,7 @@
 // PenumbraRegion against brute force: a source panel it calls unshaded has every point see the whole
 // receiver past the block (checked by clipping per point); the region holds every point that the clipping
 // finds shaded; and a block reaching as high as the receiver makes no region at all.
-#include "core/formfactor/penumbra_region.h"
+#include "core/formfactor/quadrature/penumbra_region.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/box_solid.h"
-#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
 
 namespace rt {
 namespace {

@@ -1,11 +1,11 @@
 // ShadowClipper's proof that a receiver is wholly hidden (hidesAll), by one face or by a block whose faces
 // share the segments between them, against its per-point clipping: where hidesAll says yes, every point of
 // the source sees nothing of the receiver; where the shadow is partial it says no.
-#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
 
 #include "core/box_solid.h"
-#include "core/formfactor/closed_solids.h"
-#include "core/formfactor/solid_silhouette.h"
+#include "core/formfactor/quadrature/closed_solids.h"
+#include "core/formfactor/quadrature/solid_silhouette.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The proof that two blocks never hide the same part of a pair (shadow_overlap.h), checked against every
 // segment between grids on the two elements, and the separating-plane search it rests on.
-#include "core/formfactor/shadow_overlap.h"
+#include "core/formfactor/quadrature/shadow_overlap.h"
 
 #include <gtest/gtest.h>
 

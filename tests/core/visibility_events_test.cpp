@@ -2,7 +2,7 @@
 // each of which the hidden part keeps its form. Checked by what that promises: whether nothing, part or all
 // of the receiver is hidden is the same at every point of a cell, and Gauss rules on a cell converge as on
 // an analytic integrand, while on the uncut source, across the events, they do not.
-#include "core/formfactor/visibility_events.h"
+#include "core/formfactor/quadrature/visibility_events.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/event_scenes.h"
-#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
 
 namespace rt {
 namespace {

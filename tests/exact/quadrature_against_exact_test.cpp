@@ -43,7 +43,7 @@ TEST(QuadratureAgainstExact, CornellBoxCoarseMesh) {
   // Met at 1e-3 and 1e-4. At 1e-5 one pair stays 1.22e-5 off, printed below (at 1e-6: 8.5e-6 until two
   // blocks that never shade the same part of a pair were taken solid by solid, 4.12e-6 until pairs two blocks
   // shade went over cells, 1.13e-6 since; 6.5e-5 and 4.8e-5 before the blocks, given without bottoms, were
-  // closed by closingFaces() and so cut into cells): docs/formfactors.md, limits.
+  // closed by closingFaces() and so cut into cells): docs/formfactor-methods.md, limits.
   for (double tolerance : {1e-3, 1e-4, 1e-5, 1e-6}) {
     FormFactorStats stats;
     const FormFactorMatrix F = quadrature(mesh, tolerance, &stats);

@@ -31,8 +31,9 @@ class AnalyticMethod : public FormFactorMethod {
   }
   std::string description() const override {
     return visibility_
-               ? "exact contour integral per pair; ray-cast visible fraction where the shaft test finds "
-                 "possible occluders"
+               ? "exact contour integral per pair times a ray-cast visible fraction where the shaft test "
+                 "finds possible occluders: biased where a shadow edge crosses a pair (the visible part "
+                 "is not weighted by the kernel), so far less accurate than quadrature"
                : "exact contour integral per pair, ignoring every occluder";
   }
   FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,

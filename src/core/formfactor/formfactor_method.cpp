@@ -1,5 +1,6 @@
 #include "core/formfactor/formfactor_method.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -27,27 +28,43 @@ namespace {
 
 // Rows of F above 1 beyond round-off: the element would pass on more light than leaves it. Methods that cast
 // rays overshoot by their sampling noise (16 rays per pair: a few tenths of a percent in a closed room),
-// which their accuracy knob controls; only an overshoot well beyond that is worth a warning.
+// which their accuracy knob controls; only an overshoot well beyond that is worth a warning. A method that
+// states an error per entry (quadrature, exact) may overshoot by the sum of those over the row.
 constexpr double kRowSumSlack = 1e-6, kRowSumSlackWithRays = 1e-2;
+constexpr int kRowsNamed = 8;
 
-void addWarnings(const std::string& method, const FormFactorMatrix& F, FormFactorStats& stats) {
+void addWarnings(const FormFactorMethod& method, const FormFactorOptions& options, const FormFactorMatrix& F,
+                 FormFactorStats& stats) {
   if (stats.pairsOccludersIgnored > 0)
-    stats.warnings.push_back(method + " ignored occluders for " +
+    stats.warnings.push_back(method.name() + " ignored occluders for " +
                              std::to_string(stats.pairsOccludersIgnored) +
                              " element pairs whose line of sight may be blocked, so their F is too large; "
-                             "analytic-visibility or exact account for occluders");
+                             "quadrature (the default) or exact account for occluders");
   const double slack = stats.raysCast > 0 ? kRowSumSlackWithRays : kRowSumSlack;
-  Eigen::Index above = 0, worst = 0;
+  std::vector<Eigen::Index> above;
   double largest = 0;
   for (Eigen::Index i = 0; i < F.rows(); ++i) {
-    const double sum = F.row(i).sum();
-    if (sum > 1 + slack) ++above;
-    if (sum > largest) largest = sum, worst = i;
+    double sum = 0, allowance = slack;
+    for (Eigen::Index j = 0; j < F.cols(); ++j) {
+      const double f = F(i, j);
+      sum += f;
+      if (f > 0) allowance += method.entryErrorBound(f, options);
+    }
+    if (sum > 1 + allowance) {
+      above.push_back(i);
+      largest = std::max(largest, sum);
+    }
   }
-  if (above == 0) return;
-  char line[160];
-  std::snprintf(line, sizeof line, "%ld of %ld rows of F sum to more than 1 (up to %.6g, element %ld)",
-                static_cast<long>(above), static_cast<long>(F.rows()), largest, static_cast<long>(worst));
+  if (above.empty()) return;
+  std::string rows;
+  for (std::size_t k = 0; k < above.size() && k < kRowsNamed; ++k)
+    rows += (k == 0 ? "" : ", ") + std::to_string(above[k]);
+  if (above.size() > kRowsNamed) rows += " and " + std::to_string(above.size() - kRowsNamed) + " more";
+  char line[200];
+  std::snprintf(line, sizeof line,
+                "%zu of %ld rows of F sum to more than 1 (up to %.6g) beyond the method's stated error: "
+                "elements %s",
+                above.size(), static_cast<long>(F.rows()), largest, rows.c_str());
   stats.warnings.push_back(std::string(line) +
                            ": those elements would pass on more light than leaves them, and the solve "
                            "overestimates. " +
@@ -65,8 +82,12 @@ FormFactorMatrix FormFactorMethod::compute(const Mesh& mesh, const FormFactorOpt
   if (resolved.tolerance <= 0 && own.field == AccuracyKnob::Field::Tolerance)
     resolved.tolerance = own.defaultValue;
   FormFactorMatrix F = computeMatrix(mesh, resolved, progress, stats);
-  addWarnings(name(), F, stats);
+  addWarnings(*this, resolved, F, stats);
   return F;
+}
+
+double FormFactorMethod::entryErrorBound(double, const FormFactorOptions&) const {
+  return 0;
 }
 
 std::string FormFactorStats::summary() const {

@@ -72,6 +72,9 @@ class FormFactorMethod {
   virtual std::string name() const = 0;
   virtual std::string description() const = 0;
   virtual AccuracyKnob knob() const { return {}; }
+  // The error the method states for one computed entry at `options` (its knob resolved): a row sums to at
+  // most 1 plus these over its entries before compute() warns. 0 for methods that state none per entry.
+  virtual double entryErrorBound(double entry, const FormFactorOptions& options) const;
   // The full n x n matrix for the mesh's elements, checked: stats.warnings says what is wrong with it. May
   // throw Cancelled.
   FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
@@ -90,6 +93,9 @@ void registerFormFactorMethod(const std::string& name, FormFactorMethodFactory f
 std::unique_ptr<FormFactorMethod> makeFormFactorMethod(
     const std::string& name);  // throws std::invalid_argument
 std::vector<std::string> formFactorMethodNames();
+// The method every computation uses when none is named: the CLI, the app, a lesson step without `method`,
+// PipelineSettings. Quadrature: the most accurate for its time on every scene measured (docs/formfactors.md).
+const std::string& defaultFormFactorMethod();
 // The knob of a registered method (AccuracyKnob{} for an unknown name).
 AccuracyKnob accuracyKnobOf(const std::string& method);
 

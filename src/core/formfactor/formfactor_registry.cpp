@@ -3,6 +3,11 @@
 
 namespace rt {
 
+const std::string& defaultFormFactorMethod() {
+  static const std::string name = "quadrature";
+  return name;
+}
+
 void registerBuiltinFormFactorMethods() {
   static const bool once = [] {
     registerFormFactorMethod("analytic", [] { return makeAnalyticMethod(false); });

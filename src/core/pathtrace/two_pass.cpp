@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "core/formfactor/analytic.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
 #include "core/formfactor/sampling.h"
-#include "core/formfactor/shadow_clipper.h"
 #include "core/pathtrace/path_tracer.h"
 
 namespace rt {

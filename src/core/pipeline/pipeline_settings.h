@@ -14,7 +14,7 @@ namespace rt {
 
 struct PipelineSettings {
   MeshOptions mesh;
-  std::string method = "analytic-visibility";  // form-factor method (handles occluders)
+  std::string method = defaultFormFactorMethod();
   FormFactorOptions formFactors;
   std::string solver;  // empty: chooseSolver(n)
   SolverOptions solverOptions;

@@ -116,8 +116,7 @@ AutomaticSolve chooseAutomaticSolve(std::size_t n) {
   if (n < kLocalLinesFrom)
     return {chooseSolver(n), true,
             count + ": form factors stored and solved exactly (below " + std::to_string(kLocalLinesFrom) +
-                " elements this takes seconds; expect about 1 % error from the form factors' visibility "
-                "sampling)"};
+                " elements this takes seconds)"};
   const double gigabytes = 8.0 * static_cast<double>(n) * static_cast<double>(n) / 1e9;
   char size[32];
   std::snprintf(size, sizeof size, "%.2g", gigabytes);

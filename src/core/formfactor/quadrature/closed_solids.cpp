@@ -1,4 +1,4 @@
-#include "core/formfactor/closed_solids.h"
+#include "core/formfactor/quadrature/closed_solids.h"
 
 #include <algorithm>
 #include <cmath>

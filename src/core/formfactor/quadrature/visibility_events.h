@@ -27,8 +27,8 @@
 
 #include <vector>
 
-#include "core/formfactor/shadow_clipper.h"
-#include "core/formfactor/source_panels.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
+#include "core/formfactor/quadrature/source_panels.h"
 
 namespace rt {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/formfactor/shadow_clipper.h"
-#include "core/formfactor/shadow_clipper_detail.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
+#include "core/formfactor/quadrature/shadow_clipper_detail.h"
 
 namespace rt {
 

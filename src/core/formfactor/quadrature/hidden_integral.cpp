@@ -1,4 +1,4 @@
-#include "core/formfactor/hidden_integral.h"
+#include "core/formfactor/quadrature/hidden_integral.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "core/formfactor/shadow_overlap.h"
+#include "core/formfactor/quadrature/shadow_overlap.h"
 
 #include <algorithm>
 #include <cmath>

@@ -25,10 +25,10 @@
 #include <tbb/enumerable_thread_specific.h>
 
 #include "core/formfactor/analytic_method.h"
-#include "core/formfactor/hidden_integral.h"
 #include "core/formfactor/pair_matrix.h"
-#include "core/formfactor/quadrature_pair.h"
-#include "core/formfactor/quadrature_scene.h"
+#include "core/formfactor/quadrature/hidden_integral.h"
+#include "core/formfactor/quadrature/quadrature_pair.h"
+#include "core/formfactor/quadrature/quadrature_scene.h"
 #include "core/formfactor/shaft_culling.h"
 
 namespace rt {
@@ -45,8 +45,12 @@ class QuadratureMethod : public FormFactorMethod {
             0.1,
             1e-5};
   }
+  double entryErrorBound(double, const FormFactorOptions& options) const override {
+    return options.tolerance;
+  }
   std::string description() const override {
-    return "every entry to an absolute --tolerance: exact contour integral for near pairs, Gauss quadrature "
+    return "every entry to an absolute --ff-tolerance: exact contour integral for near pairs, Gauss "
+           "quadrature "
            "of Lambert's formula with an a-priori order elsewhere, the hidden part clipped per point in "
            "double precision and integrated over cells cut along the visibility events";
   }
@@ -67,6 +71,11 @@ class QuadratureMethod : public FormFactorMethod {
         });
     QuadraturePair::Counts total;
     for (const QuadraturePair& pair : pairs) total += pair.counts();
+    std::string routes;
+    for (int r = 0; r < kQuadratureRoutes; ++r)
+      if (const long count = total.routes[static_cast<std::size_t>(r)]; count > 0)
+        routes += (routes.empty() ? "" : ", ") + std::string(routeName(static_cast<QuadratureRoute>(r))) +
+                  " " + std::to_string(count);
     char line[256];
     std::snprintf(
         line, sizeof line,
@@ -75,7 +84,7 @@ class QuadratureMethod : public FormFactorMethod {
         "contour integrals, %ld pairs with occluders clipped per point (%ld of them wholly hidden)",
         tolerance, total.points, total.clipped, total.placed, total.contours, total.occludedPairs,
         total.hiddenPairs);
-    stats.notes = line;
+    stats.notes = "routes: " + (routes.empty() ? std::string("none") : routes) + "; " + line;
     stats.notes += ", " + std::to_string(scene.solids.size()) + " closed convex solids, " +
                    std::to_string(total.eventPairs) +
                    " pairs integrated over cells cut along visibility events (" +

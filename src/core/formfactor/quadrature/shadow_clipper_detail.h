@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
 
 namespace rt::shadow_detail {
 

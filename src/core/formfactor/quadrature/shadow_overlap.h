@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/formfactor/solid_silhouette.h"
+#include "core/formfactor/quadrature/solid_silhouette.h"
 #include "core/vec.h"
 
 namespace rt {

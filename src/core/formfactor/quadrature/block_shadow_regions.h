@@ -18,8 +18,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "core/formfactor/penumbra_region.h"
-#include "core/formfactor/solid_silhouette.h"
+#include "core/formfactor/quadrature/penumbra_region.h"
+#include "core/formfactor/quadrature/solid_silhouette.h"
 #include "core/vec.h"
 
 namespace rt {

@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
 #include "core/vec.h"
 
 namespace rt {

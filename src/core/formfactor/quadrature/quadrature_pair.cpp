@@ -1,120 +1,21 @@
-#include "core/formfactor/quadrature_pair.h"
+#include "core/formfactor/quadrature/quadrature_pair.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 
 #include "core/formfactor/analytic.h"
-#include "core/formfactor/closed_solids.h"
-#include "core/formfactor/hidden_integral.h"
-#include "core/formfactor/lambert_four.h"
-#include "core/formfactor/shadow_clipper_detail.h"
+#include "core/formfactor/quadrature/closed_solids.h"
+#include "core/formfactor/quadrature/hidden_integral.h"
+#include "core/formfactor/quadrature/shadow_clipper_detail.h"
+#include "core/formfactor/quadrature/unoccluded_integral.h"
 
 namespace rt {
 namespace {
 
 constexpr double kNearSizes = 1.0;  // closer than this many source sizes: exact contour integral
-constexpr int kMaxUnoccludedDepth = 6;
 constexpr int kMaxEventCells = 64;  // more, and the adaptive rules cost less than the cells
 constexpr int kHiddenOrder = 2;     // low: the hidden part has kinks and jumps where it is not cut into cells
-
-// One side of a far pair as its one-point rule sees it: the node and weight, and the longest edge.
-struct OnePoint {
-  Vec3 node = Vec3::Zero();
-  double weight = 0, longest = 0;
-  int corners = 0;  // 0: none (not a single triangle or quadrilateral)
-};
-
-// F(dA_x -> receiver) dA_x over a far panel by one point on each side: the kernel cos cos / (pi r^2) at the
-// panels' one-point Gauss nodes, times both weights. The a-priori bound (source_panels.h) is symmetric in
-// the two elements: the receiver's one-point rule from a fixed x errs by the same M rho^-2 as the source's,
-// with rho from the receiver's own edge. Each side gets half the tolerance; the pair must face itself at
-// both nodes. A fifth of the cost of Lambert's formula, whose four arctangents dominate far pairs.
-bool farFieldPair(const OnePoint& source, const OnePoint& receiver, const ReceiverBound& bound,
-                  const Vec3& normal, double gap, double tolerance, double& sum) {
-  if (receiver.corners == 0 || source.corners == 0 || !(gap > 0)) return false;
-  if (gaussOrderFor(gap, std::max(source.longest, receiver.longest),
-                    std::min(source.corners, receiver.corners), bound.area, 0.5 * tolerance) != 1)
-    return false;
-  const Vec3 d = receiver.node - source.node;
-  const double r2 = d.squaredNorm(), cx = normal.dot(d), cy = -bound.normal.dot(d);
-  if (!(cx > 0 && cy > 0)) return false;
-  sum = source.weight * receiver.weight * cx * cy / (std::numbers::pi * r2 * r2);
-  return true;
-}
-
-// An element's own one-point rule, made once with its other measures (it is whole).
-OnePoint onePointOf(const QuadratureScene::Measure& m) {
-  return OnePoint{m.node, m.weight, m.longest, m.corners};
-}
-
-OnePoint onePointOf(const SourcePanel& panel) {
-  OnePoint side;
-  forEachGaussPoint(panel, 1, [&](const Vec3& x, double w) { side.node = x, side.weight = w; });
-  side.longest = panel.longestEdge();
-  side.corners = panel.count;
-  return side;
-}
-
-// `gap` and `edge`, where known (>= 0), are panelGap() and the longest edge of the panel.
-// `far`, where given, is the receiver's one-point rule, and `own` the panel's where known (the element
-// whole).
-double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound, const SmallPolygon& receiver,
-                           const Vec3& normal, double tolerance, int depth, PairWork& work, double gap = -1,
-                           double edge = -1, const OnePoint* far = nullptr, const OnePoint* own = nullptr) {
-  if (far && far->corners > 0) {
-    double sum = 0;
-    if (farFieldPair(own ? *own : onePointOf(panel), *far, bound, normal,
-                     gap >= 0 ? gap : panelGap(panel, bound), tolerance, sum)) {
-      ++work.points;
-      return sum;
-    }
-  }
-  int n = gap >= 0 ? gaussOrderFor(gap, edge, panel.count, bound.area, tolerance)
-                   : gaussOrderFor(panel, bound, tolerance);
-  if (n == 0 && depth < kMaxUnoccludedDepth) {
-    double sum = 0;
-    for (const SourcePanel& child : panel.split())
-      sum += integrateUnoccluded(child, bound, receiver, normal, tolerance, depth + 1, work);
-    return sum;
-  }
-  if (n == 0) n = kMaxOrder;
-  // Four points at a time (lambert_four.h), all over the one receiver.
-  PanelPoints points;
-  gaussPoints(panel, n, points);
-  double sum = 0;
-  int p = 0;
-  for (; p + 4 <= points.count; p += 4) {
-    std::array<double, 4> value;
-    lambertContourSum4(&points.x[static_cast<std::size_t>(p)], normal, receiver.v.data(), 0, receiver.count,
-                       value.data());
-    for (std::size_t k = 0; k < 4; ++k)
-      sum += points.weight[static_cast<std::size_t>(p) + k] * std::max(0.0, value[k]);
-  }
-  for (; p < points.count; ++p)
-    sum += points.weight[static_cast<std::size_t>(p)] *
-           std::max(0.0, lambertContourSum(points.x[static_cast<std::size_t>(p)], normal, receiver.v.data(),
-                                           receiver.count));
-  work.points += n * n;
-  return sum;
-}
-
-// A convex polygon as panels (panelsOf()), appended to `out`: room for exactly the panels its fan makes
-// (one, or (count - 1) / 2), so whatever its corner count all of it is kept and little is zeroed.
-void appendPanels(const SmallPolygon& polygon, std::vector<SourcePanel>& out) {
-  const std::size_t first = out.size();
-  out.resize(first + static_cast<std::size_t>(std::max(1, (polygon.count - 1) / 2)));
-  const int made =
-      panelsOf(polygon.v.data(), polygon.count, out.data() + first, static_cast<int>(out.size() - first));
-  out.resize(first + static_cast<std::size_t>(made));
-}
-
-// Convex polygons as panels, into `out`.
-void appendPanels(const std::vector<SmallPolygon>& polygons, std::vector<SourcePanel>& out) {
-  out.clear();
-  for (const SmallPolygon& polygon : polygons) appendPanels(polygon, out);
-}
 
 }  // namespace
 
@@ -209,15 +110,45 @@ double QuadraturePair::gapOf(int i, const SmallPolygon& source, const ReceiverBo
   return std::max((own.centre - receiver.centre).norm() - own.radius - receiver.radius, height);
 }
 
+const char* routeName(QuadratureRoute route) {
+  static constexpr std::array<const char*, kQuadratureRoutes> names{
+      "enclosed",   "behind",         "far-unoccluded", "block-verdict", "block-sections",
+      "unoccluded", "face-hides-all", "solid-by-solid", "cells",         "adaptive"};
+  return names[static_cast<std::size_t>(route)];
+}
+
+const char* routeMeaning(QuadratureRoute route) {
+  static constexpr std::array<const char*, kQuadratureRoutes> meanings{
+      "one element lies inside a closed block: F = 0",
+      "one element lies wholly behind the other's plane: F = 0",
+      "nothing between them and far apart: F = U on one panel, its Gauss order read off a bound",
+      "a block's shadow regions prove that it hides all of the pair: F = 0",
+      "a block's cross-section cuts every segment from one to the other: F = 0",
+      "no occluder is left after clipping: F = U",
+      "the clipped occluders hide the receiver from every point of the source: F = 0",
+      "F = U - H, H block by block over each block's own cells (their shadows never overlap)",
+      "F = U - H, H over cells of the source cut along the visibility events",
+      "F = U - H, H by the globally adaptive rules with their guards"};
+  return meanings[static_cast<std::size_t>(route)];
+}
+
 PairResult QuadraturePair::operator()(int i, int j, int row) {
-  const Mesh& mesh = scene_.mesh;
   PairResult result;
+  const QuadratureRoute route = integrate(i, j, row, result);
+  ++counts_.routes[static_cast<std::size_t>(route)];
+  if (trace_) trace_->route = route;
+  return result;
+}
+
+QuadratureRoute QuadraturePair::integrate(int i, int j, int row, PairResult& result) {
+  const Mesh& mesh = scene_.mesh;
   PairWork work;
+  if (trace_) *trace_ = PairTrace{};
   if (scene_.enclosed[static_cast<std::size_t>(i)] || scene_.enclosed[static_cast<std::size_t>(j)]) {
     result.needsVisibility = true;
     ++counts_.occludedPairs;
     ++counts_.hiddenPairs;
-    return result;
+    return QuadratureRoute::Enclosed;
   }
   const ElementPolygon a(mesh, i), b(mesh, j);
   const Vec3 &ni = mesh.elements[static_cast<std::size_t>(i)].normal,
@@ -229,10 +160,11 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
   SmallPolygon source, receiver;
   const bool receiverWhole = clipToFront(b.v.data(), b.count, a.v[0], ni, 1e-12 * scale, receiver);
   const bool sourceWhole = clipToFront(a.v.data(), a.count, b.v[0], nj, 1e-12 * scale, source);
-  if (source.count < 3 || receiver.count < 3) return result;
+  if (source.count < 3 || receiver.count < 3) return QuadratureRoute::Behind;
   candidates_.clear();
   shading_.clear();
   scene_.shafts.candidates(i, j, candidates_);
+  if (trace_) trace_->shaft = candidates_;
   // The centres' segment rules the blocks' proofs in or out (judgeBlocks and the cross-sections below); only
   // pairs with candidates need it.
   Vec3 sourceCentre = Vec3::Zero(), receiverCentre = Vec3::Zero();
@@ -258,19 +190,21 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
                      areaI;
       counts_.points += work.points;
       result.kernelEvaluations = static_cast<std::size_t>(work.points);
-      return result;
+      if (trace_) trace_->sourcePieces = trace_->panels = 1, trace_->unoccluded = result.value;
+      return QuadratureRoute::FarUnoccluded;
     }
   }
   const std::vector<SolidPlanes>& solids = scene_.solids;
-  auto whollyHidden = [&]() {
+  auto whollyHidden = [&](QuadratureRoute route) {
     result.needsVisibility = true;
     ++counts_.occludedPairs;
     ++counts_.hiddenPairs;
-    return result;
+    return route;
   };
   if (!candidates_.empty() && !solids.empty() && (row == i || row == j) &&
       judgeBlocks(i, j, row, a, b, source, receiver, sourceCentre, receiverCentre))
-    return whollyHidden();
+    return whollyHidden(QuadratureRoute::BlockVerdict);
+  if (trace_) trace_->afterBlocks = candidates_;
   // A block between them that cuts every segment from one to the other, proven from its cross-sections
   // alone, before anything else is prepared.
   if (!candidates_.empty() && !solids.empty()) {
@@ -289,7 +223,7 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
       if (solidCutsEverySegment(source.v.data(), source.count, receiver.v.data(), receiver.count,
                                 solids[static_cast<std::size_t>(solid)],
                                 scene_.solidCentres[static_cast<std::size_t>(solid)], eps))
-        return whollyHidden();
+        return whollyHidden(QuadratureRoute::BlockSections);
     }
   }
   const ReceiverBound bound =
@@ -335,6 +269,12 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
     clipper_.prepare(source, ni, receiver, nj, occluders_);
     occluded = !clipper_.occluders().empty();
   }
+  if (trace_) {
+    trace_->clippedOccluders = occluded ? static_cast<int>(clipper_.occluders().size()) : 0;
+    trace_->sourcePieces = reached.empty() ? 1 : static_cast<int>(pieces_.size());
+    trace_->panels = panelCount;
+    trace_->near = near;
+  }
   if (occluded) {
     result.needsVisibility = true;
     ++counts_.occludedPairs;
@@ -348,7 +288,7 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
         });
     if (!shadingOnly && clipper_.hidesAll(source.v.data(), source.count, clipper_.occluders(), false)) {
       ++counts_.hiddenPairs;
-      return result;
+      return QuadratureRoute::FaceHidesAll;
     }
   }
   const double unoccludedTolerance = occluded ? 0.5 * tolerance_ : tolerance_;
@@ -378,6 +318,7 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
     unoccluded /= areaI;
   }
   result.value = unoccluded;
+  QuadratureRoute route = QuadratureRoute::Unoccluded;
   if (occluded && unoccluded > 0) {
     auto unoccludedOn = [&](const SourcePanel& panel, double pointTolerance) {
       return integrateUnoccluded(panel, bound, receiver, ni, pointTolerance, 0, work);
@@ -399,16 +340,22 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
     if (apart) {
       ++counts_.eventPairs;
       ++counts_.apartPairs;
+      route = QuadratureRoute::SolidBySolid;
     } else if (byCells) {
       appendPanels(cells_, cellPanels_);
       sum = hidden.overCells(cellPanels_.data(), static_cast<int>(cellPanels_.size()),
                              0.5 * tolerance_ * areaI, clipper_.occluders());
       ++counts_.eventPairs;
+      route = QuadratureRoute::Cells;
+      if (trace_) trace_->cells = static_cast<int>(cellPanels_.size());
     } else {
       sum = hidden(panels_.data(), panelCount, 0.5 * tolerance_ * areaI);
+      route = QuadratureRoute::Adaptive;
     }
     result.value = std::max(0.0, unoccluded - sum / areaI);
+    if (trace_) trace_->hidden = sum / areaI;
   }
+  if (trace_) trace_->unoccluded = unoccluded;
   counts_.points += work.points;
   counts_.clipped += work.clipped;
   counts_.placed += work.placed;
@@ -416,7 +363,7 @@ PairResult QuadraturePair::operator()(int i, int j, int row) {
   if (work.budgetReached) ++counts_.budgetPairs;
   result.kernelEvaluations = static_cast<std::size_t>(work.points);
   result.contourIntegrals = static_cast<std::size_t>(work.contours);
-  return result;
+  return route;
 }
 
 }  // namespace rt

@@ -69,4 +69,4 @@ int panelsOf(const Vec3* polygon, int count, SourcePanel* out, int capacity);
 
 }  // namespace rt
 
-#include "core/formfactor/source_panels_inl.h"
+#include "core/formfactor/quadrature/source_panels_inl.h"

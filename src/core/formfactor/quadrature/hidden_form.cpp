@@ -6,9 +6,9 @@
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/lambert_four.h"
-#include "core/formfactor/shadow_clipper.h"
-#include "core/formfactor/shadow_clipper_detail.h"
-#include "core/formfactor/solid_silhouette.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
+#include "core/formfactor/quadrature/shadow_clipper_detail.h"
+#include "core/formfactor/quadrature/solid_silhouette.h"
 
 namespace rt {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/formfactor/source_panels.h"
+#include "core/formfactor/quadrature/source_panels.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include <tuple>
 #include <vector>
 
-#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
 #include "core/vec.h"
 
 namespace rt {

@@ -8,11 +8,11 @@
 #include <memory>
 #include <vector>
 
-#include "core/formfactor/block_shadow_regions.h"
-#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/quadrature/block_shadow_regions.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
+#include "core/formfactor/quadrature/solid_silhouette.h"
+#include "core/formfactor/quadrature/source_panels.h"
 #include "core/formfactor/shaft_culling.h"
-#include "core/formfactor/solid_silhouette.h"
-#include "core/formfactor/source_panels.h"
 #include "core/mesh.h"
 
 namespace rt {

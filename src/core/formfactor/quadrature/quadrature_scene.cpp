@@ -1,10 +1,10 @@
-#include "core/formfactor/quadrature_scene.h"
+#include "core/formfactor/quadrature/quadrature_scene.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/formfactor/closed_solids.h"
-#include "core/formfactor/shadow_overlap.h"
+#include "core/formfactor/quadrature/closed_solids.h"
+#include "core/formfactor/quadrature/shadow_overlap.h"
 #include "core/formfactor/visibility.h"
 
 namespace rt {

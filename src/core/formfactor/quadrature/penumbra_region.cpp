@@ -1,4 +1,4 @@
-#include "core/formfactor/penumbra_region.h"
+#include "core/formfactor/quadrature/penumbra_region.h"
 
 #include <algorithm>
 #include <cmath>

@@ -18,9 +18,9 @@
 #include <array>
 #include <vector>
 
-#include "core/formfactor/penumbra_region.h"
-#include "core/formfactor/small_buffer.h"
-#include "core/formfactor/source_panels.h"
+#include "core/formfactor/quadrature/penumbra_region.h"
+#include "core/formfactor/quadrature/small_buffer.h"
+#include "core/formfactor/quadrature/source_panels.h"
 #include "core/vec.h"
 
 namespace rt {
@@ -150,7 +150,8 @@ class ShadowClipper {
   // of the receiver, a corner of the solid's silhouette (the hidden part's corner lies behind it from x), or
   // where the plane through x and a silhouette edge cuts an edge of the receiver. Over a cell of the source
   // cut along the visibility events (visibility_events.h) the form stays the same and only the corners move,
-  // so hidden(x, form) places them without clipping: a fifth of the cost of a point (docs/formfactors.md).
+  // so hidden(x, form) places them without clipping: a fifth of the cost of a point
+  // (docs/formfactor-methods.md).
   struct HiddenForm {
     enum Kind : signed char { ReceiverCorner, SolidCorner, EdgeCut };
     struct Corner {

@@ -1,13 +1,13 @@
-#include "core/formfactor/shadow_clipper.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/lambert_four.h"
-#include "core/formfactor/penumbra_region.h"
-#include "core/formfactor/shadow_clipper_detail.h"
-#include "core/formfactor/solid_silhouette.h"
+#include "core/formfactor/quadrature/penumbra_region.h"
+#include "core/formfactor/quadrature/shadow_clipper_detail.h"
+#include "core/formfactor/quadrature/solid_silhouette.h"
 
 namespace rt {
 

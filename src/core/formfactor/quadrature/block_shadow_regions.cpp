@@ -1,4 +1,4 @@
-#include "core/formfactor/block_shadow_regions.h"
+#include "core/formfactor/quadrature/block_shadow_regions.h"
 
 #include <algorithm>
 #include <array>

@@ -1,12 +1,12 @@
-#include "core/formfactor/solid_silhouette.h"
+#include "core/formfactor/quadrature/solid_silhouette.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <tuple>
 
-#include "core/formfactor/closed_solids.h"
-#include "core/formfactor/small_buffer.h"
+#include "core/formfactor/quadrature/closed_solids.h"
+#include "core/formfactor/quadrature/small_buffer.h"
 
 namespace rt {
 namespace {

@@ -1,13 +1,13 @@
 // The hidden part of a pair's form factor: the integral over the source of F(dA_x -> the part of the receiver
 // that occluders hide from x), clipped per point by ShadowClipper and integrated adaptively along the
-// penumbrae (docs/formfactors.md, "Quadrature").
+// penumbrae (docs/formfactor-methods.md, "Quadrature").
 #pragma once
 
 #include <array>
 #include <vector>
 
-#include "core/formfactor/shadow_clipper.h"
-#include "core/formfactor/source_panels.h"
+#include "core/formfactor/quadrature/shadow_clipper.h"
+#include "core/formfactor/quadrature/source_panels.h"
 
 namespace rt {
 

@@ -1,11 +1,11 @@
-#include "core/formfactor/visibility_events.h"
+#include "core/formfactor/quadrature/visibility_events.h"
 
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
-#include "core/formfactor/shadow_clipper_detail.h"
-#include "core/formfactor/solid_silhouette.h"
+#include "core/formfactor/quadrature/shadow_clipper_detail.h"
+#include "core/formfactor/quadrature/solid_silhouette.h"
 
 namespace rt {
 
