@@ -87,7 +87,7 @@ vtkSmartPointer<MeshEdgeLines> MeshEdgeLines::make(const Mesh& mesh, const Colou
   Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
   if (!mesh.vertices.empty()) lo = hi = mesh.vertices.front();
   for (const Vec3& v : mesh.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-  const double height = 5e-4 * (hi - lo).norm();
+  const double height = 1e-3 * (hi - lo).norm();
   auto coordinates = vtkSmartPointer<vtkFloatArray>::New();
   coordinates->SetNumberOfComponents(3);
   coordinates->SetNumberOfTuples(static_cast<vtkIdType>(mesh.vertices.size()));
@@ -109,7 +109,7 @@ vtkSmartPointer<MeshEdgeLines> MeshEdgeLines::make(const Mesh& mesh, const Colou
   mapper->SetInputData(lines->data_);
   mapper->ScalarVisibilityOff();
   mapper->SetResolveCoincidentTopologyToPolygonOffset();
-  mapper->SetRelativeCoincidentTopologyLineOffsetParameters(-1, -2);
+  mapper->SetRelativeCoincidentTopologyLineOffsetParameters(-2, -4);
   lines->actor_ = vtkSmartPointer<vtkActor>::New();
   lines->actor_->SetMapper(mapper);
   lines->actor_->PickableOff();
