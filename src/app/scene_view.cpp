@@ -24,6 +24,7 @@
 
 #include "app/stand_in_actor.h"
 #include "viz/element_polydata.h"
+#include "viz/mesh_edges.h"
 #include "viz/vtk_render.h"
 #include "viz/vtk_views.h"
 
@@ -48,7 +49,6 @@ SceneView::SceneView(QWidget* parent) : VtkWidget(parent) {
   actor_->GetProperty()->SetLighting(false);
   actor_->GetProperty()->BackfaceCullingOn();
   actor_->GetProperty()->SetInterpolationToFlat();
-  actor_->GetProperty()->SetEdgeColor(0.2, 0.2, 0.2);
   actor_->VisibilityOff();
   renderer()->AddActor(actor_);
 
@@ -99,6 +99,7 @@ void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera
     highlightActor_->VisibilityOff();
     if (emitterOutline_) renderer()->RemoveActor(emitterOutline_);
     emitterOutline_ = nullptr;
+    rebuildEdges();
     requestRender();
     return;
   }
@@ -186,6 +187,7 @@ void SceneView::rebuildGeometry() {
   emitterOutline_ = nullptr;
   showColouring(painted);
   rebuildHighlight();
+  rebuildEdges();
 }
 
 void SceneView::repaint3d() {
@@ -221,10 +223,25 @@ void SceneView::showColouring(const viz::ScenePaint& painted) {
 }
 
 void SceneView::setShowEdges(bool show) {
-  showEdges_ = show;
   options_.image.showEdges = show;
-  actor_->GetProperty()->SetEdgeVisibility(show);
+  if (show == showEdges_) return;
+  showEdges_ = show;
+  rebuildEdges();
   requestRender();
+}
+
+void SceneView::rebuildEdges() {
+  if (edges_) edges_->removeFrom(*renderer());
+  edges_ = nullptr;
+  if (!showEdges_ || !mesh_) return;
+  // The figures' edge lines (viz/mesh_edges.h), a lighter grey than theirs against the dark background.
+  edges_ = viz::MeshEdgeLines::make(*mesh_, {0.2, 0.2, 0.2}, devicePixelRatioF());
+  edges_->addTo(*renderer());
+  edges_->actor()->SetVisibility(!inMotion_ || actor_->GetVisibility());
+}
+
+const viz::MeshEdgeLines* SceneView::meshEdges() const {
+  return edges_;
 }
 
 void SceneView::setCaption(const QString& text) {

@@ -21,6 +21,10 @@ class vtkPolyDataMapper;
 class vtkScalarBarActor;
 class vtkTextActor;
 
+namespace rt::viz {
+class MeshEdgeLines;
+}
+
 namespace rt::app {
 
 class StandInActor;
@@ -53,6 +57,8 @@ class SceneView : public VtkWidget {
   // The camera as the reader left it (for exporting the current view).
   Camera currentCamera() const;
   void setShowEdges(bool show);
+  // The mesh edge lines while edges are shown (null otherwise).
+  const viz::MeshEdgeLines* meshEdges() const;
   void setCaption(const QString& text);
   QString caption() const;
   bool showsColourBar() const;
@@ -95,6 +101,8 @@ class SceneView : public VtkWidget {
   void beginMotion();
   void endMotion();
   void rebuildHighlight();
+  // The edge lines of mesh_ when they are shown; none otherwise.
+  void rebuildEdges();
   // The caption's font shrinks (down to a floor) so that it fits a narrow pane, as in compare mode.
   void fitCaption();
 
@@ -128,6 +136,7 @@ class SceneView : public VtkWidget {
   vtkSmartPointer<vtkScalarBarActor> colourBar_;  // scalar colourings (a row of F, errors): values readable
   std::vector<int> highlighted_;
   bool showEdges_ = false;
+  vtkSmartPointer<viz::MeshEdgeLines> edges_;  // while edges are shown
 };
 
 }  // namespace rt::app

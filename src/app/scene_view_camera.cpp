@@ -9,6 +9,7 @@
 
 #include "app/scene_view.h"
 #include "app/stand_in_actor.h"
+#include "viz/mesh_edges.h"
 
 namespace rt::app {
 
@@ -26,6 +27,8 @@ void SceneView::beginMotion() {
   // FXAA costs a third of a frame in a software renderer, and a moving view does not show its stairs.
   renderer()->UseFXAAOff();
   standIn_->show(*actor_);
+  // The stand-in's triangles are not the elements: no edges on them.
+  if (edges_) edges_->actor()->SetVisibility(actor_->GetVisibility());
 }
 
 void SceneView::endMotion() {
@@ -34,6 +37,7 @@ void SceneView::endMotion() {
   inMotion_ = false;
   renderer()->UseFXAAOn();
   standIn_->hide(*actor_, mesh_ != nullptr);
+  if (edges_) edges_->actor()->SetVisibility(actor_->GetVisibility());
   requestRender();
 }
 

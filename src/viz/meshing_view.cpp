@@ -239,6 +239,9 @@ void writeDiscontinuityFigure(const RefinedSolution& solution, const Camera& cam
   sceneOptions.image.width = options.size.width;
   sceneOptions.image.height = options.size.height;
   sceneOptions.image.showEdges = true;
+  // Element edges light and thin: the critical lines are what this view is about.
+  sceneOptions.edgeColour = {0.55, 0.55, 0.58};
+  sceneOptions.edgeWidth = 0.75;
   sceneOptions.dpi = options.size.dpi;
   SceneViewData data;
   data.B = solution.B;
@@ -249,13 +252,6 @@ void writeDiscontinuityFigure(const RefinedSolution& solution, const Camera& cam
   vtkSmartPointer<vtkRenderer> renderer =
       makeSceneRenderer(solution.mesh, camera, paint, sceneOptions, options.size.height, full);
   window->AddRenderer(renderer);
-  // Element edges light and thin: the critical lines are what this view is about.
-  vtkActorCollection* actors = renderer->GetActors();
-  actors->InitTraversal();
-  if (vtkActor* mesh = actors->GetNextActor()) {
-    mesh->GetProperty()->SetEdgeColor(0.55, 0.55, 0.58);
-    mesh->GetProperty()->SetLineWidth(static_cast<float>(std::max(1.0, 0.75 * scale)));
-  }
 
   const double lift = 0.002 * sceneSize(solution.mesh);
   std::vector<Vec3> extremal, interior;

@@ -4,6 +4,7 @@
 // types (viz/vtk_views.h has the VTK-facing builders for the app).
 #pragma once
 
+#include <array>
 #include <limits>
 #include <string>
 #include <vector>
@@ -58,6 +59,8 @@ struct SceneViewOptions {
   std::string caption;  // drawn at the top; empty: none
   int highlightElement =
       -1;  // filled with a marker colour and outlined (e.g. the source of a form-factor row)
+  std::array<double, 3> edgeColour = {0.08, 0.08, 0.08};  // the mesh edges (image.showEdges)
+  double edgeWidth = 1.0;                                 // pixels at 96 dpi (never under one pixel)
   double dpi = 96.0;
 };
 

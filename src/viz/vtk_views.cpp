@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "viz/element_polydata.h"
+#include "viz/mesh_edges.h"
 #include "viz/vtk_render.h"
 
 namespace rt::viz {
@@ -27,13 +28,19 @@ constexpr double kHighlight[3] = {0.835, 0.369, 0.0};
 // Okabe-Ito yellow: the outline of a light in material views.
 constexpr double kEmitterOutline[3] = {0.941, 0.894, 0.259};
 
-vtkSmartPointer<vtkActor> makeHighlightActor(const Mesh& mesh, int element, double lineWidth) {
+// The element filled with the marker colour and outlined in white (by the edge lines: they stay right when
+// the element reaches behind the camera).
+void addHighlight(vtkRenderer& renderer, const Mesh& mesh, int element, double lineWidth) {
+  const Element& marked = mesh.elements[static_cast<std::size_t>(element)];
+  Mesh one;  // the element alone, with its own corners
+  one.elements = {marked};
+  for (std::size_t k = 0; k < marked.vertices.size(); ++k) {
+    one.vertices.push_back(mesh.vertices[static_cast<std::size_t>(marked.vertices[k])]);
+    one.elements[0].vertices[k] = static_cast<int>(k);
+  }
   ScenePaint single;
-  single.firstCorner = {0, static_cast<int>(mesh.elements[element].vertices.size())};
-  Mesh one;
-  one.vertices = mesh.vertices;
-  one.elements = {mesh.elements[element]};
-  single.colours.assign(mesh.elements[element].vertices.size(), Rgb8{213, 94, 0});
+  single.firstCorner = {0, static_cast<int>(marked.vertices.size())};
+  single.colours.assign(marked.vertices.size(), Rgb8{213, 94, 0});
   auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
   mapper->SetInputData(makeElementPolyData(one, single));
   mapper->ScalarVisibilityOff();
@@ -41,11 +48,9 @@ vtkSmartPointer<vtkActor> makeHighlightActor(const Mesh& mesh, int element, doub
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(kHighlight[0], kHighlight[1], kHighlight[2]);
   actor->GetProperty()->LightingOff();
-  actor->GetProperty()->EdgeVisibilityOn();
-  actor->GetProperty()->SetEdgeColor(1, 1, 1);
-  actor->GetProperty()->SetLineWidth(static_cast<float>(lineWidth));
   actor->GetProperty()->BackfaceCullingOn();
-  return actor;
+  renderer.AddActor(actor);
+  MeshEdgeLines::make(one, {1, 1, 1}, lineWidth)->addTo(renderer);
 }
 
 }  // namespace
@@ -120,16 +125,13 @@ vtkSmartPointer<vtkRenderer> makeSceneRenderer(const Mesh& mesh, const Camera& c
   }
   actor->GetProperty()->BackfaceCullingOn();
   if (!options.image.smooth) actor->GetProperty()->SetInterpolationToFlat();
-  if (options.image.showEdges) {
-    actor->GetProperty()->EdgeVisibilityOn();
-    actor->GetProperty()->SetEdgeColor(0.08, 0.08, 0.08);
-    actor->GetProperty()->SetLineWidth(static_cast<float>(std::max(1.0, 1.0 * scale)));
-  }
   renderer->AddActor(actor);
+  if (options.image.showEdges)
+    MeshEdgeLines::make(mesh, options.edgeColour, std::max(1.0, options.edgeWidth * scale))->addTo(*renderer);
   if (options.colouring == SceneColouring::Reflectance)
     if (auto outline = makeEmitterOutlineActor(mesh, std::max(2.0, 2.5 * scale))) renderer->AddActor(outline);
   if (paint.highlightElement >= 0 && static_cast<std::size_t>(paint.highlightElement) < mesh.size())
-    renderer->AddActor(makeHighlightActor(mesh, paint.highlightElement, std::max(2.0, 3.0 * scale)));
+    addHighlight(*renderer, mesh, paint.highlightElement, std::max(2.0, 3.0 * scale));
 
   vtkCamera* view = renderer->GetActiveCamera();
   view->SetPosition(camera.position.x(), camera.position.y(), camera.position.z());

@@ -1,5 +1,6 @@
 // Every 3D view of a lesson shows something to learn from: the closed furnace cube is seen from inside, its
-// walls apart by their edges, and the two squares of the form-factor steps both show, each in its own colour.
+// walls apart by their edges and its ceiling not dark, and the two squares of the form-factor steps both
+// show, each in its own colour.
 #include <gtest/gtest.h>
 
 #include <QImage>
@@ -92,6 +93,26 @@ TEST(BlankViews, TheFurnaceIsSeenFromInsideWithItsWallsApart) {
       for (int x = 0; x < image.width(); x += 4)
         if (std::abs(luminance(image.pixel(x, y)) - luminance(background)) < 2) ++backgroundPixels;
     EXPECT_LT(backgroundPixels, (image.width() / 4) * (image.height() / 4) / 20);
+    // The ceiling (the light of the one-light furnace) is not dark: mesh edges are lines, never a face in the
+    // edge colour, even where a face reaches behind the camera.
+    SceneView* view = window->primaryView();
+    double ceiling = 0, rest = 0;
+    int ceilingPoints = 0, restPoints = 0;
+    const double sx = double(image.width()) / view->width(), sy = double(image.height()) / view->height();
+    for (int y = 2; y < view->height(); y += 8)
+      for (int x = 2; x < view->width(); x += 8) {
+        const int element = view->pickElement(QPoint(x, y));
+        if (element < 0) continue;
+        const QPoint p(std::min(image.width() - 1, int(x * sx)), std::min(image.height() - 1, int(y * sy)));
+        const bool up = view->mesh()->elements[static_cast<std::size_t>(element)].normal.y() < -0.9;
+        (up ? ceiling : rest) += luminance(image.pixel(p));
+        ++(up ? ceilingPoints : restPoints);
+      }
+    ASSERT_GT(ceilingPoints, 20) << "the ceiling is out of view";
+    ASSERT_GT(restPoints, 0);
+    std::cout << "  ceiling luminance " << ceiling / ceilingPoints << ", the other walls "
+              << rest / restPoints << "\n";
+    EXPECT_GT(ceiling / ceilingPoints, 0.6 * rest / restPoints) << "a dark ceiling";
   });
   EXPECT_GE(checked, 2) << "no furnace step showed its 3D view";
 }

@@ -1,8 +1,9 @@
 // The 3D view of a large mesh while the camera moves, as the reader moves it: during a drag with the mouse or
 // a turn of the wheel the view draws the coarse stand-in (viz/stand_in_mesh.h), after the release (or once
 // the wheel rests) the full mesh; a small scene is always drawn in full; a recolouring reaches the
-// stand-in's colours, and the stand-in's frame shows the colours of the still frame, never black. The
-// timings at a million elements are AppScaleBenchmark's (scale_benchmark_test.cpp).
+// stand-in's colours, and the stand-in's frame shows the colours of the still frame, never black; mesh edges
+// go with the full mesh. The timings at a million elements are AppScaleBenchmark's
+// (scale_benchmark_test.cpp).
 #include <gtest/gtest.h>
 
 #include <vtkActor.h>
@@ -27,6 +28,7 @@
 #include "core/io/scene_loader.h"
 #include "core/mesh.h"
 #include "support/test_paths.h"
+#include "viz/mesh_edges.h"
 #include "viz/stand_in_mesh.h"
 
 using namespace rt;
@@ -215,6 +217,26 @@ TEST(StandInView, ASmallSceneNeverGetsAStandIn) {
   const Drag drag = dragAcross(*view);
   EXPECT_EQ(drag.drawnMoving.count(view->displayedPolyData()), 1u);
   EXPECT_EQ(drag.drawnStill.count(view->displayedPolyData()), 1u);
+}
+
+// Mesh edges are the elements' (viz/mesh_edges.h): drawn with the full mesh, moving or still, never over the
+// stand-in, whose triangles are not the elements.
+TEST(StandInView, MeshEdgesGoWithTheFullMeshAndNotWithTheStandIn) {
+  RT_REQUIRE_DISPLAY();
+  for (int n : {10, 80}) {
+    SCOPED_TRACE(n);
+    const Box box(n);
+    auto view = showView(box);
+    view->setShowEdges(true);
+    ASSERT_NE(view->meshEdges(), nullptr);
+    vtkPolyData* edges = view->meshEdges()->polyData();
+    const Drag drag = dragAcross(*view);
+    EXPECT_EQ(drag.drawnMoving.count(edges), n == 10 ? 1u : 0u);
+    EXPECT_EQ(drag.drawnStill.count(edges), 1u);
+    EXPECT_GT(view->meshEdges()->shownEdges(), 0u);
+    view->setShowEdges(false);
+    EXPECT_EQ(view->meshEdges(), nullptr);
+  }
 }
 
 TEST(StandInView, RecolouringReachesTheStandInWithoutRebuildingIt) {

@@ -108,6 +108,25 @@ PngStats pngStats(const std::string& path) {
   return stats;
 }
 
+PngLuminance pngLuminance(const std::string& path) {
+  vtkSmartPointer<vtkImageData> image = readPng(path);
+  int dims[3];
+  image->GetDimensions(dims);
+  PngLuminance result;
+  result.width = dims[0];
+  result.height = dims[1];
+  result.values.resize(static_cast<std::size_t>(dims[0]) * dims[1]);
+  vtkDataArray* pixels = image->GetPointData()->GetScalars();
+  for (int y = 0; y < dims[1]; ++y)
+    for (int x = 0; x < dims[0]; ++x) {
+      const vtkIdType i = static_cast<vtkIdType>(dims[1] - 1 - y) * dims[0] + x;  // VTK's rows start below
+      result.values[static_cast<std::size_t>(y) * dims[0] + x] = 0.2126 * pixels->GetComponent(i, 0) +
+                                                                 0.7152 * pixels->GetComponent(i, 1) +
+                                                                 0.0722 * pixels->GetComponent(i, 2);
+    }
+  return result;
+}
+
 double pngDifference(const std::string& a, const std::string& b) {
   vtkSmartPointer<vtkImageData> ia = readPng(a), ib = readPng(b);
   int da[3], db[3];

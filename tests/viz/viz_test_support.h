@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/mesh.h"
 #include "core/scene.h"
@@ -23,6 +24,13 @@ struct PngStats {
 };
 // Reads a PNG (vtkPNGReader); throws std::runtime_error when unreadable.
 PngStats pngStats(const std::string& path);
+// The luminance (0-255, Rec. 709 weights) of every pixel, row by row from the top of the picture.
+struct PngLuminance {
+  int width = 0, height = 0;
+  std::vector<double> values;
+  double at(int x, int y) const { return values[static_cast<std::size_t>(y) * width + x]; }
+};
+PngLuminance pngLuminance(const std::string& path);
 // Largest per-channel mean absolute difference between two PNGs; a negative value when the sizes differ.
 double pngDifference(const std::string& a, const std::string& b);
 
