@@ -10,6 +10,7 @@
 
 #include "app/vtk_widget.h"
 #include "core/scene.h"
+#include "viz/ray_tree_view.h"
 #include "viz/scene_view.h"
 
 class QTimer;
@@ -57,6 +58,9 @@ class SceneView : public VtkWidget {
   QString caption() const;
   bool showsColourBar() const;
   void setHighlighted(const std::vector<int>& elements);
+  // Rays drawn in the scene (a raytrace step's ray tree); empty: none.
+  void setRaySegments(const std::vector<viz::RaySegments>& segments);
+  int raySegmentCount() const { return raySegments_; }
   const std::vector<int>& highlighted() const { return highlighted_; }
   // Copies the other view's camera (compare mode).
   void syncCameraFrom(const SceneView& other);
@@ -128,6 +132,8 @@ class SceneView : public VtkWidget {
   vtkSmartPointer<vtkScalarBarActor> colourBar_;  // scalar colourings (a row of F, errors): values readable
   std::vector<int> highlighted_;
   bool showEdges_ = false;
+  std::vector<vtkSmartPointer<vtkActor>> rayActors_;
+  int raySegments_ = 0;
 };
 
 }  // namespace rt::app
