@@ -13,6 +13,7 @@
 #include "core/raytrace/ray_cost.h"
 #include "core/raytrace/whitted.h"
 #include "lesson/step_stages.h"
+#include "lesson/traced_pictures.h"
 
 namespace rt::lesson::detail {
 namespace {
@@ -60,12 +61,6 @@ Rgb surfaceMeanOf(const RgbImage& image, const std::vector<int>& elements, const
       ++count;
     }
   return count ? Rgb(sum / count) : Rgb::Zero();
-}
-
-double meanOf(const RgbImage& image) {
-  double sum = 0;
-  for (const Rgb& p : image.pixels) sum += p.mean();
-  return image.pixels.empty() ? 0.0 : sum / static_cast<double>(image.pixels.size());
 }
 
 }  // namespace
@@ -195,6 +190,7 @@ void computeRayTrace(StageContext& c) {
   v["tree-nodes.formula"] = cost.treeNodes;
   v["seconds.whitted"] = seconds;
   v["rays-per-second"] = seconds > 0 ? static_cast<double>(n.total()) / seconds : 0.0;
+  v["million-rays-per-second"] = v["rays-per-second"] / 1e6;
   v["acne"] = main.stats.acneFraction();
   v["leaks"] = main.stats.leakFraction();
   if (wants(View::Epsilon)) {
@@ -215,8 +211,8 @@ void computeRayTrace(StageContext& c) {
   v["tree.blocked"] = blocked;
   v["pixel-x"] = p.pixelX;
   v["pixel-y"] = p.pixelY;
-  v["mean.whitted"] = meanOf(d.whitted);
-  v["mean.radiosity"] = meanOf(d.radiosity);
+  v["mean.whitted"] = imageMean(d.whitted);
+  v["mean.radiosity"] = imageMean(d.radiosity);
   // Diffuse interreflection, which Whitted's rays never follow: the ceiling, which the light (in its plane)
   // does not reach directly, and the colour the red wall lends the white back wall's left third against
   // its right third (the green wall's side): a ratio of red over green ratios, 1 without colour bleeding.
@@ -235,7 +231,7 @@ void computeRayTrace(StageContext& c) {
   v["paths"] = p.paths;
   const char* names[] = {"0", "1", "2", "all"};
   for (std::size_t k = 0; k < d.pathBounces.size(); ++k) {
-    v[std::string("mean.path.") + names[k]] = meanOf(d.pathBounces[k]);
+    v[std::string("mean.path.") + names[k]] = imageMean(d.pathBounces[k]);
     v[std::string("ceiling.path.") + names[k]] =
         surfaceMeanOf(d.pathBounces[k], main.element, traced, r.scene, "ceiling").mean();
     v[std::string("bleed.path.") + names[k]] = bleed(d.pathBounces[k]);

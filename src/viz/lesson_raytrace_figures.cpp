@@ -4,21 +4,11 @@
 
 #include "viz/chart.h"
 #include "viz/image_panels.h"
+#include "viz/lesson_traced_figures.h"
 #include "viz/ray_tree_view.h"
 
 namespace rt::viz::detail {
 namespace {
-
-ImagePanelsOptions pictureOptions(const lesson::Step& step, const StepFigureSettings& s,
-                                  const std::string& title) {
-  ImagePanelsOptions o;
-  o.size = {s.width, s.height, 96.0};
-  o.title = title;
-  o.exposure = step.parameters.exposure;
-  o.toneMap = toneMapFromName(step.parameters.toneMap);
-  o.srgbGamma = step.parameters.gamma;
-  return o;
-}
 
 std::string count(double n) {
   return formatted("%.0f", n);
@@ -54,7 +44,7 @@ std::string renderRayTraceView(lesson::View view, const lesson::Step& step, cons
     case lesson::View::Shadows:
       writeImagePanelsFigure(
           {{"1 shadow ray per light (hard)", d.hard}, {shadowRays + " per light (soft)", d.whitted}},
-          pictureOptions(step, s, "Hard and soft shadows"), path);
+          stepPictureOptions(step, s, "Hard and soft shadows"), path);
       return "The same Whitted picture with one shadow ray per light, to the light's centre (a point light), "
              "and with " +
              shadowRays + " spread over the light's area";
@@ -62,7 +52,8 @@ std::string renderRayTraceView(lesson::View view, const lesson::Step& step, cons
       writeImagePanelsFigure({{epsilonText(0) + ": acne", d.epsilonZero},
                               {epsilonText(d.epsilon) + " (this step)", d.epsilonStep},
                               {epsilonText(d.largeEpsilon) + ": leaks", d.epsilonLarge}},
-                             pictureOptions(step, s, "The self-intersection epsilon (1 shadow ray)"), path);
+                             stepPictureOptions(step, s, "The self-intersection epsilon (1 shadow ray)"),
+                             path);
       return "Shadow rays that count hits from 0 on find the surface they leave (" +
              formatted("%.0f%%", 100 * value("acne.zero")) + " of the lit points wrongly dark); from " +
              formatted("%.3g", d.epsilon) + " on, " + formatted("%.2f%%", 100 * value("acne.step")) +
@@ -90,7 +81,7 @@ std::string renderRayTraceView(lesson::View view, const lesson::Step& step, cons
     case lesson::View::Whitted:
       writeImagePanelsFigure({{"Whitted ray tracing", d.whitted},
                               {"Radiosity (" + std::to_string(r.mesh.size()) + " elements)", d.radiosity}},
-                             pictureOptions(step, s, "Ray traced and radiosity"), path);
+                             stepPictureOptions(step, s, "Ray traced and radiosity"), path);
       return "The Whitted picture, direct light and mirror reflections only, beside the radiosity "
              "solution from the same camera at one exposure: only the second has light on the ceiling and "
              "colour bled from the walls";
@@ -105,7 +96,7 @@ std::string renderRayTraceView(lesson::View view, const lesson::Step& step, cons
         panels.push_back({title, d.pathBounces[k]});
       }
       // The full solution (the last panel) sets the one exposure, so that each bounce visibly adds light.
-      ImagePanelsOptions o = pictureOptions(
+      ImagePanelsOptions o = stepPictureOptions(
           step, s,
           "The path tracer, one more bounce at a time (" + std::to_string(d.paths) + " paths per pixel)");
       if (o.exposure == 0 && !panels.empty()) o.exposure = panelExposure({panels.back()}, o);

@@ -18,12 +18,6 @@ using namespace rt::app;
 
 namespace {
 
-double valueOf(const MainWindow& window, const std::string& name) {
-  const PipelineResult* r = window.result();
-  if (!r || !r->stepResult) return -1;
-  return static_cast<const rt::lesson::StepResult*>(r->stepResult.get())->value(name).value_or(-1);
-}
-
 int stepWithFigure(const MainWindow& window, const std::string& figure) {
   const int lesson = window.library()->indexOf("ray-tracing");
   if (lesson < 0) return -1;
@@ -43,19 +37,19 @@ TEST(RayTraceControls, EpsilonZeroBringsTheAcneIntoThePictureAndTheNumbers) {
   ASSERT_EQ(window->figuresPane()->figureCount(), 1);
   auto* epsilon = qobject_cast<QDoubleSpinBox*>(window->parameterPanel()->editor("ray-epsilon"));
   ASSERT_NE(epsilon, nullptr) << "ray-epsilon is offered as a number field";
-  EXPECT_LT(valueOf(*window, "acne.step"), 1e-3);
+  EXPECT_LT(test::stepValue(*window, "acne.step"), 1e-3);
   const QImage picture = window->figuresPane()->grab().toImage();
 
   test::typeInto(epsilon, "0");
   EXPECT_TRUE(window->parameterPanel()->lastRefusal().isEmpty())
       << window->parameterPanel()->lastRefusal().toStdString();
   EXPECT_DOUBLE_EQ(window->parameterPanel()->parameters().rayEpsilon, 0.0);
-  EXPECT_DOUBLE_EQ(valueOf(*window, "epsilon"), 0.0);
-  EXPECT_GT(valueOf(*window, "acne.step"), 0.2) << "epsilon 0: the lit points shadow themselves";
+  EXPECT_DOUBLE_EQ(test::stepValue(*window, "epsilon"), 0.0);
+  EXPECT_GT(test::stepValue(*window, "acne.step"), 0.2) << "epsilon 0: the lit points shadow themselves";
   EXPECT_NE(window->figuresPane()->grab().toImage(), picture) << "the figure was not redrawn";
 
   test::typeInto(epsilon, "0.5");
-  EXPECT_LT(valueOf(*window, "acne.step"), 1e-3);
+  EXPECT_LT(test::stepValue(*window, "acne.step"), 1e-3);
   EXPECT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
 }
 
@@ -66,13 +60,13 @@ TEST(RayTraceControls, TheRayTreeIsDrawnInThe3DViewAndFollowsThePixel) {
   ASSERT_GE(step, 0);
   ASSERT_TRUE(window->openLesson("ray-tracing", step)) << window->lastError().toStdString();
   const int rays = window->primaryView()->raySegmentCount();
-  EXPECT_EQ(rays, static_cast<int>(valueOf(*window, "tree.rays")));
+  EXPECT_EQ(rays, static_cast<int>(test::stepValue(*window, "tree.rays")));
   EXPECT_GT(rays, 2) << "the pixel sees the mirror: a reflected ray and its shadow rays";
   const QImage view = window->primaryView()->grab().toImage();
   auto* depth = qobject_cast<QSpinBox*>(window->parameterPanel()->editor("ray-depth"));
   ASSERT_NE(depth, nullptr);
   test::typeInto(depth, "0");
-  EXPECT_EQ(valueOf(*window, "tree.reflection"), 0);
+  EXPECT_EQ(test::stepValue(*window, "tree.reflection"), 0);
   EXPECT_LT(window->primaryView()->raySegmentCount(), rays);
   EXPECT_NE(window->primaryView()->grab().toImage(), view) << "the 3D view did not redraw the tree";
   EXPECT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
