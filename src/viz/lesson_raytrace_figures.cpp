@@ -35,7 +35,7 @@ std::string renderRayTraceView(lesson::View view, const lesson::Step& step, cons
       o.caption = "Pixel (" + std::to_string(d.pixelX) + ", " + std::to_string(d.pixelY) +
                   "): " + std::to_string(n.total()) + " rays, 1 primary (blue), " +
                   std::to_string(n.reflection) + " reflected (purple), " + std::to_string(n.shadow) +
-                  " shadow (orange; grey: blocked)";
+                  " shadow (orange; black: blocked)";
       writeRayTreeFigure(r.mesh, rayTreeCamera(r.mesh, r.camera), d.tree, o, path);
       return "The ray tree of one pixel in the scene: the primary ray from the eye, a shadow ray per light "
              "sample from every surface it reaches, and the mirror rays, up to depth " +

@@ -18,7 +18,7 @@ std::vector<RaySegments> rayTreeSegments(const RayTree& tree) {
   std::vector<RaySegments> kinds{{"primary", {0.0, 0.447, 0.698}, 3, {}},
                                  {"reflection", {0.8, 0.475, 0.655}, 3, {}},
                                  {"shadow: reaches the light", {0.902, 0.624, 0.0}, 1.5, {}},
-                                 {"shadow: blocked", {0.35, 0.35, 0.35}, 1.5, {}}};
+                                 {"shadow: blocked", {0.0, 0.0, 0.0}, 1.5, {}}};
   for (const RayNode& n : tree.nodes) {
     const std::size_t k = n.kind == RayKind::Primary      ? 0
                           : n.kind == RayKind::Reflection ? 1
