@@ -341,6 +341,9 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
                                                   : r.solverName.empty() ? r.title
                                                                          : r.solverName));
   if (stepResult && !stepResult->highlighted.empty()) primaryView_->setHighlighted(stepResult->highlighted);
+  primaryView_->setRaySegments(stepResult && stepResult->raytrace
+                                   ? viz::rayTreeSegments(stepResult->raytrace->tree)
+                                   : std::vector<viz::RaySegments>{});
   if (compare_ && r.compared) {
     secondaryView_->setMaterialView(r.compared->materials);
     secondaryView_->setScene(r.compared->mesh.get(), r.compared->B, r.camera, false);

@@ -25,6 +25,7 @@
 #include "app/stand_in_actor.h"
 #include "viz/element_polydata.h"
 #include "viz/mesh_edges.h"
+#include "viz/vtk_geometry.h"
 #include "viz/vtk_render.h"
 #include "viz/vtk_views.h"
 
@@ -277,6 +278,18 @@ void SceneView::setHighlighted(const std::vector<int>& elements) {
   highlighted_ = elements;
   rebuildHighlight();
   requestRender();
+}
+
+void SceneView::setRaySegments(const std::vector<viz::RaySegments>& segments) {
+  for (const auto& actor : rayActors_) renderer()->RemoveActor(actor);
+  rayActors_.clear();
+  raySegments_ = 0;
+  for (const viz::RaySegments& s : segments) {
+    rayActors_.push_back(viz::linesActor(s.points, s.colour, s.width * devicePixelRatioF()));
+    renderer()->AddActor(rayActors_.back());
+    raySegments_ += static_cast<int>(s.points.size() / 2);
+  }
+  repaint3d();
 }
 
 void SceneView::rebuildHighlight() {

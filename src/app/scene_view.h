@@ -10,6 +10,7 @@
 
 #include "app/vtk_widget.h"
 #include "core/scene.h"
+#include "viz/ray_tree_view.h"
 #include "viz/scene_view.h"
 
 class QTimer;
@@ -63,6 +64,9 @@ class SceneView : public VtkWidget {
   QString caption() const;
   bool showsColourBar() const;
   void setHighlighted(const std::vector<int>& elements);
+  // Rays drawn in the scene (a raytrace step's ray tree); empty: none.
+  void setRaySegments(const std::vector<viz::RaySegments>& segments);
+  int raySegmentCount() const { return raySegments_; }
   const std::vector<int>& highlighted() const { return highlighted_; }
   // Copies the other view's camera (compare mode).
   void syncCameraFrom(const SceneView& other);
@@ -137,6 +141,8 @@ class SceneView : public VtkWidget {
   std::vector<int> highlighted_;
   bool showEdges_ = false;
   vtkSmartPointer<viz::MeshEdgeLines> edges_;  // while edges are shown
+  std::vector<vtkSmartPointer<vtkActor>> rayActors_;
+  int raySegments_ = 0;
 };
 
 }  // namespace rt::app

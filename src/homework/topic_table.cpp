@@ -59,6 +59,9 @@ const std::vector<Topic>& topicTable() {
        "a small tilted patch lit by a point source: its solid angle, the intensity, the irradiance and the "
        "power received",
        "measuring-light", generateIrradiance},
+      {"ray-tree", "Counting the rays of a ray tracer",
+       "the rays of a full ray tree, its shadow rays, the rays per pixel and the image's rays and time",
+       "ray-tracing", generateRayTree},
   };
   return table;
 }

@@ -22,5 +22,6 @@ std::optional<Exercise> generateToneMapping(Draw& draw);
 std::optional<Exercise> generateSubdivision(Draw& draw);
 std::optional<Exercise> generateIrradiance(Draw& draw);
 std::optional<Exercise> generateStochasticJacobi(Draw& draw);
+std::optional<Exercise> generateRayTree(Draw& draw);
 
 }  // namespace rt::homework

@@ -8,7 +8,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 25> kViews{{
+constexpr std::array<std::pair<View, const char*>, 31> kViews{{
     {View::Scene, "scene"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
@@ -34,6 +34,12 @@ constexpr std::array<std::pair<View, const char*>, 25> kViews{{
     {View::CosineLaw, "cosine-law"},
     {View::InverseSquare, "inverse-square"},
     {View::Hits, "hits"},
+    {View::RayTree, "ray-tree"},
+    {View::Shadows, "shadows"},
+    {View::Epsilon, "epsilon"},
+    {View::RayCost, "ray-cost"},
+    {View::Whitted, "whitted"},
+    {View::PathBounces, "path-bounces"},
 }};
 
 }  // namespace
@@ -110,6 +116,14 @@ const std::vector<StageInfo>& stageTable() {
        "irradiance of a point source and of a square of the same power against distance (no scene: the "
        "stage builds its own)",
        {V::Scene, V::SolidAngle, V::CosineLaw, V::InverseSquare}},
+      {Stage::RayTrace,
+       "raytrace",
+       "B with `solver`; Whitted images of `image-size` (`ray-depth`, `shadow-rays`, `ray-epsilon`, "
+       "`light-size`, `mirrors`) with their rays counted by kind and timed, against the cost formula; hard "
+       "against soft shadows; epsilon 0, the step's and too large, with the acne and leaks counted; the ray "
+       "tree of pixel (`pixel-x`, `pixel-y`); path-traced images (`paths`) with 0, 1, 2 and any number of "
+       "bounces",
+       {V::Scene, V::RayTree, V::Shadows, V::Epsilon, V::RayCost, V::Whitted, V::PathBounces}},
   };
   return table;
 }

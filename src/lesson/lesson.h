@@ -34,6 +34,7 @@ enum class Stage {
   PathTrace,    // the radiosity image against a path-traced one of the same equation, and the two-pass image
   Scaling,      // the dense matrix's memory and time against n, clustering's links, local lines' noise
   Radiometry,   // a patch seen from a point: solid angle, the cosine law, point against area source
+  RayTrace,  // Whitted ray tracing: one pixel's ray tree, shadows, the epsilon, the cost, against radiosity
 };
 
 // The figures a step can ask for; the names match the viz layer's views.
@@ -63,6 +64,12 @@ enum class View {
   CosineLaw,      // irradiance on the patch against its tilt
   InverseSquare,  // irradiance against distance from a point source and from a square of the same power
   Hits,           // rays stage: the local lines' hit fractions per surface with their standard errors, and F
+  RayTree,        // raytrace stage: one pixel's ray tree in the scene
+  Shadows,        // one shadow ray per light (hard) against many over its area (soft)
+  Epsilon,        // the self-intersection epsilon: 0, the step's, too large
+  RayCost,        // rays per pixel against depth: the cost formula and the counted rays
+  Whitted,        // the Whitted picture beside the radiosity solution
+  PathBounces,    // path-traced pictures with 0, 1, 2 and any number of diffuse bounces
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.
@@ -146,6 +153,13 @@ struct StepParameters {
   double patchDistance = 1.0;  // from the point to the patch's centre
   double patchTilt = 0.0;      // between the patch's normal and the line to the point
   double patchSize = 0.5;      // the side of the square patch (and of the square source)
+  // raytrace stage: the Whitted tracer's settings (core/raytrace/whitted.h) and the pixel whose tree is drawn
+  int rayDepth = 3;              // mirror reflections followed at most
+  int shadowRays = 16;           // per light per hit (1: hard shadows)
+  double rayEpsilon = 0.1;       // self-intersection offset, in the scene's units
+  double lightSize = 1.0;        // the lights scaled about their centres, power kept
+  int pixelX = 64, pixelY = 64;  // the pixel whose ray tree is drawn
+  std::string mirrors;           // surfaces that reflect as mirrors, comma-separated
 };
 
 struct Step {

@@ -33,17 +33,17 @@ double logLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
   return n >= 2 && d > 0 ? (n * sxy - sx * sy) / d : 0.0;
 }
 
+double imageMean(const RgbImage& image) {
+  double sum = 0;
+  for (const Rgb& p : image.pixels) sum += p.mean();
+  return image.pixels.empty() ? 0.0 : sum / static_cast<double>(image.pixels.size());
+}
+
 namespace detail {
 namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-double meanOf(const RgbImage& image) {
-  double sum = 0;
-  for (const Rgb& p : image.pixels) sum += p.mean();
-  return image.pixels.empty() ? 0.0 : sum / static_cast<double>(image.pixels.size());
 }
 
 double rmsOf(const RgbImage& image) {
@@ -104,7 +104,7 @@ void computePathTrace(StageContext& c) {
   traceOptions.seed = seed;
   pictures->pathTraced = tracer.render(r.camera, size, size, traceOptions);
   const double traceSeconds = secondsSince(start);
-  pictures->mean = meanOf(pictures->pathTraced.B);
+  pictures->mean = imageMean(pictures->pathTraced.B);
   const double mean = pictures->mean > 0 ? pictures->mean : 1.0;
   checkCancelled(c.progress);
 

@@ -47,9 +47,9 @@ std::vector<StepKey> makeTable() {
   const std::vector<Stage> computeF{Stage::FormFactors, Stage::Hemicube, Stage::Nusselt,   Stage::Rays,
                                     Stage::Exact,       Stage::Matrix,   Stage::Solve,     Stage::Compare,
                                     Stage::Bounces,     Stage::Local,    Stage::Benchmark, Stage::PathTrace,
-                                    Stage::Scaling};
-  const std::vector<Stage> solving{Stage::Solve, Stage::Compare,   Stage::Matrix, Stage::Local,
-                                   Stage::Exact, Stage::PathTrace, Stage::Scaling};
+                                    Stage::Scaling,     Stage::RayTrace};
+  const std::vector<Stage> solving{Stage::Solve, Stage::Compare,   Stage::Matrix,  Stage::Local,
+                                   Stage::Exact, Stage::PathTrace, Stage::Scaling, Stage::RayTrace};
   const std::vector<Stage> seen{Stage::FormFactors, Stage::Hemicube, Stage::Nusselt, Stage::Rays,
                                 Stage::Exact};
   std::vector<StepKey> t;
@@ -288,11 +288,12 @@ std::vector<StepKey> makeTable() {
        .max = 1000000,
        .defaultText = "256",
        .label = "Paths per pixel",
-       .tooltip = "Pathtrace stage: paths traced per pixel of the reference image. Its noise falls like "
-                  "1/sqrt(paths); the noise chart measures it at 1/64, 1/16 and 1/4 of them.",
+       .tooltip =
+           "Pathtrace and raytrace stages: paths traced per pixel of the path-traced images. Their "
+           "noise falls like 1/sqrt(paths); the noise chart measures it at 1/64, 1/16 and 1/4 of them.",
        .control = true,
        .step = 64,
-       .stages = {Stage::PathTrace},
+       .stages = {Stage::PathTrace, Stage::RayTrace},
        .slot = &P::paths});
   add({.name = "image-size",
        .type = KeyType::Int,
@@ -300,11 +301,10 @@ std::vector<StepKey> makeTable() {
        .max = 2048,
        .defaultText = "128",
        .label = "Image size (pixels)",
-       .tooltip =
-           "Pathtrace stage: pixels along each side of the path-traced, radiosity and two-pass images.",
+       .tooltip = "Pathtrace and raytrace stages: pixels along each side of the traced and radiosity images.",
        .control = true,
        .step = 16,
-       .stages = {Stage::PathTrace},
+       .stages = {Stage::PathTrace, Stage::RayTrace},
        .slot = &P::imageSize});
   add({.name = "gather-rays",
        .type = KeyType::Int,
@@ -370,6 +370,88 @@ std::vector<StepKey> makeTable() {
        .step = 0.05,
        .stages = {Stage::Radiometry},
        .slot = &P::patchSize});
+  add({.name = "ray-depth",
+       .type = KeyType::Int,
+       .min = 0,
+       .max = 12,
+       .defaultText = "3",
+       .label = "Ray depth",
+       .tooltip = "Raytrace stage: the mirror reflections a ray tree follows at most (0: primary and shadow "
+                  "rays only).",
+       .control = true,
+       .stages = {Stage::RayTrace},
+       .slot = &P::rayDepth});
+  add({.name = "shadow-rays",
+       .type = KeyType::Int,
+       .min = 1,
+       .max = 1024,
+       .defaultText = "16",
+       .label = "Shadow rays",
+       .tooltip = "Raytrace stage: shadow rays from each surface point to each light. One goes to the "
+                  "light's centre, a point light with hard shadows; more sample the light's area and soften "
+                  "the shadows' edges.",
+       .control = true,
+       .step = 4,
+       .stages = {Stage::RayTrace},
+       .slot = &P::shadowRays});
+  add({.name = "ray-epsilon",
+       .type = KeyType::Double,
+       .min = 0,
+       .max = 1e6,
+       .defaultText = "0.1",
+       .label = "Ray epsilon",
+       .tooltip = "Raytrace stage: secondary rays ignore hits closer than this to their start, in the "
+                  "scene's units (the Cornell box's are millimetres). 0 lets a ray find the surface it "
+                  "leaves (shadow acne); too large lets it skip a nearby blocker (light leaks).",
+       .control = true,
+       .decimals = 3,
+       .step = 0.1,
+       .stages = {Stage::RayTrace},
+       .slot = &P::rayEpsilon});
+  add({.name = "light-size",
+       .type = KeyType::Double,
+       .min = 0.1,
+       .max = 4,
+       .defaultText = "1",
+       .label = "Light size",
+       .tooltip = "Raytrace stage: every light scaled about its centre by this factor for the shadow rays, "
+                  "its power kept: a larger light casts a wider penumbra.",
+       .control = true,
+       .decimals = 2,
+       .step = 0.25,
+       .stages = {Stage::RayTrace},
+       .slot = &P::lightSize});
+  add({.name = "pixel-x",
+       .type = KeyType::Int,
+       .min = 0,
+       .max = 2047,
+       .defaultText = "64",
+       .label = "Traced pixel x",
+       .tooltip = "Raytrace stage: the column (from the left, below image-size) of the pixel whose ray tree "
+                  "is drawn.",
+       .control = true,
+       .step = 4,
+       .stages = {Stage::RayTrace},
+       .slot = &P::pixelX});
+  add({.name = "pixel-y",
+       .type = KeyType::Int,
+       .min = 0,
+       .max = 2047,
+       .defaultText = "64",
+       .label = "Traced pixel y",
+       .tooltip = "Raytrace stage: the row (from the top, below image-size) of the pixel whose ray tree is "
+                  "drawn.",
+       .control = true,
+       .step = 4,
+       .stages = {Stage::RayTrace},
+       .slot = &P::pixelY});
+  add({.name = "mirrors",
+       .type = KeyType::Text,
+       .label = "Mirrors",
+       .tooltip = "Raytrace stage: the surfaces (comma-separated names) that reflect as mirrors; the others "
+                  "are diffuse.",
+       .stages = {Stage::RayTrace},
+       .slot = &P::mirrors});
   add({.name = "light-scale",
        .type = KeyType::Double,
        .min = 0,

@@ -46,8 +46,13 @@ void quickCaps(StepParameters& p) {
   for (int& s : p.sweep) s = std::min(s, 64);
   // Divided rather than capped, so that a reader's change still changes a quick run's pictures.
   p.paths = std::max(4, p.paths / 4);
+  const int fullSize = std::max(1, p.imageSize);
   p.imageSize = std::max(16, p.imageSize / 4);
+  // The traced pixel keeps its place in the smaller image.
+  p.pixelX = p.pixelX * p.imageSize / fullSize;
+  p.pixelY = p.pixelY * p.imageSize / fullSize;
   p.gatherRays = std::max(4, p.gatherRays / 4);
+  p.shadowRays = std::max(1, p.shadowRays / 4);
   if (p.maxEdge) p.maxEdge = *p.maxEdge * 2.0;
 }
 
@@ -198,6 +203,9 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
       break;
     case Stage::Scaling:
       detail::computeScaling(c);
+      break;
+    case Stage::RayTrace:
+      detail::computeRayTrace(c);
       break;
   }
   if (result.B.rows() == static_cast<Eigen::Index>(result.mesh.size()))

@@ -35,4 +35,7 @@ struct TracedPictures {
 // two).
 double logLogSlope(const std::vector<double>& x, const std::vector<double>& y);
 
+// Mean over pixels and channels of an image (0 for an empty one).
+double imageMean(const RgbImage& image);
+
 }  // namespace rt::lesson

@@ -9,10 +9,9 @@
 #include "viz/image_panels.h"
 
 namespace rt::viz::detail {
-namespace {
 
-ImagePanelsOptions pictureOptions(const lesson::Step& step, const StepFigureSettings& s,
-                                  const std::string& title) {
+ImagePanelsOptions stepPictureOptions(const lesson::Step& step, const StepFigureSettings& s,
+                                      const std::string& title) {
   ImagePanelsOptions o;
   o.size = {s.width, s.height, 96.0};
   o.title = title;
@@ -21,8 +20,6 @@ ImagePanelsOptions pictureOptions(const lesson::Step& step, const StepFigureSett
   o.srgbGamma = step.parameters.gamma;
   return o;
 }
-
-}  // namespace
 
 std::string renderTracedView(lesson::View view, const lesson::Step& step, const lesson::StepResult& r,
                              const StepFigureSettings& s, const std::string& path) {
@@ -38,13 +35,13 @@ std::string renderTracedView(lesson::View view, const lesson::Step& step, const 
       // The path-traced image sets the one exposure, so that equal light looks equal in both.
       writeImagePanelsFigure({{"Path traced (" + paths + ")", t.pathTraced.B},
                               {"Radiosity (" + std::to_string(r.mesh.size()) + " elements)", t.radiosity}},
-                             pictureOptions(step, s, "One equation, two solutions"), path);
+                             stepPictureOptions(step, s, "One equation, two solutions"), path);
       return "The path tracer's image (Monte Carlo, no mesh) beside the radiosity solution's flat elements, "
              "from the same camera at one exposure";
     case lesson::View::TwoPass:
       writeImagePanelsFigure({{"Two-pass (" + ran("gather-rays") + " gather rays)", t.twoPass},
                               {"Path traced (" + paths + ")", t.pathTraced.B}},
-                             pictureOptions(step, s, "The radiosity solution read through a second pass"),
+                             stepPictureOptions(step, s, "The radiosity solution read through a second pass"),
                              path);
       return "The two-pass image: direct light computed at each pixel's point, one bounce gathered from the "
              "radiosity solution; beside it the path-traced reference";

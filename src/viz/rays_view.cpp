@@ -12,6 +12,7 @@
 
 #include "core/formfactor/ray_scene.h"
 #include "core/formfactor/sampling.h"
+#include "viz/faded_scene.h"
 #include "viz/scene_view.h"
 #include "viz/vtk_geometry.h"
 #include "viz/vtk_render.h"
@@ -55,29 +56,6 @@ RaySample sampleRays(const Mesh& mesh, int from, int to, int count, std::uint64_
   return sample;
 }
 
-namespace {
-
-// The scene by reflectance, faint, so that the rays inside stay visible.
-vtkSmartPointer<vtkRenderer> fadedScene(const Mesh& mesh, const Camera& camera,
-                                        const RaysViewOptions& options, vtkRenderWindow* window) {
-  SceneViewOptions sceneOptions;
-  sceneOptions.colouring = SceneColouring::Reflectance;
-  sceneOptions.image.showEdges = true;
-  sceneOptions.dpi = options.size.dpi;
-  const ScenePaint paint = paintScene(mesh, {}, sceneOptions);
-  const double full[4] = {0, 0, 1, 1};
-  vtkSmartPointer<vtkRenderer> renderer =
-      makeSceneRenderer(mesh, camera, paint, sceneOptions, options.size.height, full);
-  vtkActorCollection* actors = renderer->GetActors();
-  actors->InitTraversal();
-  while (vtkActor* actor = actors->GetNextActor()) actor->GetProperty()->SetOpacity(0.3);
-  window->AddRenderer(renderer);
-  enableDepthPeeling(window, renderer);  // the faint room around the rays
-  return renderer;
-}
-
-}  // namespace
-
 void writeLocalLinesFigure(const Mesh& mesh, const Camera& camera, int from, int target,
                            const std::vector<LocalLine>& lines, long total, const RaysViewOptions& options,
                            const std::string& path) {
@@ -87,7 +65,7 @@ void writeLocalLinesFigure(const Mesh& mesh, const Camera& camera, int from, int
     throw std::invalid_argument("local lines need an element in 0.." + std::to_string(n - 1));
   const double scale = options.size.fontScale();
   auto window = makeOffscreenWindow(options.size.width, options.size.height);
-  vtkSmartPointer<vtkRenderer> renderer = fadedScene(mesh, camera, options, window);
+  vtkSmartPointer<vtkRenderer> renderer = addFadedScene(mesh, camera, options.size, window);
   const Colour sky{0.337, 0.706, 0.914}, orange{0.902, 0.624, 0.0}, green{0.0, 0.62, 0.451};
   renderer->AddActor(polygonActor(mesh.polygon(from), sky, 1.0));
   if (target >= 0 && target < n && target != from)
@@ -134,7 +112,7 @@ void writeRaysFigure(const Mesh& mesh, const Camera& camera, const RaySample& sa
   figureFormatOf(path);
   const double scale = options.size.fontScale();
   auto window = makeOffscreenWindow(options.size.width, options.size.height);
-  vtkSmartPointer<vtkRenderer> renderer = fadedScene(mesh, camera, options, window);
+  vtkSmartPointer<vtkRenderer> renderer = addFadedScene(mesh, camera, options.size, window);
 
   const Colour sky{0.337, 0.706, 0.914}, orange{0.902, 0.624, 0.0}, green{0.0, 0.62, 0.451},
       vermillion{0.835, 0.369, 0.0};

@@ -27,6 +27,8 @@ std::unique_ptr<MainWindow> makeWindow(bool threaded = false, bool quick = true)
 // Enter, then wait out the panel's pause so that the change is applied (computations run on the test's
 // thread).
 void typeInto(QWidget* editor, const QString& text);
+// A named number of the step the window shows (lesson::StepResult::value); -1 when it has none.
+double stepValue(const MainWindow& window, const std::string& name);
 // Waits until the parameter panel's pause has passed and its change was applied.
 void waitForApply();
 

@@ -15,6 +15,7 @@
 #include "core/formfactor/sampling.h"
 #include "core/io/scene_loader.h"
 #include "core/radiometry.h"
+#include "core/raytrace/ray_cost.h"
 #include "core/refine/refine.h"
 #include "core/solvers/bounces_solver.h"
 #include "core/solvers/direct_solver.h"
@@ -344,6 +345,24 @@ TEST(HomeworkIndependent, IrradianceAgreesWithTheExactSolidAngle) {
     EXPECT_AGREES(e, "I", intensity, 0.01);
     EXPECT_AGREES(e, "P", intensity * omega, 0.6);
     EXPECT_AGREES(e, "H", intensity * omega / (side * side), 0.6);
+  });
+}
+
+TEST(HomeworkIndependent, RayTreeAgreesWithTheCostFormula) {
+  forEachVariant("ray-tree", [](const Exercise& e) {
+    RayCostInputs in;
+    in.pixels = static_cast<std::int64_t>(e.given.at("width") * e.given.at("height"));
+    in.pixelSamples = static_cast<int>(e.given.at("samples"));
+    in.lights = static_cast<int>(e.given.at("lights"));
+    in.shadowRays = static_cast<int>(e.given.at("shadow"));
+    in.depth = static_cast<int>(e.given.at("depth"));
+    in.branching = static_cast<int>(e.given.at("branching"));
+    const RayCost cost = whittedRayCost(in);
+    EXPECT_EQ(answer(e, "nodes"), cost.treeNodes);
+    EXPECT_EQ(answer(e, "shadow"), cost.treeNodes * in.lights * in.shadowRays);
+    EXPECT_EQ(answer(e, "perPixel"), cost.perPixel);
+    EXPECT_EQ(answer(e, "total"), cost.total);
+    EXPECT_AGREES(e, "seconds", cost.total / (e.given.at("rate") * 1e6), 0.01);
   });
 }
 

@@ -7,6 +7,7 @@
 
 #include "lesson/lesson.h"
 #include "lesson/lesson_loader.h"
+#include "lesson/step_result.h"
 
 namespace rt::lesson::test {
 
@@ -22,5 +23,18 @@ void ensureAnalyticMethod();
 Lesson oneStepLesson(const std::string& text, int order = 4);
 // The message of the InputError that `f` throws, or "" when it throws none.
 std::string inputErrorOf(const std::function<void()>& f);
+
+// A shipped lesson's step run as the book runs it; r["name"] is one of its numbers (a test failure and NaN
+// when the step has no such number).
+struct RanStep {
+  Lesson lesson;
+  Step step;
+  StepResult result;
+  double operator[](const std::string& name) const;
+};
+// Runs the step of lesson `id` that draws `figure`, with `change` applied to its parameters first, and checks
+// that its text's placeholders resolve.
+RanStep runStepWithFigure(const std::string& id, const std::string& figure,
+                          const std::function<void(StepParameters&)>& change = {});
 
 }  // namespace rt::lesson::test

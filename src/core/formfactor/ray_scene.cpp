@@ -127,6 +127,22 @@ RayScene::~RayScene() {
 }
 
 bool RayScene::visible(const Vec3& from, const Vec3& to, int ignoreA, int ignoreB) const {
+  return unoccluded(from, to, impl_->epsilon, ignoreA, ignoreB);
+}
+
+bool RayScene::visibleAfter(const Vec3& from, const Vec3& to, double tnear, int ignoreTo) const {
+  return unoccluded(from, to, static_cast<float>(std::max(tnear, 0.0)), -1, ignoreTo);
+}
+
+RayHit RayScene::firstHit(const Vec3& origin, const Vec3& direction, int ignore) const {
+  return nearest(origin, direction, impl_->epsilon, ignore);
+}
+
+RayHit RayScene::firstHitAfter(const Vec3& origin, const Vec3& direction, double tnear) const {
+  return nearest(origin, direction, static_cast<float>(std::max(tnear, 0.0)), -1);
+}
+
+bool RayScene::unoccluded(const Vec3& from, const Vec3& to, float tnear, int ignoreA, int ignoreB) const {
   const Vec3 d = to - from;
   const double length = d.norm();
   if (length == 0) return true;
@@ -146,7 +162,7 @@ bool RayScene::visible(const Vec3& from, const Vec3& to, int ignoreA, int ignore
   ray.dir_z = static_cast<float>(d.z() / length);
   // Both ends' own elements are filtered out; the epsilons only keep float rounding at the end points from
   // registering grazing hits on their neighbours.
-  ray.tnear = impl_->epsilon;
+  ray.tnear = tnear;
   ray.tfar = static_cast<float>(length) - impl_->epsilon;
   ray.mask = 0xFFFFFFFFu;
   ray.flags = 0;
@@ -155,7 +171,7 @@ bool RayScene::visible(const Vec3& from, const Vec3& to, int ignoreA, int ignore
   return ray.tfar >= 0;  // Embree sets tfar to -inf on a hit
 }
 
-RayHit RayScene::firstHit(const Vec3& origin, const Vec3& direction, int ignore) const {
+RayHit RayScene::nearest(const Vec3& origin, const Vec3& direction, float tnear, int ignore) const {
   IgnoringContext context;
   rtcInitIntersectContext(&context.base);
   context.primitiveElement = &impl_->primitiveElement;
@@ -184,7 +200,7 @@ RayHit RayScene::firstHit(const Vec3& origin, const Vec3& direction, int ignore)
     hit.frontSide = impl_->normals[static_cast<std::size_t>(hit.element)].dot(direction) < 0;
     return hit;
   };
-  const RayHit hit = intersect(impl_->epsilon, std::numeric_limits<float>::infinity());
+  const RayHit hit = intersect(tnear, std::numeric_limits<float>::infinity());
   if (hit.element < 0 || hit.frontSide) return hit;
   // A two-sided thin surface is often two coincident polygons back to back (as OBJ exporters write a
   // two-sided plane): both lie at the same distance, and which one Embree reports is arbitrary. The light
@@ -193,7 +209,7 @@ RayHit RayScene::firstHit(const Vec3& origin, const Vec3& direction, int ignore)
   const float t = static_cast<float>(hit.distance);
   const float window = impl_->epsilon + 8 * std::numeric_limits<float>::epsilon() * t;
   context.frontOnlyNormals = &impl_->normals;
-  const RayHit front = intersect(std::max(impl_->epsilon, t - window), t + window);
+  const RayHit front = intersect(std::max(tnear, t - window), t + window);
   return front.element >= 0 ? front : hit;
 }
 

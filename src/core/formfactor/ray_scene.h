@@ -28,9 +28,17 @@ class RayScene {
   // First element hit along origin + t direction (direction unit), skipping element `ignore` and the elements
   // in its plane (-1: skip none). Thread-safe.
   RayHit firstHit(const Vec3& origin, const Vec3& direction, int ignore) const;
+  // A classic ray tracer's queries: nothing is skipped at the ray's start, and hits count only from `tnear`
+  // on, the tracer's self-intersection epsilon (0 lets a ray hit the surface it leaves, at a distance of
+  // rounding error). visibleAfter skips the far end's element `ignoreTo` (and its plane). Thread-safe.
+  bool visibleAfter(const Vec3& from, const Vec3& to, double tnear, int ignoreTo) const;
+  RayHit firstHitAfter(const Vec3& origin, const Vec3& direction, double tnear) const;
   double sceneSize() const { return size_; }
 
  private:
+  bool unoccluded(const Vec3& from, const Vec3& to, float tnear, int ignoreA, int ignoreB) const;
+  RayHit nearest(const Vec3& origin, const Vec3& direction, float tnear, int ignore) const;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   double size_ = 1;

@@ -12,7 +12,7 @@ namespace rt {
 PathTracer::PathTracer(const Scene& scene) : tracing_(scene) {}
 
 Rgb PathTracer::irradiance(const Vec3& origin, const Vec3& normal, int element, PairRandom& random,
-                           const Vec2& light, const Vec2& bounce, int rouletteDepth,
+                           const Vec2& light, const Vec2& bounce, int rouletteDepth, int maxBounces,
                            std::uint64_t& rays) const {
   const Mesh& mesh = tracing_.mesh();
   const RayScene& scene = tracing_.rays();
@@ -58,6 +58,7 @@ Rgb PathTracer::irradiance(const Vec3& origin, const Vec3& normal, int element, 
       const double mis = bouncePdf * bouncePdf / (lightPdf * lightPdf + bouncePdf * bouncePdf);
       H += throughput * mesh.emission.row(row).transpose().array() * mis;
     }
+    if (maxBounces >= 0 && depth >= maxBounces) break;
     throughput *= mesh.reflectance.row(row).transpose().array();
     if (depth + 1 >= rouletteDepth) {
       // Continue with the probability of the largest channel's throughput, and divide by it: unbiased, and
@@ -99,7 +100,7 @@ std::vector<PointEstimate> PathTracer::estimate(const std::vector<SurfacePoint>&
         for (int k = 0; k < perBatch; ++k)
           sum += irradiance(origin, normal, element, random,
                             grid.sample(order[static_cast<std::size_t>(k)], random), grid.sample(k, random),
-                            options.rouletteDepth, rays);
+                            options.rouletteDepth, options.maxBounces, rays);
         mean.add(sum / perBatch);
       }
       PointEstimate& e = out[p];
@@ -152,10 +153,11 @@ TracedImage PathTracer::render(const Camera& camera, int width, int height,
           if (hit.element >= 0 && hit.frontSide) {
             const Vec3 at = camera.position + hit.distance * direction;
             const auto row = static_cast<Eigen::Index>(hit.element);
-            const Rgb H = irradiance(
-                at, mesh.elements[static_cast<std::size_t>(hit.element)].normal, hit.element, random,
-                grid.sample(lightOrder[static_cast<std::size_t>(k)], random),
-                grid.sample(bounceOrder[static_cast<std::size_t>(k)], random), options.rouletteDepth, rays);
+            const Rgb H =
+                irradiance(at, mesh.elements[static_cast<std::size_t>(hit.element)].normal, hit.element,
+                           random, grid.sample(lightOrder[static_cast<std::size_t>(k)], random),
+                           grid.sample(bounceOrder[static_cast<std::size_t>(k)], random),
+                           options.rouletteDepth, options.maxBounces, rays);
             B = mesh.emission.row(row).transpose().array() +
                 mesh.reflectance.row(row).transpose().array() * H;
           }

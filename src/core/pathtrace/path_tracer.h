@@ -21,6 +21,10 @@ struct PathTraceOptions {
   int batches = 32;        // independent batches of a point's paths (standard error from their spread)
   std::uint64_t seed = 1;  //
   int rouletteDepth = 3;   // bounces before Russian roulette may end a path
+  // Diffuse bounces between the first surface and the light that a path may take (-1: no limit). 0 is
+  // direct light only, what a Whitted ray tracer computes for a diffuse surface; each one more adds one
+  // more bounce of interreflection.
+  int maxBounces = -1;
 };
 
 // What a camera sees: per pixel the radiosity B leaving the first surface hit (0 for the back of a polygon or
@@ -49,7 +53,7 @@ class PathTracer {
   // One path's estimate of H at `origin` (on element `element`, -1 for none), its first light sample and
   // bounce direction drawn from the strata `light` and `bounce`.
   Rgb irradiance(const Vec3& origin, const Vec3& normal, int element, PairRandom& random, const Vec2& light,
-                 const Vec2& bounce, int rouletteDepth, std::uint64_t& rays) const;
+                 const Vec2& bounce, int rouletteDepth, int maxBounces, std::uint64_t& rays) const;
 
   TracingScene tracing_;
   mutable std::atomic<std::uint64_t> rays_{0};

@@ -1,0 +1,86 @@
+// A recursive (Whitted) ray tracer over the program's scenes: a primary ray per pixel sample, shadow rays
+// from every surface it reaches to every light, and a mirror ray from every mirror up to a depth. It shares
+// the path tracer's scene (core/pathtrace/tracing_scene.h: the Embree geometry, the emitters as area lights)
+// and measures what the path tracer does in the same units: the radiosity B leaving the surface each pixel
+// sees, here with direct light only (Whitted 1980, without the ambient term).
+//
+// Two of its settings are the lessons' subject. One shadow ray per light goes to the light's centre, a
+// point light: hard shadows; n go to a jittered grid on the light's area: soft ones (Cook, Porter and
+// Carpenter 1984). Secondary rays count hits only beyond `epsilon` along the ray, the classic remedy for a
+// ray finding the surface it leaves at a rounding-error distance: 0 gives shadow acne, too large a value lets
+// light through near contacts. The tracer counts its rays by kind, and can check each shadow ray against
+// the robust visibility test to count the acne and the leaks.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/io/rgb_image.h"
+#include "core/pathtrace/tracing_scene.h"
+#include "core/raytrace/ray_tree.h"
+
+namespace rt {
+
+struct WhittedOptions {
+  int depth = 3;          // mirror reflections followed at most
+  int shadowRays = 1;     // per light per hit: 1 = to the light's centre (hard), n = over its area (soft)
+  double epsilon = 0;     // secondary rays ignore hits closer than this (scene units)
+  double lightScale = 1;  // each light scaled about its centre, its power kept
+  int pixelSamples = 1;   // primary rays per pixel, jittered (antialiasing)
+  std::vector<int> mirrorSurfaces;  // surfaces (indices into the scene's) that reflect as mirrors
+  std::uint64_t seed = 1;
+  bool checkShadows = false;  // also test each shadow ray robustly: acne and leak counts
+};
+
+struct WhittedStats {
+  RayCounts rays;
+  // Shadow rays towards a light in front of the surface, with checkShadows: `lit` of them reach it by the
+  // robust test, `acne` of those the tracer thought blocked; `leaks` of the others it thought clear.
+  std::uint64_t lit = 0, blocked = 0, acne = 0, leaks = 0;
+  double acneFraction() const { return lit ? static_cast<double>(acne) / static_cast<double>(lit) : 0.0; }
+  double leakFraction() const {
+    return blocked ? static_cast<double>(leaks) / static_cast<double>(blocked) : 0.0;
+  }
+  WhittedStats& operator+=(const WhittedStats& o);
+};
+
+struct WhittedImage {
+  RgbImage B;
+  std::vector<int> element;  // per pixel, the element the centre's primary ray reaches (-1: none)
+  WhittedStats stats;
+};
+
+class WhittedTracer {
+ public:
+  // `tracing` must outlive the tracer.
+  WhittedTracer(const TracingScene& tracing, const WhittedOptions& options);
+
+  WhittedImage render(const Camera& camera, int width, int height) const;  // TBB parallel, deterministic
+  // The ray tree of the first sample of pixel (x, y), the ray through its centre.
+  RayTree trace(const Camera& camera, int width, int height, int x, int y) const;
+  // The direct irradiance H the shadow rays estimate at `point` on element `element` of the tracing mesh.
+  Rgb directIrradiance(const Vec3& point, int element, WhittedStats& stats) const;
+
+  int lights() const { return static_cast<int>(lights_.size()); }
+
+ private:
+  struct Light {
+    int element = -1;
+    Polygon polygon;  // scaled
+    Vec3 centre, normal;
+    double area = 0;
+    Rgb emission = Rgb::Zero();  // scaled so that emission * area stays the emitter's
+  };
+  struct Walk;  // one sample's random numbers, counters and (optionally) its tree
+
+  Rgb radiance(const Vec3& origin, const Vec3& direction, RayKind kind, int depth, int parent,
+               Walk& walk) const;
+  Rgb direct(const Vec3& point, int element, int parent, Walk& walk) const;
+
+  const TracingScene& tracing_;
+  WhittedOptions options_;
+  std::vector<Light> lights_;
+  std::vector<char> mirror_;  // per element of the tracing mesh
+};
+
+}  // namespace rt

@@ -1,0 +1,244 @@
+// The raytrace stage: the step's scene rendered by recursive (Whitted) ray tracing, beside the radiosity
+// solution of the same scene. The tracer (core/raytrace) counts the rays it casts by kind, and the stage
+// sets them against the cost formula over a range of depths; it renders the hard and soft shadows of one
+// and of `shadow-rays` shadow rays, the acne and leaks of an epsilon of 0, the step's and a too large one,
+// and records the ray tree of one pixel.
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <sstream>
+
+#include "core/pathtrace/image_compare.h"
+#include "core/pathtrace/path_tracer.h"
+#include "core/raytrace/ray_cost.h"
+#include "core/raytrace/whitted.h"
+#include "lesson/step_stages.h"
+#include "lesson/traced_pictures.h"
+
+namespace rt::lesson::detail {
+namespace {
+
+// The surfaces named in `mirrors`, as indices into the scene's surfaces.
+std::vector<int> mirrorSurfaces(const StageContext& c) {
+  std::vector<int> out;
+  std::istringstream list(c.parameters.mirrors);
+  std::string name;
+  while (std::getline(list, name, ',')) {
+    name.erase(0, name.find_first_not_of(" \t"));
+    name.erase(name.find_last_not_of(" \t") + 1);
+    if (name.empty()) continue;
+    const auto& surfaces = c.result.scene.surfaces;
+    const auto found =
+        std::find_if(surfaces.begin(), surfaces.end(), [&](const Surface& s) { return s.name == name; });
+    if (found == surfaces.end()) c.fail("mirrors", "the scene has no surface '" + name + "'");
+    out.push_back(static_cast<int>(found - surfaces.begin()));
+  }
+  return out;
+}
+
+// Means over the pixels whose centre sees `surface` (and, with a column range, lies in it), per channel. Only
+// pixels whose eight neighbours see the same surface count: a supersampled pixel on an edge mixes in its
+// neighbour (the light's, a hundred times brighter).
+Rgb surfaceMeanOf(const RgbImage& image, const std::vector<int>& elements, const Mesh& mesh,
+                  const Scene& scene, const std::string& surface, int fromColumn = 0,
+                  int toColumn = 1 << 30) {
+  const auto surfaceAt = [&](int x, int y) {
+    const int e = elements[static_cast<std::size_t>(y) * image.width + x];
+    if (e < 0) return -1;
+    return scene.patches[static_cast<std::size_t>(mesh.elements[static_cast<std::size_t>(e)].patch)].surface;
+  };
+  Rgb sum = Rgb::Zero();
+  int count = 0;
+  for (int y = 1; y + 1 < image.height; ++y)
+    for (int x = std::max(1, fromColumn); x < std::min(image.width - 1, toColumn); ++x) {
+      const int here = surfaceAt(x, y);
+      if (here < 0 || scene.surfaces[static_cast<std::size_t>(here)].name != surface) continue;
+      bool inside = true;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) inside = inside && surfaceAt(x + dx, y + dy) == here;
+      if (!inside) continue;
+      sum += image.at(x, y);
+      ++count;
+    }
+  return count ? Rgb(sum / count) : Rgb::Zero();
+}
+
+}  // namespace
+
+void computeRayTrace(StageContext& c) {
+  StepResult& r = c.result;
+  const StepParameters& p = c.parameters;
+  const int size = p.imageSize;
+  if (p.pixelX >= size)
+    c.fail("pixel-x", "the pixel lies outside the image (image-size " + std::to_string(size) + ")");
+  if (p.pixelY >= size)
+    c.fail("pixel-y", "the pixel lies outside the image (image-size " + std::to_string(size) + ")");
+  const std::vector<int> mirrors = mirrorSurfaces(c);
+
+  // The radiosity solution, as the solve stage computes it.
+  r.method = c.method();
+  r.F = c.formFactors(r.mesh, r.method, "method", r.formFactorStats);
+  addFormFactorValues(r, *r.F);
+  const RadiositySystem system = RadiositySystem::fromMesh(r.mesh, *r.F);
+  r.runs.push_back(runSolver(c, p.solver, system, r.B, p.solver, true));
+  if (c.progress.cancelled()) throw Cancelled();
+  c.progress.report(0.4, "ray tracing");
+
+  // The pictures only the step's views show are made only for them (the app runs a step at every change).
+  const auto wants = [&c](View view) {
+    return std::find(c.step.views.begin(), c.step.views.end(), view) != c.step.views.end();
+  };
+  auto data = std::make_shared<RayTraceData>();
+  RayTraceData& d = *data;
+  const TracingScene tracing(r.scene);
+  WhittedOptions options;
+  options.depth = p.rayDepth;
+  options.shadowRays = p.shadowRays;
+  options.epsilon = p.rayEpsilon;
+  options.lightScale = p.lightSize;
+  options.mirrorSurfaces = mirrors;
+  options.seed = p.seed.value_or(1);
+  options.checkShadows = true;
+  const auto start = std::chrono::steady_clock::now();
+  const WhittedTracer tracer(tracing, options);
+  const WhittedImage main = tracer.render(r.camera, size, size);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  d.whitted = main.B;
+  d.epsilon = p.rayEpsilon;
+  d.shadowRays = p.shadowRays;
+  d.depth = p.rayDepth;
+  d.lights = tracer.lights();
+  d.pixelX = p.pixelX;
+  d.pixelY = p.pixelY;
+  d.tree = tracer.trace(r.camera, size, size, p.pixelX, p.pixelY);
+
+  // One shadow ray per light: the hard shadows, and the epsilon's acne unblurred by the light's area.
+  WhittedOptions single = options;
+  single.shadowRays = 1;
+  if (wants(View::Shadows)) d.hard = WhittedTracer(tracing, single).render(r.camera, size, size).B;
+  // Too large: a fifth of the scene, the height of a block, which shadow rays near its base then skip whole.
+  d.largeEpsilon = 0.2 * tracing.rays().sceneSize();
+  WhittedStats zeroStats, stepStats, largeStats;
+  if (wants(View::Epsilon))
+    for (auto [epsilon, image, stats] :
+         {std::tuple{0.0, &d.epsilonZero, &zeroStats}, std::tuple{p.rayEpsilon, &d.epsilonStep, &stepStats},
+          std::tuple{d.largeEpsilon, &d.epsilonLarge, &largeStats}}) {
+      single.epsilon = epsilon;
+      WhittedImage traced = WhittedTracer(tracing, single).render(r.camera, size, size);
+      *image = std::move(traced.B);
+      *stats = traced.stats;
+    }
+  if (c.progress.cancelled()) throw Cancelled();
+
+  // Rays per pixel against the depth limit, counted on a small image (the count per pixel hardly depends on
+  // the image's size), against the full tree of the formula.
+  c.progress.report(0.7, "counting rays");
+  const int small = 32;
+  RayCostInputs in;
+  in.pixels = static_cast<std::int64_t>(size) * size;
+  in.lights = d.lights;
+  in.shadowRays = p.shadowRays;
+  in.depth = p.rayDepth;
+  const RayCost cost = whittedRayCost(in);
+  for (int depth = 0; wants(View::RayCost) && depth <= std::max(6, p.rayDepth); ++depth) {
+    WhittedOptions o = options;
+    o.depth = depth;
+    o.checkShadows = false;
+    const WhittedImage counted = WhittedTracer(tracing, o).render(r.camera, small, small);
+    RayCostInputs at = in;
+    at.depth = depth;
+    d.depths.push_back(depth);
+    d.formula.push_back(whittedRayCost(at).perPixel);
+    d.counted.push_back(static_cast<double>(counted.stats.rays.total()) / (small * small));
+  }
+
+  // The path tracer, one more bounce at a time: 0 is the direct light Whitted's diffuse surfaces show.
+  c.progress.report(0.8, "path tracing");
+  const PathTracer pathTracer(r.scene);
+  d.paths = p.paths;
+  for (const int bounces : {0, 1, 2, -1}) {
+    if (!wants(View::PathBounces)) break;
+    PathTraceOptions o;
+    o.samples = p.paths;
+    o.seed = options.seed;
+    o.maxBounces = bounces;
+    d.bounceLimits.push_back(bounces);
+    d.pathBounces.push_back(pathTracer.render(r.camera, size, size, o).B);
+    if (c.progress.cancelled()) throw Cancelled();
+  }
+
+  const RayScene rays(r.mesh);
+  d.radiosity = renderElements(r.mesh, r.B, rays, r.camera, size, size);
+
+  auto& v = r.values;
+  const double pixels = static_cast<double>(size) * size;
+  const RayCounts& n = main.stats.rays;
+  v["pixels"] = pixels;
+  v["image-size"] = size;
+  v["lights"] = d.lights;
+  v["shadow-rays"] = p.shadowRays;
+  v["ray-depth"] = p.rayDepth;
+  v["epsilon"] = p.rayEpsilon;
+  v["light-size"] = p.lightSize;
+  v["rays.primary"] = static_cast<double>(n.primary);
+  v["rays.shadow"] = static_cast<double>(n.shadow);
+  v["rays.reflection"] = static_cast<double>(n.reflection);
+  v["rays.total"] = static_cast<double>(n.total());
+  v["rays-per-pixel"] = static_cast<double>(n.total()) / pixels;
+  v["rays-per-pixel.formula"] = cost.perPixel;
+  v["rays.formula"] = cost.total;
+  v["tree-nodes.formula"] = cost.treeNodes;
+  v["seconds.whitted"] = seconds;
+  v["rays-per-second"] = seconds > 0 ? static_cast<double>(n.total()) / seconds : 0.0;
+  v["million-rays-per-second"] = v["rays-per-second"] / 1e6;
+  v["acne"] = main.stats.acneFraction();
+  v["leaks"] = main.stats.leakFraction();
+  if (wants(View::Epsilon)) {
+    v["acne.zero"] = zeroStats.acneFraction();
+    v["acne.step"] = stepStats.acneFraction();
+    v["leaks.step"] = stepStats.leakFraction();
+    v["acne.large"] = largeStats.acneFraction();
+    v["leaks.large"] = largeStats.leakFraction();
+    v["epsilon.large"] = d.largeEpsilon;
+  }
+  v["scene-size"] = tracing.rays().sceneSize();
+  const RayCounts t = d.tree.counts();
+  v["tree.rays"] = static_cast<double>(t.total());
+  v["tree.shadow"] = static_cast<double>(t.shadow);
+  v["tree.reflection"] = static_cast<double>(t.reflection);
+  int blocked = 0;
+  for (const RayNode& node : d.tree.nodes) blocked += node.kind == RayKind::Shadow && node.blocked;
+  v["tree.blocked"] = blocked;
+  v["pixel-x"] = p.pixelX;
+  v["pixel-y"] = p.pixelY;
+  v["mean.whitted"] = imageMean(d.whitted);
+  v["mean.radiosity"] = imageMean(d.radiosity);
+  // Diffuse interreflection, which Whitted's rays never follow: the ceiling, which the light (in its plane)
+  // does not reach directly, and the colour the red wall lends the white back wall's left third against
+  // its right third (the green wall's side): a ratio of red over green ratios, 1 without colour bleeding.
+  const Mesh& traced = tracing.mesh();
+  const RgbImage& whittedB = d.whitted;
+  v["ceiling.whitted"] = surfaceMeanOf(whittedB, main.element, traced, r.scene, "ceiling").mean();
+  v["ceiling.radiosity"] = surfaceMeanOf(d.radiosity, main.element, traced, r.scene, "ceiling").mean();
+  v["floor.whitted"] = surfaceMeanOf(whittedB, main.element, traced, r.scene, "floor").mean();
+  auto bleed = [&](const RgbImage& image) {
+    const Rgb left = surfaceMeanOf(image, main.element, traced, r.scene, "back_wall", 0, size / 3);
+    const Rgb right = surfaceMeanOf(image, main.element, traced, r.scene, "back_wall", size - size / 3);
+    return left(1) > 0 && right(1) > 0 && right(0) > 0 ? (left(0) / left(1)) / (right(0) / right(1)) : 0.0;
+  };
+  v["bleed.whitted"] = bleed(d.whitted);
+  v["bleed.radiosity"] = bleed(d.radiosity);
+  v["paths"] = p.paths;
+  const char* names[] = {"0", "1", "2", "all"};
+  for (std::size_t k = 0; k < d.pathBounces.size(); ++k) {
+    v[std::string("mean.path.") + names[k]] = imageMean(d.pathBounces[k]);
+    v[std::string("ceiling.path.") + names[k]] =
+        surfaceMeanOf(d.pathBounces[k], main.element, traced, r.scene, "ceiling").mean();
+    v[std::string("bleed.path.") + names[k]] = bleed(d.pathBounces[k]);
+    v[std::string("floor.path.") + names[k]] =
+        surfaceMeanOf(d.pathBounces[k], main.element, traced, r.scene, "floor").mean();
+  }
+  r.raytrace = std::move(data);
+}
+
+}  // namespace rt::lesson::detail

@@ -1,0 +1,73 @@
+// The lesson on ray tracing in the app: the self-intersection epsilon is a number field; typing 0 into it
+// brings the shadow acne into the picture and the count, and a proper value takes it away again. The ray
+// tree of the recursion step is drawn in the rotatable 3D view and follows the traced pixel.
+#include <gtest/gtest.h>
+
+#include <QDoubleSpinBox>
+#include <QSpinBox>
+#include <QTest>
+
+#include "app/figures_pane.h"
+#include "app/lesson_session.h"
+#include "app/parameter_panel.h"
+#include "app/scene_view.h"
+#include "app_test_support.h"
+#include "lesson/step_result.h"
+
+using namespace rt::app;
+
+namespace {
+
+int stepWithFigure(const MainWindow& window, const std::string& figure) {
+  const int lesson = window.library()->indexOf("ray-tracing");
+  if (lesson < 0) return -1;
+  for (const auto& s : window.library()->lessons()[static_cast<std::size_t>(lesson)].steps)
+    if (s.figure == figure) return s.index;
+  return -1;
+}
+
+}  // namespace
+
+TEST(RayTraceControls, EpsilonZeroBringsTheAcneIntoThePictureAndTheNumbers) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  const int step = stepWithFigure(*window, "epsilon");
+  ASSERT_GE(step, 0);
+  ASSERT_TRUE(window->openLesson("ray-tracing", step)) << window->lastError().toStdString();
+  ASSERT_EQ(window->figuresPane()->figureCount(), 1);
+  auto* epsilon = qobject_cast<QDoubleSpinBox*>(window->parameterPanel()->editor("ray-epsilon"));
+  ASSERT_NE(epsilon, nullptr) << "ray-epsilon is offered as a number field";
+  EXPECT_LT(test::stepValue(*window, "acne.step"), 1e-3);
+  const QImage picture = window->figuresPane()->grab().toImage();
+
+  test::typeInto(epsilon, "0");
+  EXPECT_TRUE(window->parameterPanel()->lastRefusal().isEmpty())
+      << window->parameterPanel()->lastRefusal().toStdString();
+  EXPECT_DOUBLE_EQ(window->parameterPanel()->parameters().rayEpsilon, 0.0);
+  EXPECT_DOUBLE_EQ(test::stepValue(*window, "epsilon"), 0.0);
+  EXPECT_GT(test::stepValue(*window, "acne.step"), 0.2) << "epsilon 0: the lit points shadow themselves";
+  EXPECT_NE(window->figuresPane()->grab().toImage(), picture) << "the figure was not redrawn";
+
+  test::typeInto(epsilon, "0.5");
+  EXPECT_LT(test::stepValue(*window, "acne.step"), 1e-3);
+  EXPECT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
+}
+
+TEST(RayTraceControls, TheRayTreeIsDrawnInThe3DViewAndFollowsThePixel) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  const int step = stepWithFigure(*window, "tree");
+  ASSERT_GE(step, 0);
+  ASSERT_TRUE(window->openLesson("ray-tracing", step)) << window->lastError().toStdString();
+  const int rays = window->primaryView()->raySegmentCount();
+  EXPECT_EQ(rays, static_cast<int>(test::stepValue(*window, "tree.rays")));
+  EXPECT_GT(rays, 2) << "the pixel sees the mirror: a reflected ray and its shadow rays";
+  const QImage view = window->primaryView()->grab().toImage();
+  auto* depth = qobject_cast<QSpinBox*>(window->parameterPanel()->editor("ray-depth"));
+  ASSERT_NE(depth, nullptr);
+  test::typeInto(depth, "0");
+  EXPECT_EQ(test::stepValue(*window, "tree.reflection"), 0);
+  EXPECT_LT(window->primaryView()->raySegmentCount(), rays);
+  EXPECT_NE(window->primaryView()->grab().toImage(), view) << "the 3D view did not redraw the tree";
+  EXPECT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
+}

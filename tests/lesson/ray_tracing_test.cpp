@@ -1,0 +1,129 @@
+// The lesson on ray tracing: what its text says about the numbers of its raytrace steps, checked on those
+// steps (same scene, same parameters), and what the stage does when a reader changes the tracer's settings.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "core/io/rgb_image.h"
+#include "lesson/step_runner.h"
+#include "lesson_test_support.h"
+
+namespace rt::lesson {
+namespace {
+
+using Ran = test::RanStep;
+
+// Runs the lesson's step that draws `figure`, with `change` applied to its parameters first.
+Ran run(const std::string& figure, const std::function<void(StepParameters&)>& change = {}) {
+  return test::runStepWithFigure("ray-tracing", figure, change);
+}
+
+TEST(RayTracingLesson, RayCastingSendsOnePrimaryAndOneShadowRay) {
+  const Ran r = run("casting");
+  EXPECT_EQ(r["tree.shadow"], 1);
+  EXPECT_EQ(r["tree.reflection"], 0);
+  EXPECT_EQ(r["tree.rays"], 2);
+  ASSERT_TRUE(r.result.raytrace);
+  EXPECT_EQ(r.result.raytrace->tree.nodes.front().kind, RayKind::Primary);
+  EXPECT_GT(r.result.mesh.size(), 0u) << "the app's 3D view has the room to draw the rays in";
+}
+
+TEST(RayTracingLesson, ManyShadowRaysSoftenWhatOneLeavesHard) {
+  const Ran r = run("shadows");
+  const RayTraceData& d = *r.result.raytrace;
+  ASSERT_EQ(d.hard.pixels.size(), d.whitted.pixels.size());
+  // The soft picture differs from the hard one (its penumbrae), and the light-size control widens them.
+  EXPECT_GT(rmsDifference(d.hard, d.whitted), 0.01 * r["mean.whitted"]);
+  const Ran larger = run("shadows", [](StepParameters& p) { p.lightSize = 3; });
+  EXPECT_GT(rmsDifference(larger.result.raytrace->whitted, d.hard), rmsDifference(d.whitted, d.hard));
+  EXPECT_GT(r["shadow-rays"], 1);
+}
+
+TEST(RayTracingLesson, TheMirrorsTreeGrowsAndADiffusePixelsStops) {
+  const Ran r = run("tree");
+  EXPECT_GE(r["tree.reflection"], 1) << "the pixel sees the mirror";
+  EXPECT_EQ(r["tree.rays"], 1 + r["tree.reflection"] + r["tree.shadow"]);
+  EXPECT_EQ(r["tree.shadow"], (1 + r["tree.reflection"]) * r["lights"] * r["shadow-rays"]);
+  EXPECT_LE(r["tree.blocked"], r["tree.shadow"]);
+  // The depth limit cuts the tree; without mirrors it stops at the first hit.
+  const Ran flat = run("tree", [](StepParameters& p) { p.rayDepth = 0; });
+  EXPECT_EQ(flat["tree.reflection"], 0);
+  EXPECT_EQ(flat["tree.rays"], 1 + flat["lights"] * flat["shadow-rays"]);
+  const Ran diffuse = run("tree", [](StepParameters& p) { p.mirrors.clear(); });
+  EXPECT_EQ(diffuse["tree.reflection"], 0);
+}
+
+TEST(RayTracingLesson, TheCountedRaysFollowTheCostFormula) {
+  const Ran r = run("cost");
+  const double nodes = 1 + r["ray-depth"];
+  EXPECT_EQ(r["tree-nodes.formula"], nodes);
+  EXPECT_EQ(r["rays-per-pixel.formula"], nodes * (1 + r["lights"] * r["shadow-rays"]));
+  EXPECT_EQ(r["rays.formula"], r["pixels"] * r["rays-per-pixel.formula"]);
+  EXPECT_EQ(r["pixels"], r["image-size"] * r["image-size"]);
+  EXPECT_EQ(r["rays.primary"], r["pixels"]);
+  EXPECT_EQ(r["rays.total"], r["rays.primary"] + r["rays.shadow"] + r["rays.reflection"]);
+  // Every ray that meets a surface sends its shadow rays; a mirror ray leaving by the open front sends none.
+  EXPECT_LE(r["rays.shadow"], (r["rays.primary"] + r["rays.reflection"]) * r["lights"] * r["shadow-rays"]);
+  EXPECT_LT(r["rays.total"], r["rays.formula"]) << "only the tall block is a mirror";
+  EXPECT_GT(r["rays.shadow"], 0.9 * r["rays.total"]) << "shadow rays are nearly all of the work";
+  EXPECT_GT(r["seconds.whitted"], 0);
+  // The chart: the formula rises by the same step per level, the counts flatten out.
+  const RayTraceData& d = *r.result.raytrace;
+  ASSERT_GE(d.formula.size(), 4u);
+  const double step = d.formula[1] - d.formula[0];
+  for (std::size_t k = 1; k < d.formula.size(); ++k) EXPECT_DOUBLE_EQ(d.formula[k] - d.formula[k - 1], step);
+  const std::size_t n = d.counted.size();
+  EXPECT_LT(d.counted[n - 1] - d.counted[n - 2], 0.1 * (d.counted[1] - d.counted[0]));
+  // "Double the shadow rays or the image's side and watch the numbers follow."
+  const Ran doubled = run("cost", [](StepParameters& p) { p.imageSize *= 2; });
+  EXPECT_EQ(doubled["rays.formula"], 4 * r["rays.formula"]);
+}
+
+TEST(RayTracingLesson, EpsilonZeroGivesAcneAProperOneNoneAndABlockHighOneLeaks) {
+  const Ran r = run("epsilon");
+  EXPECT_GT(r["acne.zero"], 0.2);
+  EXPECT_LT(r["acne.step"], 1e-3);
+  EXPECT_GT(r["leaks.large"], 0.05);
+  // "about a block's height": the short block is 165 mm high, the tall one 330 mm.
+  EXPECT_GT(r["epsilon.large"], 150);
+  EXPECT_LT(r["epsilon.large"], 350);
+  // "the acne disappears long before anything leaks": the good values span orders of magnitude.
+  const Ran small = run("epsilon", [](StepParameters& p) { p.rayEpsilon = 0.05; });
+  const Ran large = run("epsilon", [](StepParameters& p) { p.rayEpsilon = 20; });
+  EXPECT_LT(small["acne.step"], 1e-3);
+  EXPECT_LT(large["acne.step"], 1e-3);
+  EXPECT_EQ(large["leaks.step"], 0);
+  EXPECT_EQ(r["leaks.step"], 0);
+}
+
+TEST(RayTracingLesson, TheRayTracerMissesTheLightRadiosityAndPathsFind) {
+  const Ran r = run("versus");
+  EXPECT_LT(r["ceiling.whitted"], 1e-9) << "black";
+  EXPECT_GT(r["ceiling.radiosity"], 0.2 * r["mean.radiosity"]);
+  EXPECT_NEAR(r["bleed.whitted"], 1, 1e-3) << "no colour bleeding";
+  EXPECT_GT(r["bleed.radiosity"], r["bleed.whitted"] + 0.05) << "redder near the red wall";
+  EXPECT_LT(r["mean.whitted"], 0.9 * r["mean.radiosity"]);
+  // The path tracer, one more bounce at a time.
+  EXPECT_LT(r["ceiling.path.0"], 1e-9) << "direct light only, as Whitted";
+  EXPECT_GT(r["ceiling.path.1"], 0.5 * r["ceiling.path.all"]);
+  EXPECT_GT(r["ceiling.path.2"], r["ceiling.path.1"]);
+  EXPECT_GT(r["ceiling.path.all"], r["ceiling.path.2"]);
+  EXPECT_NEAR(r["ceiling.path.all"], r["ceiling.radiosity"], 0.15 * r["ceiling.radiosity"]);
+  EXPECT_LT(r["mean.path.2"] - r["mean.path.1"], r["mean.path.1"] - r["mean.path.0"]) << "adds less again";
+  EXPECT_GT(r["mean.path.all"], r["mean.path.2"]);
+  EXPECT_NEAR(r["floor.path.0"], r["floor.whitted"], 0.05 * r["floor.whitted"]) << "the same direct light";
+}
+
+TEST(RayTracingLesson, APixelOutsideTheImageIsAnErrorNamingTheKey) {
+  const Lesson lesson = test::shippedLesson("ray-tracing");
+  Step step = test::stepWithFigure(lesson, "casting");
+  step.parameters.pixelX = step.parameters.imageSize;
+  StepRunner runner(test::repoFolders().scenes);
+  const std::string message = test::inputErrorOf([&] { runner.run(lesson, step); });
+  EXPECT_NE(message.find("outside the image"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace rt::lesson
