@@ -118,6 +118,7 @@ a.term { color: inherit; text-decoration: none; border-bottom: 1px dotted #777; 
 .index-letter { margin: 0.8em 0 0.2em; }
 .index-entry { margin: 0.1em 0 0.1em 1.5em; text-indent: -1.5em; }
 .index-entry .index-term a { color: inherit; text-decoration: none; font-weight: bold; }
+/* Printed, a reference holds the width of a page number until the layout has written one in (never wider). */
 .print .index-entry a.index-ref { display: inline-block; min-width: 1.8em; text-indent: 0; }
 )";
 }

@@ -143,6 +143,7 @@ const char* kPaginate = R"JS((function () {
       if (!number || seen[number]) return false;
       seen[number] = true;
       link.textContent = number;
+      link.style.display = 'inline';  // the width held for the number is no longer needed
       return true;
     });
     while (term && term.nextSibling) entry.removeChild(term.nextSibling);
