@@ -9,8 +9,8 @@
 
 namespace rt::app {
 
-// "Lesson 7: Ray casting and Monte Carlo form factors": numbered by the lesson's `order:`, as the texts refer
-// to one another ("lesson 7 estimated form factors by sampling"); a lesson without an order is its title.
+// "Lesson 9: Ray casting and Monte Carlo form factors": numbered by the lesson's `order:`, as the texts refer
+// to one another ("lesson 9 estimated form factors by sampling"); a lesson without an order is its title.
 QString lessonHeading(const lesson::Lesson& lesson);
 
 class ContentsTree : public QTreeWidget {

@@ -8,6 +8,7 @@
 #include "cli/cli_common.h"
 #include "core/input_error.h"
 #include "homework/handout.h"
+#include "lesson/book_index.h"
 #include "lesson/citations.h"
 #include "lesson/glossary.h"
 #include "lesson/step_numbers.h"
@@ -145,6 +146,10 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
   progress.finish();
   std::stable_sort(rendered.begin(), rendered.end(),
                    [](const auto& x, const auto& y) { return x.order < y.order; });
+  const auto glossary = lesson::loadGlossary(lesson::glossaryPath(folders.lessons));
+  // The terms' uses in the lessons (not in the appendices), marked for the index and linked to the glossary.
+  const auto index =
+      settings.prepareText ? lesson::markIndexTerms(rendered, glossary) : std::vector<lesson::IndexEntry>{};
   if (!appendix.empty()) {
     // The answers close the book: one more page after the last lesson, in the Markdown, HTML and PDF.
     appendChapter(rendered, homework::kAnswersAppendixId, "Answers to the exercises",
@@ -156,7 +161,6 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
     appendChapter(rendered, "references", "References", "Every work the chapters cite, by author.",
                   lesson::furtherReading(cited, bibliography, 0));
   }
-  const auto glossary = lesson::loadGlossary(lesson::glossaryPath(folders.lessons));
   if (!glossary.empty() && settings.prepareText) {
     // Every term defined once, with a link to where the book first uses it.
     std::stable_sort(loaded.begin(), loaded.end(),
@@ -164,6 +168,11 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
     appendChapter(rendered, "glossary", "Glossary",
                   "The terms of the book, each defined once, with the section that first uses it.",
                   lesson::glossaryHtml(glossary, loaded));
+  }
+  if (!index.empty()) {
+    appendChapter(rendered, "term-index", "Index",
+                  "Every term of the glossary, and a few more, with the sections that use it.",
+                  lesson::indexHtml(index));
   }
   return rendered;
 }

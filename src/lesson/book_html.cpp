@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "lesson/book_index.h"
 #include "lesson/markdown_html.h"
 #include "lesson/maths.h"
 #include "lesson/text_apparatus.h"
@@ -50,10 +51,10 @@ std::string chapterBody(const RenderedLesson& l, const std::string& idPrefix, bo
   if (!l.furtherReading.empty())
     html += "<h2 class=\"further-reading\" id=\"" + idPrefix + "further-reading\">Further reading</h2>\n" +
             l.furtherReading;
-  // Links to equations, listings and cited works point into this chapter; in the printed document every
-  // chapter has its own prefix.
+  // Links to equations, listings, cited works, marked terms and definitions point into a chapter; in the
+  // printed document every chapter has its own prefix.
   if (forPrint) {
-    for (const std::string kind : {"eq-", "alg-", "ref-"}) {
+    for (const std::string kind : {"eq-", "alg-", "ref-", "ix-", "gl-"}) {
       for (std::size_t at = 0; (at = html.find("href=\"#" + kind, at)) != std::string::npos; at += 7)
         html.insert(at + 7, idPrefix);
       for (std::size_t at = 0; (at = html.find("id=\"" + kind, at)) != std::string::npos; at += 4)
@@ -214,7 +215,7 @@ body.print { font-size: 11pt; }
 .print .book-title { font-size: 2.4em; }
 .print .subtitle { font-size: 1.2em; color: #444; }
 )" + apparatusStyleSheet() +
-         equationStyleSheet();
+         equationStyleSheet() + indexStyleSheet();
 }
 
 }  // namespace rt::lesson

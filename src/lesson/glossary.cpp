@@ -23,19 +23,26 @@ bool letter(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_';
 }
 
-// True when the text's normal pieces hold the term as a whole word ("form factor", "form factors").
-bool uses(const std::string& text, const std::string& term) {
+// The whole-word uses of the term in the given pieces of the text ("form factor", "form factors").
+std::vector<std::pair<std::size_t, std::size_t>> usesIn(
+    const std::string& text, const std::vector<std::pair<std::size_t, std::size_t>>& pieces,
+    const std::string& term) {
   const std::string t = lower(term);
-  for (const auto& [begin, end] : plainTextPieces(text)) {
+  std::vector<std::pair<std::size_t, std::size_t>> found;
+  for (const auto& [begin, end] : pieces) {
     const std::string piece = lower(text.substr(begin, end - begin));
     for (std::size_t at = piece.find(t); at != std::string::npos; at = piece.find(t, at + 1)) {
       std::size_t after = at + t.size();
       if (after < piece.size() && piece[after] == 's') ++after;
       if ((at == 0 || !letter(piece[at - 1])) && (after >= piece.size() || !letter(piece[after])))
-        return true;
+        found.emplace_back(begin + at, begin + after);
     }
   }
-  return false;
+  return found;
+}
+
+bool uses(const std::string& text, const std::string& term) {
+  return !usesIn(text, plainTextPieces(text), term).empty();
 }
 
 // Definitions are plain text with maths: the maths becomes <x-equation> for the typesetter.
@@ -59,13 +66,18 @@ std::string definitionHtml(const std::string& text) {
   return html;
 }
 
-std::string anchor(const std::string& term) {
+}  // namespace
+
+std::vector<std::pair<std::size_t, std::size_t>> termUses(const std::string& markdown,
+                                                          const std::string& term) {
+  return usesIn(markdown, unlinkedTextPieces(markdown), term);
+}
+
+std::string glossaryAnchor(const std::string& term) {
   std::string id = "gl-";
   for (const char c : lower(term)) id += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
   return id;
 }
-
-}  // namespace
 
 std::string glossaryPath(const std::string& lessonsDir) {
   return lessonsDir + "/glossary.json";
@@ -89,11 +101,22 @@ std::vector<GlossaryEntry> loadGlossary(const std::string& path) {
   for (std::size_t k = 0; k < doc.size(); ++k) {
     const SourceLocation where{path, 0, "/" + std::to_string(k)};
     const auto& e = doc[k];
-    if (!e.is_object() || !e.value("term", nlohmann::json()).is_string() ||
-        !e.value("definition", nlohmann::json()).is_string())
-      throw InputError(where, "an entry needs a \"term\" and a \"definition\", both text");
-    GlossaryEntry entry{e["term"].get<std::string>(), e["definition"].get<std::string>()};
-    if (entry.term.empty() || entry.definition.empty())
+    if (!e.is_object() || !e.value("term", nlohmann::json()).is_string())
+      throw InputError(where, "an entry needs a \"term\", as text");
+    const auto indexOnly = e.value("index-only", nlohmann::json(false));
+    if (!indexOnly.is_boolean()) throw InputError(where, "\"index-only\" is true or false");
+    GlossaryEntry entry{e["term"].get<std::string>(), "", indexOnly.get<bool>()};
+    if (entry.indexOnly) {
+      if (e.contains("definition"))
+        throw InputError(where,
+                         "the index-only term '" + entry.term + "' has a definition: drop one of them");
+    } else {
+      if (!e.value("definition", nlohmann::json()).is_string())
+        throw InputError(where,
+                         "the term '" + entry.term + "' needs a \"definition\" (or \"index-only\": true)");
+      entry.definition = e["definition"].get<std::string>();
+    }
+    if (entry.term.empty() || (entry.definition.empty() && !entry.indexOnly))
       throw InputError(where, "an empty term or definition");
     if (std::count(entry.definition.begin(), entry.definition.end(), '$') % 2 != 0)
       throw InputError(where,
@@ -117,13 +140,14 @@ std::optional<FirstUse> firstUse(const std::string& term, const std::vector<Less
 
 std::string glossaryHtml(const std::vector<GlossaryEntry>& entries, const std::vector<Lesson>& lessons) {
   std::vector<const GlossaryEntry*> sorted;
-  for (const GlossaryEntry& e : entries) sorted.push_back(&e);
+  for (const GlossaryEntry& e : entries)
+    if (!e.indexOnly) sorted.push_back(&e);
   std::sort(sorted.begin(), sorted.end(),
             [](const GlossaryEntry* a, const GlossaryEntry* b) { return lower(a->term) < lower(b->term); });
   // One paragraph per term and no blank line: Markdown passes the block through whole.
   std::string html;
   for (const GlossaryEntry* e : sorted) {
-    html += "<p class=\"glossary\" id=\"" + anchor(e->term) + "\"><b>" + escapeHtml(e->term) +
+    html += "<p class=\"glossary\" id=\"" + glossaryAnchor(e->term) + "\"><b>" + escapeHtml(e->term) +
             "</b>: " + definitionHtml(e->definition);
     if (const auto use = firstUse(e->term, lessons)) {
       const Lesson& l = *use->lesson;

@@ -16,7 +16,9 @@ struct Scan {
   const char* base = nullptr;
   std::size_t size = 0;
   std::vector<Formula> formulas;
-  std::vector<std::pair<std::size_t, std::size_t>> plain;  // [begin, end) of normal text
+  std::vector<std::pair<std::size_t, std::size_t>> plain;     // [begin, end) of normal text
+  std::vector<std::pair<std::size_t, std::size_t>> unlinked;  // the plain pieces outside a link's text
+  int inLink = 0;
   int inMaths = 0;
   bool display = false;
 };
@@ -33,12 +35,14 @@ int enterSpan(MD_SPANTYPE type, void*, void* userdata) {
     s.formulas.push_back({});
     s.formulas.back().display = s.display;
   }
+  if (type == MD_SPAN_A) ++s.inLink;
   return 0;
 }
 
 int leaveSpan(MD_SPANTYPE type, void*, void* userdata) {
-  if (type == MD_SPAN_LATEXMATH || type == MD_SPAN_LATEXMATH_DISPLAY)
-    static_cast<Scan*>(userdata)->inMaths = 0;
+  auto& s = *static_cast<Scan*>(userdata);
+  if (type == MD_SPAN_LATEXMATH || type == MD_SPAN_LATEXMATH_DISPLAY) s.inMaths = 0;
+  if (type == MD_SPAN_A) --s.inLink;
   return 0;
 }
 
@@ -50,8 +54,16 @@ int onText(MD_TEXTTYPE type, const MD_CHAR* text, MD_SIZE size, void* userdata) 
     Formula& f = s.formulas.back();
     if (f.end == 0) f.begin = begin;
     f.end = begin + size;
+  } else if (type == MD_TEXT_HTML) {
+    // An <a ...> written as HTML opens a link as [text](url) does (a block of HTML may hold whole links).
+    const std::string html(text, size);
+    for (std::size_t at = 0; (at = html.find("<a", at)) != std::string::npos; ++at)
+      if (at + 2 < html.size() && (html[at + 2] == ' ' || html[at + 2] == '>')) ++s.inLink;
+    for (std::size_t at = 0; (at = html.find("</a>", at)) != std::string::npos; ++at)
+      if (s.inLink > 0) --s.inLink;
   } else if (type == MD_TEXT_NORMAL) {
     s.plain.emplace_back(begin, begin + size);
+    if (s.inLink == 0) s.unlinked.emplace_back(begin, begin + size);
   }
   return 0;
 }
@@ -200,6 +212,10 @@ std::vector<LabelReference> findReferences(const std::string& markdown, int firs
 
 std::vector<std::pair<std::size_t, std::size_t>> plainTextPieces(const std::string& markdown) {
   return scan(markdown).plain;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> unlinkedTextPieces(const std::string& markdown) {
+  return scan(markdown).unlinked;
 }
 
 std::vector<Formula> lessonFormulas(const Lesson& lesson) {

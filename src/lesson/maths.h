@@ -55,6 +55,8 @@ std::vector<LabelReference> findReferences(const std::string& markdown, int firs
 
 // The pieces [begin, end) of the Markdown that are normal text: not code, not maths, not HTML.
 std::vector<std::pair<std::size_t, std::size_t>> plainTextPieces(const std::string& markdown);
+// The same pieces without those inside a link's text (where no second link may go).
+std::vector<std::pair<std::size_t, std::size_t>> unlinkedTextPieces(const std::string& markdown);
 
 // Every formula of a lesson, with its file line and placeholders replaced by sample numbers: what the
 // typesetter checks when the lesson or the book is built.

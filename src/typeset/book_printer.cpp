@@ -19,7 +19,8 @@ namespace {
 // document of 250 pages. A list or table taller than a page is split between its items or rows (a page clips
 // what overflows it). A check per page then moves what still overflows (margins count differently at a page
 // top) to a new page after it, so that no later page changes. Then numbers the pages (not a book's title
-// page; a document's first page is numbered) and writes each contents line's page. Returns the page count.
+// page; a document's first page is numbered), writes each contents line's page and turns each index link into
+// the page number of the use it points to, each page once per term. Returns the page count.
 const char* kPaginate = R"JS((function () {
   var flow = document.getElementById('flow');
   var blocks = Array.prototype.slice.call(flow.children);
@@ -128,6 +129,28 @@ const char* kPaginate = R"JS((function () {
     var target = document.getElementById(link.getAttribute('href').slice(1));
     var page = target ? target.closest('.page') : null;
     slot.textContent = page ? String(pages.indexOf(page) + 1) : '';
+  });
+  document.querySelectorAll('.index-entry').forEach(function (entry) {
+    var refs = Array.prototype.slice.call(entry.querySelectorAll('a.index-ref'));
+    if (!refs.length) return;
+    var term = refs[0].previousSibling;
+    while (term && term.nodeType !== 1) term = term.previousSibling;
+    var seen = {};
+    var kept = refs.filter(function (link) {
+      var target = document.getElementById(link.getAttribute('href').slice(1));
+      var page = target ? target.closest('.page') : null;
+      var number = page ? String(pages.indexOf(page) + 1) : '';
+      if (!number || seen[number]) return false;
+      seen[number] = true;
+      link.textContent = number;
+      link.style.display = 'inline';  // the width held for the number is no longer needed
+      return true;
+    });
+    while (term && term.nextSibling) entry.removeChild(term.nextSibling);
+    kept.forEach(function (link, i) {
+      entry.appendChild(document.createTextNode(i ? ', ' : ' '));
+      entry.appendChild(link);
+    });
   });
   return pages.length;
 })())JS";

@@ -90,7 +90,7 @@ TEST(AppExercise, AnAnswerTypedIntoTheFieldIsChecked) {
   EXPECT_FALSE(panel->isVisible());
 }
 
-// Lesson 12 (the Cornell box), step 5: all 18 fields filled (every other one wrong), Check, Page Down to the
+// The Cornell box lesson, step 5: all 18 fields filled (every other one wrong), Check, Page Down to the
 // next step and Page Up back: the answers and what Check said are there again; and in a window opened anew,
 // as after a restart. A wrong answer is said too high, never with the key's value.
 TEST(AppExercise, AnswersStayWithTheirStepAcrossStepsAndRestarts) {

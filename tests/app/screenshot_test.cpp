@@ -88,7 +88,7 @@ TEST(Screenshot, AStepWithoutASolutionShowsTheShadedMaterials) {
   EXPECT_EQ(window->primaryView()->viewOptions().colouring, rt::viz::SceneColouring::Radiosity);
 }
 
-// Lesson 11 (shooting), step 2, the Step figures tab clicked open in the pane under the 3D view: the
+// The shooting lesson, step 2, the Step figures tab clicked open in the pane under the 3D view: the
 // convergence chart and its caption are seen whole, not cut at the pane's bottom.
 TEST(Screenshot, TheStepFiguresTabShowsTheFigureWhole) {
   RT_REQUIRE_DISPLAY();

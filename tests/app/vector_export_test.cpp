@@ -64,7 +64,7 @@ TEST(VectorExport, TheStepsFiguresAreVectorSvgWithASuggestedName) {
   expectVectorSvg(window->lastExportedFiles().front(), /*withText=*/true);
 }
 
-// Lesson 11 (shooting), step 2, its convergence chart exported as PDF and SVG: a line that other programs
+// The shooting lesson, step 2, its convergence chart exported as PDF and SVG: a line that other programs
 // draw as a line (not the plot area filled with its colour), with its text in place.
 TEST(VectorExport, TheStepsChartIsReadableInPdfAndSvg) {
   RT_REQUIRE_DISPLAY();

@@ -3,6 +3,7 @@
 // something); and a formula that cannot be typeset stops `lesson check` at its file and line.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -46,6 +47,14 @@ std::vector<std::string> lessonTitles() {
       }
   }
   return titles;
+}
+
+// A shipped lesson's chapter number, its `order`: the tests name chapters, listings and equations by it.
+int lessonOrder(const std::string& id) {
+  std::ifstream in(rt::test::sourcePath("lessons/" + id + ".md"));
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("order: ", 0) == 0) return std::stoi(line.substr(7));
+  return -1;
 }
 
 std::string collapseSpaces(const std::string& text) {
@@ -122,7 +131,7 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
     EXPECT_EQ(html.find("katex-error"), std::string::npos) << name << ": a formula failed";
     EXPECT_EQ(html.find("<script"), std::string::npos) << name << ": the pages need no script";
     if (name != "index.html") {
-      if (name != "references.html" && name != "glossary.html") {
+      if (name != "references.html" && name != "glossary.html" && name != "term-index.html") {
         EXPECT_NE(html.find("class=\"katex\""), std::string::npos) << name << " shows no maths";
       }
       const bool navigation =
@@ -135,19 +144,23 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
   // The works the chapters cite are listed at the back, by author.
   EXPECT_TRUE(fs::exists(out / "references.html"));
   EXPECT_TRUE(fs::exists(out / "glossary.html"));
-  EXPECT_EQ(pages, static_cast<int>(titles.size()) + 4)
-      << "index.html, one page per lesson, the answers, the references and the glossary";
+  EXPECT_TRUE(fs::exists(out / "term-index.html"));
+  EXPECT_EQ(pages, static_cast<int>(titles.size()) + 5)
+      << "index.html, one page per lesson, the answers, the references, the glossary and the index";
   const std::string shooting = readFile(out / "shooting.html");
   EXPECT_NE(shooting.find("<figure class=\"algorithm\" id=\"alg-shooting\">"), std::string::npos)
       << "an algorithm listing";
-  EXPECT_NE(shooting.find(">Algorithm 11.1</a>"), std::string::npos) << "a reference to the listing";
+  const std::string shootingListing = "Algorithm " + std::to_string(lessonOrder("shooting")) + ".1";
+  EXPECT_NE(shooting.find(">" + shootingListing + "</a>"), std::string::npos) << "a reference to the listing";
   EXPECT_NE(shooting.find(">Cohen et al. 1988</a>"), std::string::npos) << "citations, author-year";
   EXPECT_NE(shooting.find(">Further reading</h2>"), std::string::npos);
   EXPECT_TRUE(fs::exists(out / "katex" / "katex.min.css"));
   EXPECT_TRUE(fs::exists(out / "katex" / "fonts" / "KaTeX_Main-Regular.woff2"));
   const std::string rendering = readFile(out / "rendering-equation.html");
   EXPECT_NE(rendering.find(".svg\""), std::string::npos) << "figures as SVG";
-  EXPECT_NE(rendering.find("(3.1)"), std::string::npos) << "numbered equations";
+  EXPECT_NE(rendering.find("(" + std::to_string(lessonOrder("rendering-equation")) + ".1)"),
+            std::string::npos)
+      << "numbered equations";
   EXPECT_NE(rendering.find("href=\"#eq-rendering\""), std::string::npos) << "equation references";
 
   // The PDF: a page per lesson or more, every title in its text, numbered chapters.
@@ -164,12 +177,61 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
   for (const auto& title : titles)
     EXPECT_NE(flat.find(title), std::string::npos) << "the PDF lacks " << title;
   EXPECT_NE(flat.find("Contents"), std::string::npos);
-  EXPECT_NE(flat.find("Chapter 17"), std::string::npos);
-  EXPECT_NE(flat.find("Figure 5.1."), std::string::npos);
+  EXPECT_NE(flat.find("Chapter " + std::to_string(lessonOrder("two-solutions"))), std::string::npos);
+  EXPECT_NE(flat.find("Figure " + std::to_string(lessonOrder("nusselt-analog")) + ".1."), std::string::npos);
   EXPECT_NE(flat.find("Radiosity after 1 bounce"), std::string::npos);
-  EXPECT_NE(flat.find("Algorithm 11.1 Progressive refinement"), std::string::npos);
+  EXPECT_NE(flat.find(shootingListing + " Progressive refinement"), std::string::npos);
   EXPECT_NE(flat.find("Goral, Cindy M., Kenneth E. Torrance"), std::string::npos) << "the references";
   EXPECT_EQ(flat.find("after 1 bounces"), std::string::npos) << "one bounce is singular";
+
+  // The index: every link of the site's Index chapter lands on a marked use of its term in a chapter, and a
+  // chapter's first use of a defined term links to its definition in the Glossary.
+  const std::string termIndex = readFile(out / "term-index.html");
+  const std::regex indexRef("<a class=\"index-ref\" href=\"([a-z0-9-]+\\.html)#([^\"]+)\">");
+  int indexLinks = 0;
+  for (std::sregex_iterator it(termIndex.begin(), termIndex.end(), indexRef), end; it != end;
+       ++it, ++indexLinks)
+    EXPECT_NE(readFile(out / (*it)[1].str()).find("id=\"" + (*it)[2].str() + "\""), std::string::npos)
+        << (*it)[1] << "#" << (*it)[2] << " is not there";
+  EXPECT_GT(indexLinks, 100);
+  EXPECT_NE(readFile(out / "form-factor.html").find("href=\"glossary.html#gl-form-factor\""),
+            std::string::npos);
+  EXPECT_NE(readFile(out / "glossary.html").find("id=\"gl-form-factor\""), std::string::npos);
+  // In the PDF the index gives page numbers, and each page it names has the term on it. pdftotext ends every
+  // page with a form feed.
+  std::vector<std::string> pageTexts;
+  for (std::size_t from = 0, at; (at = text.find('\f', from)) != std::string::npos; from = at + 1)
+    pageTexts.push_back(collapseSpaces(text.substr(from, at - from)));
+  ASSERT_EQ(static_cast<int>(pageTexts.size()), pdfPages);
+  const std::size_t indexStart = flat.rfind("Index Every term of the glossary");
+  ASSERT_NE(indexStart, std::string::npos) << "the PDF has no Index chapter";
+  const std::string indexText = flat.substr(indexStart);
+  auto lower = [](std::string t) {
+    for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return t;
+  };
+  const std::string glossaryFile = readFile(rt::test::sourcePath("lessons/glossary.json"));
+  const std::regex termEntry("\"term\": \"([^\"]+)\"");
+  const std::regex pageNumber("\\d+");
+  int checkedTerms = 0;
+  for (std::sregex_iterator it(glossaryFile.begin(), glossaryFile.end(), termEntry), end; it != end; ++it) {
+    const std::string term = (*it)[1];
+    // An entry follows a page number or the letter heading: "delta form factor 23" is not "form factor".
+    // (Terms are letters, spaces, hyphens and apostrophes: literal in a regular expression.)
+    const std::regex entry("(?:\\d |\\b[A-Z] )" + term + " (\\d+(?:, \\d+)*)");
+    std::smatch m;
+    if (!std::regex_search(indexText, m, entry)) continue;
+    ++checkedTerms;
+    const std::string pagesOfTerm = m[1];
+    for (std::sregex_iterator p(pagesOfTerm.begin(), pagesOfTerm.end(), pageNumber), none; p != none; ++p) {
+      const int page = std::stoi(p->str());
+      ASSERT_GE(page, 1);
+      ASSERT_LE(page, pdfPages);
+      EXPECT_NE(lower(pageTexts[page - 1]).find(lower(term)), std::string::npos)
+          << "the index sends '" << term << "' to page " << page << ", which does not show it";
+    }
+  }
+  EXPECT_GT(checkedTerms, 30) << "terms found with page numbers in the PDF's index";
 
   // Its figures are not blank: the area just above every caption "Figure N.M." (where the figure is) shows
   // something on the rendered page. Word positions come from pdftotext -bbox, in points.

@@ -244,5 +244,73 @@ TEST_F(LessonFacts, TheNearlySingularRoomReflectsLikeSpectralon) {
   EXPECT_NEAR(*r.value("rho.max"), 0.99, 1e-12);
 }
 
+// The derivations the Solving chapters give, checked on the runs they describe. A run's every iteration is
+// kept (RunOptions::recordHistory), as the app keeps it to replay the run.
+StepResult runWithHistory(const Lesson& lesson, const Step& step) {
+  StepRunner runner(test::repoFolders().scenes, RunOptions{.recordHistory = true});
+  return runner.run(lesson, step);
+}
+
+// gathering, @eq:gs-increase and @eq:gs-below: from its start B = E, Gauss-Seidel raises every element's
+// radiosity in every channel sweep after sweep, and never above the solution it converges to.
+TEST_F(LessonFacts, GaussSeidelOnlyRaisesTheRadiositiesAndStaysBelowTheSolution) {
+  const Lesson lesson = test::shippedLesson("gathering");
+  const Step& step = test::stepWithFigure(lesson, "gauss-seidel");
+  const StepResult r = runWithHistory(lesson, step);
+  EXPECT_NO_THROW(resolvedText(lesson, step, r));
+  const auto& history = r.replay.history;
+  ASSERT_GT(history.size(), 5u);
+  const double scale = r.B.maxCoeff();
+  RgbField previous = r.mesh.emission;
+  for (const IterationRecord& sweep : history) {
+    EXPECT_GE((sweep.B - previous).minCoeff(), -1e-12 * scale) << "sweep " << sweep.iteration;
+    EXPECT_LE((sweep.B - r.B).maxCoeff(), 1e-12 * scale) << "sweep " << sweep.iteration;
+    previous = sweep.B;
+  }
+}
+
+// shooting, @eq:southwell-rate: after k shots the unshot power is at most (1 - (1 - rho_max s) / n)^k of the
+// emitted power, s the largest total share a shot hands out, sum_j A_j F_ji / A_i: the row sum, at most 1,
+// for reciprocal form factors. The lesson's room shot to convergence with the quadrature method's form
+// factors, which are reciprocal to their tolerance (the hemicube's are not, as the lesson says).
+TEST_F(LessonFacts, SouthwellsUnshotPowerFallsAtLeastGeometrically) {
+  const Lesson lesson = test::shippedLesson("shooting");
+  Step step = test::stepWithFigure(lesson, "ten-shots");
+  step.parameters.iterations = 4000;
+  step.parameters.method = "quadrature";
+  const StepResult r = runWithHistory(lesson, step);
+  ASSERT_TRUE(r.F);
+  const auto& history = r.replay.history;
+  ASSERT_GT(history.size(), 1000u);
+  const Eigen::VectorXd A = r.mesh.areas();
+  const auto n = static_cast<double>(A.size());
+  double share = 1.0;
+  for (Eigen::Index i = 0; i < A.size(); ++i) share = std::max(share, r.F->col(i).dot(A) / A(i));
+  EXPECT_LT(share, 1.01) << "the shares a shot hands out sum to about 1";
+  const double rate = 1.0 - (1.0 - r.mesh.reflectance.maxCoeff() * share) / n;
+  ASSERT_LT(rate, 1.0);
+  const double emitted = history.front().emittedPower;
+  for (const IterationRecord& shot : history)
+    EXPECT_LE(shot.unshotPower, std::pow(rate, shot.iteration) * emitted * (1 + 1e-9))
+        << "shot " << shot.iteration;
+  // The bound is loose: the run is far below it after a sweep's worth of shots.
+  const IterationRecord& sweep = history[static_cast<std::size_t>(n) - 1];
+  EXPECT_LT(sweep.unshotPower, 0.5 * std::pow(rate, sweep.iteration) * emitted);
+}
+
+// radiosity-matrix, @eq:spectral-bound: the spectral radius of rho F is at most its largest row sum, which is
+// at most the largest reflectance; equal in the uniform closed cube, below both in the open Cornell box.
+TEST_F(LessonFacts, TheSpectralRadiusIsAtMostTheLargestRowSumAndReflectance) {
+  RUN_OR_SKIP(cube, "radiosity-matrix", "spectral");
+  const double cubeRowSum = 1.0 - *cube.value("dominance");
+  EXPECT_NEAR(*cube.value("spectral-radius"), cubeRowSum, 1e-6);
+  EXPECT_NEAR(cubeRowSum, *cube.value("rho.max"), 1e-9);
+  RUN_OR_SKIP(room, "radiosity-matrix", "cornell");
+  const double roomRowSum = 1.0 - *room.value("dominance");
+  EXPECT_LE(*room.value("spectral-radius"), roomRowSum + 1e-9);
+  EXPECT_LE(roomRowSum, *room.value("rho.max") + 1e-9);
+  EXPECT_LT(*room.value("spectral-radius"), 0.95 * *room.value("rho.max")) << "well below it";
+}
+
 }  // namespace
 }  // namespace rt::lesson

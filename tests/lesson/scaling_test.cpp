@@ -1,7 +1,7 @@
-// The scaling stage and the facts the lesson "When n² is too big" states about its numbers, checked on the
-// lesson's own steps: a dense F holds 8 n^2 bytes and its time grows about like n^2, clustering's links grow
-// slower than the n^2 pairs with links per element settling, local lines' noise falls like 1/sqrt(rays), and
-// the cluster boxes at a depth partition the elements.
+// The scaling stage and the facts the lessons state about its numbers, checked on the lessons' own steps:
+// "When n² is too big": a dense F holds 8 n^2 bytes and its time grows about like n^2, local lines' noise
+// falls like 1/sqrt(rays); "Hierarchical radiosity" (its clustering step): the links grow slower than the n^2
+// pairs with links per element settling, and the cluster boxes at a depth partition the elements.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,8 +14,12 @@ namespace {
 
 class Scaling : public ::testing::Test {
  protected:
-  void SetUp() override { lesson_ = test::shippedLesson("when-n-squared-is-too-big"); }
+  void SetUp() override {
+    lesson_ = test::shippedLesson("when-n-squared-is-too-big");
+    clustering_ = test::shippedLesson("hierarchical");
+  }
   Lesson lesson_;
+  Lesson clustering_;
 };
 
 TEST_F(Scaling, TheDenseMatrixHoldsEightBytesPerPairAndItsTimeGrowsLikeNSquared) {
@@ -42,9 +46,9 @@ TEST_F(Scaling, TheDenseMatrixHoldsEightBytesPerPairAndItsTimeGrowsLikeNSquared)
 
 TEST_F(Scaling, LinksGrowSlowerThanPairsAndLinksPerElementSettle) {
   StepRunner runner(test::repoFolders().scenes, RunOptions{.quick = true});
-  const Step& step = test::stepWithFigure(lesson_, "links");
-  const StepResult r = runner.run(lesson_, step);
-  EXPECT_NO_THROW(resolvedText(lesson_, step, r));
+  const Step& step = test::stepWithFigure(clustering_, "links");
+  const StepResult r = runner.run(clustering_, step);
+  EXPECT_NO_THROW(resolvedText(clustering_, step, r));
   ASSERT_TRUE(r.scaling);
   const auto& points = r.scaling->points;
   ASSERT_EQ(points.size(), 4u);
@@ -62,11 +66,11 @@ TEST_F(Scaling, LinksGrowSlowerThanPairsAndLinksPerElementSettle) {
 
 TEST_F(Scaling, ClusterBoxesAtADepthCoverEveryElementAndDoubleWithTheDepth) {
   StepRunner runner(test::repoFolders().scenes, RunOptions{.quick = true});
-  Step step = test::stepWithFigure(lesson_, "links");
+  Step step = test::stepWithFigure(clustering_, "links");
   step.parameters.subdivisions = {2};  // the boxes are of the step's own mesh
   for (int depth : {0, 1, 3}) {
     step.parameters.clusterDepth = depth;
-    const StepResult r = runner.run(lesson_, step);
+    const StepResult r = runner.run(clustering_, step);
     ASSERT_TRUE(r.scaling);
     EXPECT_EQ(r.scaling->boxes.size(), std::size_t{1} << depth) << "each level doubles the boxes";
     for (const Element& e : r.mesh.elements) {
