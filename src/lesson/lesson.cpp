@@ -8,7 +8,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 25> kViews{{
+constexpr std::array<std::pair<View, const char*>, 29> kViews{{
     {View::Scene, "scene"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
@@ -34,6 +34,10 @@ constexpr std::array<std::pair<View, const char*>, 25> kViews{{
     {View::CosineLaw, "cosine-law"},
     {View::InverseSquare, "inverse-square"},
     {View::Hits, "hits"},
+    {View::Lobe, "lobe"},
+    {View::PhongSweep, "phong-sweep"},
+    {View::Albedo, "albedo"},
+    {View::PhongLocal, "phong-local"},
 }};
 
 }  // namespace
@@ -110,6 +114,15 @@ const std::vector<StageInfo>& stageTable() {
        "irradiance of a point source and of a square of the same power against distance (no scene: the "
        "stage builds its own)",
        {V::Scene, V::SolidAngle, V::CosineLaw, V::InverseSquare}},
+      {Stage::Reflection,
+       "reflection",
+       "the BRDF `brdf-model` with `phong-exponent`, `specular-fraction` and `anisotropy` for light arriving "
+       "at `incidence-angle`: its lobe f_r cos(theta) in 3D, its directional albedo (energy conservation) "
+       "and "
+       "reciprocity, Phong's lobe for q = 1 ... 128; with a `scene`, the scene lit by Phong local "
+       "illumination plus `ambient-light` beside its radiosity solution (without one, the stage builds the "
+       "lobe as its scene)",
+       {V::Scene, V::Lobe, V::PhongSweep, V::Albedo, V::PhongLocal}},
   };
   return table;
 }

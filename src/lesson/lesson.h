@@ -33,6 +33,7 @@ enum class Stage {
   PathTrace,    // the radiosity image against a path-traced one of the same equation, and the two-pass image
   Scaling,      // the dense matrix's memory and time against n, clustering's links, local lines' noise
   Radiometry,   // a patch seen from a point: solid angle, the cosine law, point against area source
+  Reflection,  // a BRDF's lobe, albedo and Phong's exponent; with a scene, Phong local light beside radiosity
 };
 
 // The figures a step can ask for; the names match the viz layer's views.
@@ -62,6 +63,10 @@ enum class View {
   CosineLaw,      // irradiance on the patch against its tilt
   InverseSquare,  // irradiance against distance from a point source and from a square of the same power
   Hits,           // rays stage: the local lines' hit fractions per surface with their standard errors, and F
+  Lobe,           // f_r(w_i, w_o) cos(theta_o) over the hemisphere as a 3D surface, with the incoming ray
+  PhongSweep,     // cos^q(alpha) against alpha for q = 1, 2, 4, ..., 128
+  Albedo,         // the directional albedo against the angle of incidence
+  PhongLocal,     // the scene lit by Phong local illumination plus ambient, beside its radiosity solution
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.
@@ -145,6 +150,12 @@ struct StepParameters {
   double patchDistance = 1.0;  // from the point to the patch's centre
   double patchTilt = 0.0;      // between the patch's normal and the line to the point
   double patchSize = 0.5;      // the side of the square patch (and of the square source)
+  // reflection stage: the BRDF shown (core/brdf.h) and the direction light arrives from
+  std::string brdfModel = "phong";
+  double phongExponent = 16.0;    // q
+  double specularFraction = 0.3;  // k_s / (k_d + k_s)
+  double anisotropy = 1.0;        // Ward: alpha_x / alpha_y
+  double incidenceAngle = 45.0;   // degrees from the normal
 };
 
 struct Step {

@@ -14,6 +14,7 @@
 #include "core/scene.h"
 #include "homework/exercise.h"
 #include "lesson/radiometry_data.h"
+#include "lesson/reflection_data.h"
 #include "lesson/scaling_data.h"
 #include "lesson/traced_pictures.h"
 
@@ -80,6 +81,9 @@ struct StepResult {
 
   // Radiometry stage: the patch, its solid angle and the irradiance curves.
   std::shared_ptr<const RadiometryData> radiometry;
+
+  // Reflection stage: the BRDF, its lobe and albedo; with a scene, the local and radiosity pictures.
+  std::shared_ptr<const ReflectionData> reflection;
 
   // Exercise stage: the question, its answers and worked solution (values: given.<name>, answer.<id>).
   std::optional<homework::Exercise> exercise;

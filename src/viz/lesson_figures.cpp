@@ -13,6 +13,7 @@
 #include "viz/hemicube_view.h"
 #include "viz/hits_chart.h"
 #include "viz/lesson_radiometry_figures.h"
+#include "viz/lesson_reflection_figures.h"
 #include "viz/lesson_scaling_figures.h"
 #include "viz/lesson_traced_figures.h"
 #include "viz/matrix_view.h"
@@ -339,6 +340,11 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
     case View::CosineLaw:
     case View::InverseSquare:
       return detail::renderRadiometryView(view, r, s, path);
+    case View::Lobe:
+    case View::PhongSweep:
+    case View::Albedo:
+    case View::PhongLocal:
+      return detail::renderReflectionView(view, step, r, s, path);
   }
   return "";
 }
