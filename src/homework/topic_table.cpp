@@ -59,6 +59,10 @@ const std::vector<Topic>& topicTable() {
        "a small tilted patch lit by a point source: its solid angle, the intensity, the irradiance and the "
        "power received",
        "measuring-light", generateIrradiance},
+      {"phong", "A Phong reflection",
+       "a distant lamp and a viewer in the plane of incidence: the angle from the mirror direction, the "
+       "normalised Phong BRDF's specular part and whole value, and the radiance seen",
+       "reflection", generatePhong},
   };
   return table;
 }

@@ -52,6 +52,11 @@ std::string renderReflectionView(lesson::View view, const lesson::Step& step, co
       std::vector<Series> series;
       for (std::size_t k = 0; k < d.exponents.size(); ++k)
         series.push_back({"q = " + formatted("%g", d.exponents[k]), d.angles, d.cosinePowers[k]});
+      // The step's own exponent on top, so that the reader's q is drawn whatever its value.
+      Series own{"this step: q = " + formatted("%g", d.brdf.exponent), d.angles, {}};
+      for (double degrees : d.angles)
+        own.y.push_back(std::pow(std::cos(degrees * M_PI / 180), d.brdf.exponent));
+      series.push_back(own);
       ChartOptions o{"Phong's lobe cos^q(alpha)",
                      "alpha, from the mirror direction (degrees)",
                      "cos^q(alpha)",
@@ -62,7 +67,7 @@ std::string renderReflectionView(lesson::View view, const lesson::Step& step, co
       o.markers = false;
       writeLineChart(series, o, path);
       return "cos^q(alpha) against the angle alpha between the mirror direction and the viewer, for q = 1, "
-             "2, 4, ..., 128: the larger q, the narrower and sharper the highlight";
+             "2, 4, ..., 128 and the step's own q: the larger q, the narrower and sharper the highlight";
     }
     case lesson::View::Albedo: {
       const Series albedo{"directional albedo", d.incidences, d.albedo};
