@@ -30,15 +30,6 @@ double radians(double degrees) {
   return degrees * kPi / 180.0;
 }
 
-void addPatch(Scene& s, const Polygon& polygon, int surface) {
-  Patch p;
-  p.vertices = polygon;
-  p.normal = newellNormal(polygon).normalized();
-  p.area = polygonArea(polygon);
-  p.surface = surface;
-  s.patches.push_back(p);
-}
-
 // The lobe on a grey square of the surface, the normal, and the incoming ray (an emitter, so that the views
 // outline it as the light), seen from in front of the plane of incidence and above.
 Scene lobeScene(const BrdfLobe& lobe, const Vec3& wi) {
@@ -50,11 +41,11 @@ Scene lobeScene(const BrdfLobe& lobe, const Vec3& wi) {
                  {"normal", Rgb(0.3, 0.45, 0.8), none},
                  {"incoming", Rgb::Constant(0.6), Rgb::Constant(1.0)}};
   s.surfaces = {{"lobe", 0}, {"surface", 1}, {"normal", 2}, {"incoming", 3}};
-  for (const Polygon& t : lobe.triangles) addPatch(s, t, 0);
+  for (const Polygon& t : lobe.triangles) addScenePatch(s, t, 0);
   const double h = 1.3;
-  addPatch(s, {Vec3(-h, -h, 0), Vec3(h, -h, 0), Vec3(h, h, 0), Vec3(-h, h, 0)}, 1);
-  for (const Polygon& side : prism(Vec3(0, 0, 0.005), Vec3(0, 0, 1.15), 0.008)) addPatch(s, side, 2);
-  for (const Polygon& side : prism(1.5 * wi, 0.02 * wi, 0.015)) addPatch(s, side, 3);
+  addScenePatch(s, {Vec3(-h, -h, 0), Vec3(h, -h, 0), Vec3(h, h, 0), Vec3(-h, h, 0)}, 1);
+  for (const Polygon& side : prism(Vec3(0, 0, 0.005), Vec3(0, 0, 1.15), 0.008)) addScenePatch(s, side, 2);
+  for (const Polygon& side : prism(1.5 * wi, 0.02 * wi, 0.015)) addScenePatch(s, side, 3);
   Camera camera;
   camera.position = Vec3(0.6, -4.2, 2.4);
   camera.target = Vec3(0, 0, 0.45);

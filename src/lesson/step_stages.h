@@ -71,6 +71,9 @@ void computeReflection(StageContext& c);
 // The classic ambient radiosity of the local model: the light reflected once (`direct`, per element), its
 // area-weighted mean amplified by 1 / (1 - mean rho); `chosen` > 0 replaces it (the ambient-light key).
 Rgb classicAmbient(const Mesh& mesh, const RgbField& direct, double chosen);
+// Adds `polygon` to a scene a stage builds for itself, as a patch of surface `surface` (normal and area from
+// the polygon).
+void addScenePatch(Scene& scene, const Polygon& polygon, int surface);
 // Rays stage with a `reference`: the `from` element's local lines per surface against the reference's F
 // (lines.<surface>, lines-se.<surface>, lines.<surface>.reference, lines-z.<surface>, lines-z.max, lines).
 void addLocalLineValues(StageContext& c);  // stage_rays.cpp

@@ -43,10 +43,16 @@ std::string renderReflectionView(lesson::View view, const lesson::Step& step, co
       o.caption = d.brdf.model == BrdfModel::Mirror ? "Mirror: all of the light leaves along one direction"
                                                     : "f_r cos(theta) for light from " + incidence;
       writeSceneFigure(mesh, d.lobeScene.cameraOrDefault(), SceneViewData{}, o, path);
-      return "The lobe of the " + modelText(d.brdf) + " BRDF for light arriving " + incidence +
+      if (d.brdf.model == BrdfModel::Mirror)
+        return "The BRDF of an ideal mirror reflecting " + formatted("%.2f", d.brdf.specular) +
+               ", for light arriving " + incidence +
+               " from the normal (the grey shaft; the blue one is the normal): a delta, drawn as a spike "
+               "along "
+               "the mirror direction as long as the fraction it reflects";
+      return "The lobe of the BRDF (" + modelText(d.brdf) + ") for light arriving " + incidence +
              " from the normal (the grey shaft; the blue one is the normal): its distance from the point in "
              "each direction is f_r cos(theta), the light leaving that way, drawn to one size (peak " +
-             formatted("%.3g", d.lobe.peak) + (d.brdf.model == BrdfModel::Mirror ? ")" : " per steradian)");
+             formatted("%.3g", d.lobe.peak) + " per steradian)";
     }
     case lesson::View::PhongSweep: {
       std::vector<Series> series;

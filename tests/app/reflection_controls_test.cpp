@@ -53,7 +53,9 @@ void typeAndExpectRedraw(MainWindow& window, const char* key, const QString& tex
       << window.parameterPanel()->lastRefusal().toStdString();
   const Pictures after = grab(window);
   EXPECT_NE(after.figure, before.figure) << key << ": the figure was not redrawn";
-  if (viewChanges) EXPECT_NE(after.view, before.view) << key << ": the 3D view did not change";
+  if (viewChanges) {
+    EXPECT_NE(after.view, before.view) << key << ": the 3D view did not change";
+  }
   EXPECT_TRUE(window.lastError().isEmpty()) << window.lastError().toStdString();
 }
 
