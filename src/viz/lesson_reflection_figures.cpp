@@ -56,13 +56,20 @@ std::string renderReflectionView(lesson::View view, const lesson::Step& step, co
     }
     case lesson::View::PhongSweep: {
       std::vector<Series> series;
-      for (std::size_t k = 0; k < d.exponents.size(); ++k)
-        series.push_back({"q = " + formatted("%g", d.exponents[k]), d.angles, d.cosinePowers[k]});
-      // The step's own exponent on top, so that the reader's q is drawn whatever its value.
-      Series own{"this step: q = " + formatted("%g", d.brdf.exponent), d.angles, {}};
-      for (double degrees : d.angles)
-        own.y.push_back(std::pow(std::cos(degrees * M_PI / 180), d.brdf.exponent));
-      series.push_back(own);
+      // The step's own exponent is named, or drawn on top when the sweep does not hold it.
+      bool drawn = false;
+      for (std::size_t k = 0; k < d.exponents.size(); ++k) {
+        const bool own = d.exponents[k] == d.brdf.exponent;
+        drawn |= own;
+        series.push_back({"q = " + formatted("%g", d.exponents[k]) + (own ? " (this step)" : ""), d.angles,
+                          d.cosinePowers[k]});
+      }
+      if (!drawn) {
+        Series own{"this step: q = " + formatted("%g", d.brdf.exponent), d.angles, {}};
+        for (double degrees : d.angles)
+          own.y.push_back(std::pow(std::cos(degrees * M_PI / 180), d.brdf.exponent));
+        series.push_back(own);
+      }
       ChartOptions o{"Phong's lobe cos^q(alpha)",
                      "alpha, from the mirror direction (degrees)",
                      "cos^q(alpha)",
