@@ -12,6 +12,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "lesson/step_result.h"
+
 #include "app/lesson_session.h"
 #include "support/test_paths.h"
 
@@ -62,6 +64,12 @@ std::unique_ptr<MainWindow> makeWindow(bool threaded, bool quick) {
   window->show();
   QApplication::processEvents();
   return window;
+}
+
+double stepValue(const MainWindow& window, const std::string& name) {
+  const PipelineResult* r = window.result();
+  if (!r || !r->stepResult) return -1;
+  return static_cast<const lesson::StepResult*>(r->stepResult.get())->value(name).value_or(-1);
 }
 
 void typeInto(QWidget* editor, const QString& text) {

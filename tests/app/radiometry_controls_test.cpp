@@ -10,19 +10,8 @@
 #include "app/parameter_panel.h"
 #include "app/scene_view.h"
 #include "app_test_support.h"
-#include "lesson/step_result.h"
 
 using namespace rt::app;
-
-namespace {
-
-double valueOf(const MainWindow& window, const std::string& name) {
-  const PipelineResult* r = window.result();
-  if (!r || !r->stepResult) return -1;
-  return static_cast<const rt::lesson::StepResult*>(r->stepResult.get())->value(name).value_or(-1);
-}
-
-}  // namespace
 
 TEST(RadiometryControls, MovingThePatchChangesItsSolidAngleAndItsPicture) {
   RT_REQUIRE_DISPLAY();
@@ -37,8 +26,8 @@ TEST(RadiometryControls, MovingThePatchChangesItsSolidAngleAndItsPicture) {
   ASSERT_EQ(window->figuresPane()->figureCount(), 1);
   auto* distance = qobject_cast<QDoubleSpinBox*>(window->parameterPanel()->editor("patch-distance"));
   ASSERT_NE(distance, nullptr) << "patch-distance is offered as a number field";
-  const double before = valueOf(*window, "solid-angle");
-  const double approxBefore = valueOf(*window, "solid-angle.approx");
+  const double before = test::stepValue(*window, "solid-angle");
+  const double approxBefore = test::stepValue(*window, "solid-angle.approx");
   ASSERT_GT(before, 0);
   const QImage picture = window->figuresPane()->grab().toImage();
   const QImage view = window->primaryView()->grab().toImage();
@@ -47,10 +36,10 @@ TEST(RadiometryControls, MovingThePatchChangesItsSolidAngleAndItsPicture) {
   EXPECT_TRUE(window->parameterPanel()->lastRefusal().isEmpty())
       << window->parameterPanel()->lastRefusal().toStdString();
   EXPECT_DOUBLE_EQ(window->parameterPanel()->parameters().patchDistance, 2.0);
-  const double after = valueOf(*window, "solid-angle");
+  const double after = test::stepValue(*window, "solid-angle");
   // Twice as far: about a quarter of the solid angle (exactly a quarter for the small-patch formula).
   EXPECT_LT(after, 0.3 * before);
-  EXPECT_NEAR(valueOf(*window, "solid-angle.approx"), approxBefore / 4, 1e-12);
+  EXPECT_NEAR(test::stepValue(*window, "solid-angle.approx"), approxBefore / 4, 1e-12);
   EXPECT_NE(window->figuresPane()->grab().toImage(), picture) << "the figure was not redrawn";
   EXPECT_NE(window->primaryView()->grab().toImage(), view) << "the 3D view did not move the patch";
   EXPECT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();

@@ -19,12 +19,6 @@ using namespace rt::app;
 
 namespace {
 
-double valueOf(const MainWindow& window, const std::string& name) {
-  const PipelineResult* r = window.result();
-  if (!r || !r->stepResult) return -1;
-  return static_cast<const rt::lesson::StepResult*>(r->stepResult.get())->value(name).value_or(-1);
-}
-
 bool openFigure(MainWindow& window, const std::string& figure) {
   const int lesson = window.library()->indexOf("reflection");
   if (lesson < 0) return false;
@@ -65,27 +59,27 @@ TEST(ReflectionControls, PhongsExponentFractionAndIncidenceChangeTheLobe) {
   RT_REQUIRE_DISPLAY();
   auto window = test::makeWindow();
   ASSERT_TRUE(openFigure(*window, "phong")) << window->lastError().toStdString();
-  const double peak = valueOf(*window, "f.peak");
+  const double peak = test::stepValue(*window, "f.peak");
   ASSERT_GT(peak, 0);
   typeAndExpectRedraw(*window, "phong-exponent", "64");
   EXPECT_DOUBLE_EQ(window->parameterPanel()->parameters().phongExponent, 64.0);
-  EXPECT_GT(valueOf(*window, "f.peak"), 2 * peak) << "a narrower, brighter lobe";
-  const double kd = valueOf(*window, "kd");
+  EXPECT_GT(test::stepValue(*window, "f.peak"), 2 * peak) << "a narrower, brighter lobe";
+  const double kd = test::stepValue(*window, "kd");
   typeAndExpectRedraw(*window, "specular-fraction", "0.9");
-  EXPECT_LT(valueOf(*window, "kd"), kd);
-  EXPECT_NEAR(valueOf(*window, "ks"), 0.9 * valueOf(*window, "reflectance"), 1e-12);
-  const double albedo = valueOf(*window, "albedo");
+  EXPECT_LT(test::stepValue(*window, "kd"), kd);
+  EXPECT_NEAR(test::stepValue(*window, "ks"), 0.9 * test::stepValue(*window, "reflectance"), 1e-12);
+  const double albedo = test::stepValue(*window, "albedo");
   typeAndExpectRedraw(*window, "incidence-angle", "80");
-  EXPECT_LT(valueOf(*window, "albedo"), albedo) << "more of the lobe below the surface";
+  EXPECT_LT(test::stepValue(*window, "albedo"), albedo) << "more of the lobe below the surface";
 }
 
 TEST(ReflectionControls, TheModelMenuAndTheAnisotropyChangeTheLobe) {
   RT_REQUIRE_DISPLAY();
   auto window = test::makeWindow();
   ASSERT_TRUE(openFigure(*window, "anisotropic")) << window->lastError().toStdString();
-  EXPECT_NEAR(valueOf(*window, "alpha-x") / valueOf(*window, "alpha-y"), 4.0, 1e-9);
+  EXPECT_NEAR(test::stepValue(*window, "alpha-x") / test::stepValue(*window, "alpha-y"), 4.0, 1e-9);
   typeAndExpectRedraw(*window, "anisotropy", "1");
-  EXPECT_DOUBLE_EQ(valueOf(*window, "alpha-x"), valueOf(*window, "alpha-y"));
+  EXPECT_DOUBLE_EQ(test::stepValue(*window, "alpha-x"), test::stepValue(*window, "alpha-y"));
 
   auto* model = qobject_cast<QComboBox*>(window->parameterPanel()->editor("brdf-model"));
   ASSERT_NE(model, nullptr) << "brdf-model is offered as a menu";
@@ -98,7 +92,8 @@ TEST(ReflectionControls, TheModelMenuAndTheAnisotropyChangeTheLobe) {
   test::waitForApply();
   ASSERT_TRUE(window->waitUntilIdle(60000));
   EXPECT_EQ(window->parameterPanel()->parameters().brdfModel, "mirror");
-  EXPECT_DOUBLE_EQ(valueOf(*window, "delta"), valueOf(*window, "reflectance")) << "the mirror's delta";
+  EXPECT_DOUBLE_EQ(test::stepValue(*window, "delta"), test::stepValue(*window, "reflectance"))
+      << "the mirror's delta";
   const Pictures after = grab(*window);
   EXPECT_NE(after.figure, before.figure);
   EXPECT_NE(after.view, before.view);
@@ -108,13 +103,13 @@ TEST(ReflectionControls, TheAmbientLightChangesTheLocalPictureOnly) {
   RT_REQUIRE_DISPLAY();
   auto window = test::makeWindow();
   ASSERT_TRUE(openFigure(*window, "phong-local")) << window->lastError().toStdString();
-  const double local = valueOf(*window, "image.local.mean"),
-               radiosity = valueOf(*window, "image.radiosity.mean");
+  const double local = test::stepValue(*window, "image.local.mean"),
+               radiosity = test::stepValue(*window, "image.radiosity.mean");
   ASSERT_GT(local, 0);
   // The 3D view shows the radiosity solution, which the ambient term does not touch.
   typeAndExpectRedraw(*window, "ambient-light", "3", false);
   EXPECT_DOUBLE_EQ(window->parameterPanel()->parameters().ambientLight, 3.0);
-  EXPECT_GT(valueOf(*window, "image.local.mean"), local);
-  EXPECT_DOUBLE_EQ(valueOf(*window, "image.radiosity.mean"), radiosity);
-  EXPECT_NEAR(valueOf(*window, "ambient"), 3.0, 1e-12);
+  EXPECT_GT(test::stepValue(*window, "image.local.mean"), local);
+  EXPECT_DOUBLE_EQ(test::stepValue(*window, "image.radiosity.mean"), radiosity);
+  EXPECT_NEAR(test::stepValue(*window, "ambient"), 3.0, 1e-12);
 }

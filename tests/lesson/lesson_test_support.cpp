@@ -1,11 +1,16 @@
 #include "lesson_test_support.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/input_error.h"
+#include "lesson/lesson_parser.h"
+#include "lesson/step_runner.h"
 #include "support/test_paths.h"
 #ifdef RT_HAVE_EXACT
 #include "exact/exact_reference.h"
@@ -80,6 +85,23 @@ std::string inputErrorOf(const std::function<void()>& f) {
     return e.what();
   }
   return "";
+}
+
+double RanStep::operator[](const std::string& name) const {
+  const auto v = result.value(name);
+  EXPECT_TRUE(v.has_value()) << name;
+  return v.value_or(std::nan(""));
+}
+
+RanStep runShippedStep(const std::string& lesson, const std::string& figure,
+                       const std::function<void(StepParameters&)>& change) {
+  RanStep r{shippedLesson(lesson), {}, {}};
+  r.step = stepWithFigure(r.lesson, figure);
+  if (change) change(r.step.parameters);
+  StepRunner runner(repoFolders().scenes);
+  r.result = runner.run(r.lesson, r.step);
+  EXPECT_NO_THROW(resolvedText(r.lesson, r.step, r.result));
+  return r;
 }
 
 }  // namespace rt::lesson::test

@@ -7,6 +7,7 @@
 
 #include "lesson/lesson.h"
 #include "lesson/lesson_loader.h"
+#include "lesson/step_result.h"
 
 namespace rt::lesson::test {
 
@@ -22,5 +23,16 @@ void ensureAnalyticMethod();
 Lesson oneStepLesson(const std::string& text, int order = 4);
 // The message of the InputError that `f` throws, or "" when it throws none.
 std::string inputErrorOf(const std::function<void()>& f);
+
+// A shipped lesson's step, run as written after `change` to its parameters; its text resolves.
+struct RanStep {
+  Lesson lesson;
+  Step step;
+  StepResult result;
+  // The step's number `name`; a name it does not compute fails the test and reads NaN.
+  double operator[](const std::string& name) const;
+};
+RanStep runShippedStep(const std::string& lesson, const std::string& figure,
+                       const std::function<void(StepParameters&)>& change = {});
 
 }  // namespace rt::lesson::test

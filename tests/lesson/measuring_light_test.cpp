@@ -16,26 +16,11 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-struct Ran {
-  Lesson lesson;
-  Step step;
-  StepResult result;
-  double operator[](const std::string& name) const {
-    const auto v = result.value(name);
-    EXPECT_TRUE(v.has_value()) << name;
-    return v.value_or(std::nan(""));
-  }
-};
+using Ran = test::RanStep;
 
 // Runs the lesson's step that draws `figure`, with `change` applied to its parameters first.
 Ran run(const std::string& figure, const std::function<void(StepParameters&)>& change = {}) {
-  Ran r{test::shippedLesson("measuring-light"), {}, {}};
-  r.step = test::stepWithFigure(r.lesson, figure);
-  if (change) change(r.step.parameters);
-  StepRunner runner(test::repoFolders().scenes);
-  r.result = runner.run(r.lesson, r.step);
-  EXPECT_NO_THROW(resolvedText(r.lesson, r.step, r.result));
-  return r;
+  return test::runShippedStep("measuring-light", figure, change);
 }
 
 TEST(MeasuringLight, TheSmallPatchFormulaOverestimatesTheSolidAngle) {
