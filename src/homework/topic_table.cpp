@@ -62,6 +62,10 @@ const std::vector<Topic>& topicTable() {
       {"ray-tree", "Counting the rays of a ray tracer",
        "the rays of a full ray tree, its shadow rays, the rays per pixel and the image's rays and time",
        "ray-tracing", generateRayTree},
+      {"phong", "A Phong reflection",
+       "a distant lamp and a viewer in the plane of incidence: the angle from the mirror direction, the "
+       "normalised Phong BRDF's specular part and whole value, and the radiance seen",
+       "reflection", generatePhong},
   };
   return table;
 }

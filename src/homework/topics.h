@@ -21,6 +21,7 @@ std::optional<Exercise> generateSpectralRadius(Draw& draw);
 std::optional<Exercise> generateToneMapping(Draw& draw);
 std::optional<Exercise> generateSubdivision(Draw& draw);
 std::optional<Exercise> generateIrradiance(Draw& draw);
+std::optional<Exercise> generatePhong(Draw& draw);
 std::optional<Exercise> generateStochasticJacobi(Draw& draw);
 std::optional<Exercise> generateRayTree(Draw& draw);
 

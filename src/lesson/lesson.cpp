@@ -8,7 +8,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 31> kViews{{
+constexpr std::array<std::pair<View, const char*>, 35> kViews{{
     {View::Scene, "scene"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
@@ -40,6 +40,10 @@ constexpr std::array<std::pair<View, const char*>, 31> kViews{{
     {View::RayCost, "ray-cost"},
     {View::Whitted, "whitted"},
     {View::PathBounces, "path-bounces"},
+    {View::Lobe, "lobe"},
+    {View::PhongSweep, "phong-sweep"},
+    {View::Albedo, "albedo"},
+    {View::PhongLocal, "phong-local"},
 }};
 
 }  // namespace
@@ -124,6 +128,15 @@ const std::vector<StageInfo>& stageTable() {
        "tree of pixel (`pixel-x`, `pixel-y`); path-traced images (`paths`) with 0, 1, 2 and any number of "
        "bounces",
        {V::Scene, V::RayTree, V::Shadows, V::Epsilon, V::RayCost, V::Whitted, V::PathBounces}},
+      {Stage::Reflection,
+       "reflection",
+       "the BRDF `brdf-model` with `phong-exponent`, `specular-fraction` and `anisotropy` for light arriving "
+       "at `incidence-angle`: its lobe f_r cos(theta) in 3D, its directional albedo (energy conservation) "
+       "and "
+       "reciprocity, Phong's lobe for q = 1 ... 128; with a `scene`, the scene lit by Phong local "
+       "illumination plus `ambient-light` beside its radiosity solution (without one, the stage builds the "
+       "lobe as its scene)",
+       {V::Scene, V::Lobe, V::PhongSweep, V::Albedo, V::PhongLocal}},
   };
   return table;
 }

@@ -34,7 +34,8 @@ enum class Stage {
   PathTrace,    // the radiosity image against a path-traced one of the same equation, and the two-pass image
   Scaling,      // the dense matrix's memory and time against n, clustering's links, local lines' noise
   Radiometry,   // a patch seen from a point: solid angle, the cosine law, point against area source
-  RayTrace,  // Whitted ray tracing: one pixel's ray tree, shadows, the epsilon, the cost, against radiosity
+  RayTrace,    // Whitted ray tracing: one pixel's ray tree, shadows, the epsilon, the cost, against radiosity
+  Reflection,  // a BRDF's lobe, albedo and Phong's exponent; with a scene, Phong local light beside radiosity
 };
 
 // The figures a step can ask for; the names match the viz layer's views.
@@ -70,6 +71,10 @@ enum class View {
   RayCost,        // rays per pixel against depth: the cost formula and the counted rays
   Whitted,        // the Whitted picture beside the radiosity solution
   PathBounces,    // path-traced pictures with 0, 1, 2 and any number of diffuse bounces
+  Lobe,           // f_r(w_i, w_o) cos(theta_o) over the hemisphere as a 3D surface, with the incoming ray
+  PhongSweep,     // cos^q(alpha) against alpha for q = 1, 2, 4, ..., 128
+  Albedo,         // the directional albedo against the angle of incidence
+  PhongLocal,     // the scene lit by Phong local illumination plus ambient, beside its radiosity solution
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.
@@ -160,6 +165,12 @@ struct StepParameters {
   double lightSize = 1.0;        // the lights scaled about their centres, power kept
   int pixelX = 64, pixelY = 64;  // the pixel whose ray tree is drawn
   std::string mirrors;           // surfaces that reflect as mirrors, comma-separated
+  // reflection stage: the BRDF shown (core/brdf.h) and the direction light arrives from
+  std::string brdfModel = "phong";
+  double phongExponent = 16.0;    // q
+  double specularFraction = 0.3;  // k_s / (k_d + k_s)
+  double anisotropy = 1.0;        // Ward: alpha_x / alpha_y
+  double incidenceAngle = 45.0;   // degrees from the normal
 };
 
 struct Step {

@@ -286,6 +286,10 @@ class Parser {
         fail(lineOf("scene"),
              "stage 'radiometry' builds its own patch from 'patch-distance', 'patch-tilt' and 'patch-size': "
              "remove 'scene'");
+    } else if (step.stage == Stage::Reflection) {
+      if (step.scene.empty() &&
+          std::find(step.views.begin(), step.views.end(), View::PhongLocal) != step.views.end())
+        fail(lineOf("views"), "the view 'phong-local' lights a scene: add a 'scene'");
     } else if (step.scene.empty()) {
       fail(lineOf("stage"), "stage '" + toString(step.stage) + "' needs a 'scene'");
     }

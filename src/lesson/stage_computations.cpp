@@ -44,22 +44,28 @@ double totalPower(const RgbField& X, const Eigen::VectorXd& areas) {
 
 }  // namespace
 
+Rgb classicAmbient(const Mesh& mesh, const RgbField& direct, double chosen) {
+  // The light not yet accounted for (here: everything reflected once), spread evenly and amplified by the
+  // mean interreflection factor 1 / (1 - mean rho).
+  const Eigen::VectorXd areas = mesh.areas();
+  const double totalArea = areas.sum();
+  Rgb ambient;
+  for (int ch = 0; ch < 3; ++ch) {
+    const double rhoMean = mesh.reflectance.col(ch).dot(areas) / totalArea;
+    const double unshot = direct.col(ch).dot(areas) / totalArea;
+    ambient[ch] = chosen > 0 ? chosen : unshot / (1.0 - rhoMean);
+  }
+  return ambient;
+}
+
 void computeLocal(StageContext& c) {
   StepResult& r = c.result;
   const auto F = mainFormFactors(c);
   const Mesh& mesh = r.mesh;
   const Eigen::VectorXd areas = mesh.areas();
-  const double totalArea = areas.sum();
   // Direct light: what each element reflects of the emitters' light on its first bounce.
   const RgbField direct = (mesh.reflectance.array() * ((*F) * mesh.emission).array()).matrix();
-  // The classic ambient term: the light not yet accounted for (here: everything reflected once), spread
-  // evenly and amplified by the mean interreflection factor 1 / (1 - mean rho).
-  Rgb ambient;
-  for (int ch = 0; ch < 3; ++ch) {
-    const double rhoMean = mesh.reflectance.col(ch).dot(areas) / totalArea;
-    const double unshot = direct.col(ch).dot(areas) / totalArea;
-    ambient[ch] = c.parameters.ambientLight > 0 ? c.parameters.ambientLight : unshot / (1.0 - rhoMean);
-  }
+  const Rgb ambient = classicAmbient(mesh, direct, c.parameters.ambientLight);
   r.local = mesh.emission + direct;
   for (Eigen::Index i = 0; i < r.local.rows(); ++i)
     r.local.row(i) += (mesh.reflectance.row(i).array() * ambient.transpose()).matrix();

@@ -72,14 +72,8 @@ Scene radiometryScene(const Polygon& patch, double distance, double side, bool s
   s.surfaces = {{"patch", 0}, {"point", 1}};
   const double e = 0.03 * std::max(distance, side);
   const Polygon point{{-e, -e, 0}, {e, -e, 0}, {e, e, 0}, {-e, e, 0}};
-  for (const auto& [polygon, surface] : {std::pair{patch, 0}, std::pair{point, 1}}) {
-    Patch p;
-    p.vertices = polygon;
-    p.normal = newellNormal(polygon).normalized();
-    p.area = polygonArea(polygon);
-    p.surface = surface;
-    s.patches.push_back(p);
-  }
+  addScenePatch(s, patch, 0);
+  addScenePatch(s, point, 1);
   const double size = std::max(distance, side);
   Camera camera;
   // From the side the patch turns towards and below its centre: both squares show their fronts.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/polygon.h"
 #include "core/solvers/local_lines_solver.h"
 #include "core/solvers/solver.h"
 #include "lesson/lesson_parser.h"
@@ -9,6 +10,15 @@
 #include "lesson/step_stages.h"
 
 namespace rt::lesson::detail {
+
+void addScenePatch(Scene& scene, const Polygon& polygon, int surface) {
+  Patch p;
+  p.vertices = polygon;
+  p.normal = newellNormal(polygon).normalized();
+  p.area = polygonArea(polygon);
+  p.surface = surface;
+  scene.patches.push_back(p);
+}
 
 SourceLocation StageContext::at(const std::string& key) const {
   auto it = step.fields.find(key);

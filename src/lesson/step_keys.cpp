@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "core/brdf.h"
 #include "core/formfactor/formfactor_method.h"
 #include "homework/topic_table.h"
 #include "lesson/lesson_parser.h"
@@ -23,6 +24,10 @@ const std::vector<std::string>& refineModes() {
 }
 const std::vector<std::string>& homeworkTopics() {
   static const std::vector<std::string> values = homework::topicIds();
+  return values;
+}
+const std::vector<std::string>& brdfModels() {
+  static const std::vector<std::string> values = brdfModelNames();
   return values;
 }
 const std::vector<std::string>& matrixKinds() {
@@ -47,9 +52,10 @@ std::vector<StepKey> makeTable() {
   const std::vector<Stage> computeF{Stage::FormFactors, Stage::Hemicube, Stage::Nusselt,   Stage::Rays,
                                     Stage::Exact,       Stage::Matrix,   Stage::Solve,     Stage::Compare,
                                     Stage::Bounces,     Stage::Local,    Stage::Benchmark, Stage::PathTrace,
-                                    Stage::Scaling,     Stage::RayTrace};
-  const std::vector<Stage> solving{Stage::Solve, Stage::Compare,   Stage::Matrix,  Stage::Local,
-                                   Stage::Exact, Stage::PathTrace, Stage::Scaling, Stage::RayTrace};
+                                    Stage::Scaling,     Stage::RayTrace, Stage::Reflection};
+  const std::vector<Stage> solving{Stage::Solve,   Stage::Compare,  Stage::Matrix,
+                                   Stage::Local,   Stage::Exact,    Stage::PathTrace,
+                                   Stage::Scaling, Stage::RayTrace, Stage::Reflection};
   const std::vector<Stage> seen{Stage::FormFactors, Stage::Hemicube, Stage::Nusselt, Stage::Rays,
                                 Stage::Exact};
   std::vector<StepKey> t;
@@ -276,11 +282,12 @@ std::vector<StepKey> makeTable() {
        .max = 1e9,
        .defaultText = "0",
        .label = "Ambient light",
-       .tooltip = "Local stage: the constant ambient radiosity in W/m^2 (0: the classic estimate).",
+       .tooltip = "Local and reflection stages: the constant ambient radiosity in W/m^2 (0: the classic "
+                  "estimate).",
        .control = true,
        .decimals = 2,
        .step = 0.5,
-       .stages = {Stage::Local},
+       .stages = {Stage::Local, Stage::Reflection},
        .slot = &P::ambientLight});
   add({.name = "paths",
        .type = KeyType::Int,
@@ -452,6 +459,69 @@ std::vector<StepKey> makeTable() {
                   "are diffuse.",
        .stages = {Stage::RayTrace},
        .slot = &P::mirrors});
+  add({.name = "brdf-model",
+       .type = KeyType::Choice,
+       .choices = &brdfModels,
+       .defaultText = "phong",
+       .label = "BRDF model",
+       .tooltip = "Reflection stage: the BRDF whose lobe is drawn: lambertian (ideal diffuse), mirror (ideal "
+                  "specular, a delta), phong (normalised) or ward (anisotropic).",
+       .control = true,
+       .stages = {Stage::Reflection},
+       .slot = &P::brdfModel});
+  add({.name = "phong-exponent",
+       .type = KeyType::Double,
+       .min = 0,
+       .max = 10000,
+       .defaultText = "16",
+       .label = "Phong exponent q",
+       .tooltip =
+           "Reflection stage: Phong's exponent q, the sharpness of the highlight (Ward's lobe takes the "
+           "matching spread alpha = sqrt(2 / (q + 2))).",
+       .control = true,
+       .decimals = 1,
+       .step = 4,
+       .stages = {Stage::Reflection},
+       .slot = &P::phongExponent});
+  add({.name = "specular-fraction",
+       .type = KeyType::Double,
+       .min = 0,
+       .max = 1,
+       .defaultText = "0.3",
+       .label = "Specular fraction k_s / (k_d + k_s)",
+       .tooltip = "Reflection stage: the share of the reflectance that is specular, k_s / (k_d + k_s); the "
+                  "rest is diffuse, so k_d + k_s stays the surface's reflectance.",
+       .control = true,
+       .decimals = 2,
+       .step = 0.05,
+       .stages = {Stage::Reflection},
+       .slot = &P::specularFraction});
+  add({.name = "anisotropy",
+       .type = KeyType::Double,
+       .min = 1,
+       .max = 16,
+       .defaultText = "1",
+       .label = "Anisotropy alpha_x / alpha_y",
+       .tooltip = "Reflection stage: Ward's lobe is alpha_x / alpha_y times wider along the surface's x axis "
+                  "than along y (1: isotropic).",
+       .control = true,
+       .decimals = 1,
+       .step = 0.5,
+       .stages = {Stage::Reflection},
+       .slot = &P::anisotropy});
+  add({.name = "incidence-angle",
+       .type = KeyType::Double,
+       .min = 0,
+       .max = 89,
+       .defaultText = "45",
+       .label = "Incidence angle (degrees)",
+       .tooltip = "Reflection stage: the angle between the surface's normal and the direction the light "
+                  "arrives from, in the plane of the surface's x axis.",
+       .control = true,
+       .decimals = 1,
+       .step = 5,
+       .stages = {Stage::Reflection},
+       .slot = &P::incidenceAngle});
   add({.name = "light-scale",
        .type = KeyType::Double,
        .min = 0,

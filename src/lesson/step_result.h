@@ -15,6 +15,7 @@
 #include "homework/exercise.h"
 #include "lesson/radiometry_data.h"
 #include "lesson/raytrace_data.h"
+#include "lesson/reflection_data.h"
 #include "lesson/scaling_data.h"
 #include "lesson/traced_pictures.h"
 
@@ -84,6 +85,8 @@ struct StepResult {
 
   // Raytrace stage: the Whitted images, one pixel's ray tree and the rays counted against the formula.
   std::shared_ptr<const RayTraceData> raytrace;
+  // Reflection stage: the BRDF, its lobe and albedo; with a scene, the local and radiosity pictures.
+  std::shared_ptr<const ReflectionData> reflection;
 
   // Exercise stage: the question, its answers and worked solution (values: given.<name>, answer.<id>).
   std::optional<homework::Exercise> exercise;

@@ -107,6 +107,10 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
     detail::computeRadiometry(c);
     return result;
   }
+  if (step.stage == Stage::Reflection && step.scene.empty()) {
+    detail::computeReflection(c);  // the lobe is its scene
+    return result;
+  }
 
   try {
     result.scene = scene(step.scene);
@@ -200,6 +204,9 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
       break;
     case Stage::PathTrace:
       detail::computePathTrace(c);
+      break;
+    case Stage::Reflection:
+      detail::computeReflection(c);
       break;
     case Stage::Scaling:
       detail::computeScaling(c);

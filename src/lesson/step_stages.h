@@ -66,6 +66,15 @@ void computePathTrace(StageContext& c);   // stage_pathtrace.cpp
 void computeScaling(StageContext& c);     // stage_scaling.cpp
 void computeRadiometry(StageContext& c);  // stage_radiometry.cpp: builds its own scene, no scene file
 void computeRayTrace(StageContext& c);    // stage_raytrace.cpp
+// stage_reflection.cpp: the BRDF's lobe (its scene when the step names none); with a scene, Phong local
+// illumination beside the radiosity solution.
+void computeReflection(StageContext& c);
+// The classic ambient radiosity of the local model: the light reflected once (`direct`, per element), its
+// area-weighted mean amplified by 1 / (1 - mean rho); `chosen` > 0 replaces it (the ambient-light key).
+Rgb classicAmbient(const Mesh& mesh, const RgbField& direct, double chosen);
+// Adds `polygon` to a scene a stage builds for itself, as a patch of surface `surface` (normal and area from
+// the polygon).
+void addScenePatch(Scene& scene, const Polygon& polygon, int surface);
 // Rays stage with a `reference`: the `from` element's local lines per surface against the reference's F
 // (lines.<surface>, lines-se.<surface>, lines.<surface>.reference, lines-z.<surface>, lines-z.max, lines).
 void addLocalLineValues(StageContext& c);  // stage_rays.cpp

@@ -14,6 +14,7 @@
 #include "viz/hits_chart.h"
 #include "viz/lesson_radiometry_figures.h"
 #include "viz/lesson_raytrace_figures.h"
+#include "viz/lesson_reflection_figures.h"
 #include "viz/lesson_scaling_figures.h"
 #include "viz/lesson_traced_figures.h"
 #include "viz/matrix_view.h"
@@ -347,6 +348,11 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
     case View::Whitted:
     case View::PathBounces:
       return detail::renderRayTraceView(view, step, r, s, path);
+    case View::Lobe:
+    case View::PhongSweep:
+    case View::Albedo:
+    case View::PhongLocal:
+      return detail::renderReflectionView(view, step, r, s, path);
   }
   return "";
 }

@@ -12,6 +12,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "lesson/step_result.h"
+
 #include "app/lesson_session.h"
 #include "lesson/step_result.h"
 #include "support/test_paths.h"

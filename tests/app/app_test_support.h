@@ -22,6 +22,8 @@ QStringList takeWarnings();
 
 // A window over <repo>/lessons and <repo>/scenes, computing on the calling thread unless `threaded`.
 std::unique_ptr<MainWindow> makeWindow(bool threaded = false, bool quick = true);
+// The number `name` of the step the window shows; -1 when it shows no step or the step does not compute it.
+double stepValue(const MainWindow& window, const std::string& name);
 
 // As a reader edits a field: click into `editor` (a spin box or text field), select all, type `text`, press
 // Enter, then wait out the panel's pause so that the change is applied (computations run on the test's

@@ -10,7 +10,6 @@
 #include "app/parameter_panel.h"
 #include "app/scene_view.h"
 #include "app_test_support.h"
-#include "lesson/step_result.h"
 
 using namespace rt::app;
 

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "core/assembly.h"
+#include "core/brdf.h"
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/hemicube.h"
 #include "core/formfactor/nusselt.h"
@@ -363,6 +364,25 @@ TEST(HomeworkIndependent, RayTreeAgreesWithTheCostFormula) {
     EXPECT_EQ(answer(e, "perPixel"), cost.perPixel);
     EXPECT_EQ(answer(e, "total"), cost.total);
     EXPECT_AGREES(e, "seconds", cost.total / (e.given.at("rate") * 1e6), 0.01);
+  });
+}
+
+TEST(HomeworkIndependent, PhongAgreesWithTheCoreBrdf) {
+  forEachVariant("phong", [](const Exercise& e) {
+    // The lamp at theta_i on the -x side, the viewer at theta_o on the +x side, in the x-z plane.
+    const double toRadians = std::numbers::pi / 180;
+    const Vec3 wi = directionAt(e.given.at("incidence") * toRadians, std::numbers::pi);
+    const Vec3 wo = directionAt(e.given.at("view") * toRadians, 0);
+    Brdf phong;
+    phong.model = BrdfModel::Phong;
+    phong.diffuse = e.given.at("kd");
+    phong.specular = e.given.at("ks");
+    phong.exponent = e.given.at("q");
+    const double f = evaluateBrdf(phong, wi, wo);
+    EXPECT_AGREES(e, "alpha", std::acos(mirrorDirection(wi).dot(wo)) / toRadians, 0.1);
+    EXPECT_AGREES(e, "f", f, 0.01);
+    EXPECT_AGREES(e, "fs", f - phong.diffuse / std::numbers::pi, 0.01);
+    EXPECT_AGREES(e, "L", f * e.given.at("H"), 0.01);
   });
 }
 

@@ -1,0 +1,33 @@
+// What a reflection step computes: the BRDF the step's keys choose, its lobe for the step's incidence as a
+// surface, its directional albedo against incidence (energy conservation) and Phong's cos^q for q = 1 ...
+// 128; with a scene, the scene lit by Phong local illumination plus an ambient term and its radiosity
+// solution, both through the scene's camera. The viz layer draws these; the numbers are also the step's
+// placeholders.
+#pragma once
+
+#include <vector>
+
+#include "core/brdf.h"
+#include "core/brdf_lobe.h"
+#include "core/io/rgb_image.h"
+#include "core/scene.h"
+
+namespace rt::lesson {
+
+struct ReflectionData {
+  Brdf brdf;
+  double incidenceDegrees = 0;
+  Vec3 wi = Vec3::UnitZ();  // towards the light, in the surface's frame (z the normal)
+  BrdfLobe lobe;
+  Scene lobeScene;  // the lobe, the surface, the normal and the incoming ray, as patches to draw
+  // Albedo against incidence (degrees), in the plane of x.
+  std::vector<double> incidences, albedo;
+  // Phong's cos^q(alpha) against alpha (degrees), one curve per exponent.
+  std::vector<double> exponents, angles;
+  std::vector<std::vector<double>> cosinePowers;
+  // With a scene: Phong local illumination plus ambient, and the radiosity solution, through its camera.
+  RgbImage local, radiosity;
+  Rgb ambient = Rgb::Zero();
+};
+
+}  // namespace rt::lesson
