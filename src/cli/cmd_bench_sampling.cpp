@@ -58,20 +58,20 @@ void run(const BenchArguments& a) {
   const std::string csvPath = a.output + "/sampling.csv";
   std::ofstream csv(csvPath);
   if (!csv) throw InputError({csvPath}, "cannot write the benchmark table");
-  csv << "variant,rays_per_iteration,rays,seconds,rms_error,reported_standard_error\n";
+  csv << "variant,rays_per_iteration,rays,row_sum_rays,seconds,rms_error,reported_standard_error\n";
   std::printf(
       "scene %s, %zu elements, solver %s (tolerance %g), reference: direct solve of F by %s; %d seeds "
       "per point\n",
       a.scene.c_str(), mesh.size(), a.solver.c_str(), a.tolerance, a.formFactors.c_str(), a.seeds);
-  std::printf("%-18s %12s %12s %10s %12s %12s\n", "variant", "rays/it", "rays", "seconds", "rms error",
-              "reported SE");
+  std::printf("%-18s %12s %12s %12s %10s %12s %12s\n", "variant", "rays/it", "rays", "row sums", "seconds",
+              "rms error", "reported SE");
   for (const SamplingSeries& s : series) {
     for (const SamplingPoint& p : s.points) {
-      std::printf("%-18s %12ld %12.0f %10.4f %12.4e %12.4e\n", s.variant.name.c_str(), p.raysPerIteration,
-                  p.rays, p.seconds, p.error, p.standardError);
+      std::printf("%-18s %12ld %12.0f %12.0f %10.4f %12.4e %12.4e\n", s.variant.name.c_str(),
+                  p.raysPerIteration, p.rays, p.rowSumRays, p.seconds, p.error, p.standardError);
       char line[200];
-      std::snprintf(line, sizeof line, "%s,%ld,%.0f,%.6g,%.6g,%.6g\n", s.variant.name.c_str(),
-                    p.raysPerIteration, p.rays, p.seconds, p.error, p.standardError);
+      std::snprintf(line, sizeof line, "%s,%ld,%.0f,%.0f,%.6g,%.6g,%.6g\n", s.variant.name.c_str(),
+                    p.raysPerIteration, p.rays, p.rowSumRays, p.seconds, p.error, p.standardError);
       csv << line;
     }
   }

@@ -8,7 +8,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 25> kViews{{
+constexpr std::array<std::pair<View, const char*>, 26> kViews{{
     {View::Scene, "scene"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
@@ -34,6 +34,7 @@ constexpr std::array<std::pair<View, const char*>, 25> kViews{{
     {View::CosineLaw, "cosine-law"},
     {View::InverseSquare, "inverse-square"},
     {View::Hits, "hits"},
+    {View::SamplingError, "sampling-error"},
 }};
 
 }  // namespace
@@ -110,6 +111,13 @@ const std::vector<StageInfo>& stageTable() {
        "irradiance of a point source and of a square of the same power against distance (no scene: the "
        "stage builds its own)",
        {V::Scene, V::SolidAngle, V::CosineLaw, V::InverseSquare}},
+      {Stage::Sampling,
+       "sampling",
+       "B by a direct solve of F with `method` (the reference); `solver` (local-lines or "
+       "local-lines-regular) with plain Monte Carlo lines, the constant control variate and Sobol lines, "
+       "at each of `sweep` rays per iteration and four seeds from `seed`: RMS error against the reference, "
+       "rays, time, and the log-log slope of error against rays",
+       {V::Scene, V::SamplingError}},
   };
   return table;
 }

@@ -33,6 +33,7 @@ enum class Stage {
   PathTrace,    // the radiosity image against a path-traced one of the same equation, and the two-pass image
   Scaling,      // the dense matrix's memory and time against n, clustering's links, local lines' noise
   Radiometry,   // a patch seen from a point: solid angle, the cosine law, point against area source
+  Sampling,     // plain Monte Carlo, control variate and quasi-Monte Carlo lines: error against rays
 };
 
 // The figures a step can ask for; the names match the viz layer's views.
@@ -62,6 +63,7 @@ enum class View {
   CosineLaw,      // irradiance on the patch against its tilt
   InverseSquare,  // irradiance against distance from a point source and from a square of the same power
   Hits,           // rays stage: the local lines' hit fractions per surface with their standard errors, and F
+  SamplingError,  // sampling stage: error against rays per variance reduction, log-log, with fitted slopes
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.
@@ -108,10 +110,13 @@ struct StepParameters {
   std::optional<int> samples;                  // raycast / montecarlo samples
   std::optional<double> formFactorTolerance;   // quadrature / exact: the form factors' tolerance
   std::optional<std::uint64_t> seed;
-  std::optional<int> subdivide;   // N x N per patch
-  std::optional<double> maxEdge;  // or: split until no edge is longer than this
-  std::vector<int> subdivisions;  // compare: several subdivision levels
-  std::vector<int> sweep;         // benchmark: resolutions (hemicube) or samples (rays) to try
+  std::string sampling = "random";  // montecarlo, local-lines solvers: random or Sobol lines
+  bool controlVariate = false;      // local-lines solvers: a constant control variate
+  std::optional<int> subdivide;     // N x N per patch
+  std::optional<double> maxEdge;    // or: split until no edge is longer than this
+  bool splitAtContacts = false;     // with subdivide or maxEdge: cut patches where other surfaces stand
+  std::vector<int> subdivisions;    // compare: several subdivision levels
+  std::vector<int> sweep;           // benchmark: resolutions (hemicube) or samples (rays) to try
   std::string solver = "gauss-seidel";
   std::vector<std::string> solvers;  // compare: several solvers
   std::optional<int> iterations;     // maximum iterations

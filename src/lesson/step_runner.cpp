@@ -199,6 +199,9 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
     case Stage::Scaling:
       detail::computeScaling(c);
       break;
+    case Stage::Sampling:
+      detail::computeSampling(c);
+      break;
   }
   if (result.B.rows() == static_cast<Eigen::Index>(result.mesh.size()))
     detail::addSurfaceValues(result, "B", result.B);

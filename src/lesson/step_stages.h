@@ -65,6 +65,7 @@ void computeRefine(StageContext& c);
 void computePathTrace(StageContext& c);   // stage_pathtrace.cpp
 void computeScaling(StageContext& c);     // stage_scaling.cpp
 void computeRadiometry(StageContext& c);  // stage_radiometry.cpp: builds its own scene, no scene file
+void computeSampling(StageContext& c);    // stage_sampling.cpp
 // Rays stage with a `reference`: the `from` element's local lines per surface against the reference's F
 // (lines.<surface>, lines-se.<surface>, lines.<surface>.reference, lines-z.<surface>, lines-z.max, lines).
 void addLocalLineValues(StageContext& c);  // stage_rays.cpp

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/power_law.h"
+#include "core/solvers/line_shooting.h"
 #include "core/solvers/solver_support.h"
 
 namespace rt {
@@ -59,7 +60,12 @@ std::vector<SamplingSeries> runSamplingStudy(const RadiositySystem& system, cons
         const RgbField B = solver->compute(system).solve();
         const double error = solver_detail::relativeAreaRms(B - reference, reference, system.areas);
         squares += error * error;
-        point.rays += double(used) / seeds;
+        // The row sums are estimated once, the first time a nonzero beta needs them (local_lines_solver.h).
+        const double rowSums = variant.controlVariate && used > long(kRowSumLines * system.size())
+                                   ? double(kRowSumLines) * double(system.size())
+                                   : 0.0;
+        point.rays += (double(used) - rowSums) / seeds;
+        point.rowSumRays += rowSums / seeds;
         point.seconds += seconds / seeds;
         point.standardError +=
             solver_detail::relativeAreaRms(solver->standardError(), B, system.areas) / seeds;

@@ -1,8 +1,9 @@
 // Plain Monte Carlo, the constant control variate and quasi-Monte Carlo lines side by side (Dutré, Bekaert
 // and Bala 2006, sec. 6.6): a line-tracing solver is run at several ray budgets and several seeds with each
 // variant, and its error against a reference solution is fitted against the rays on a log-log scale (plain
-// Monte Carlo: rays^-1/2). The rays counted include the control variate's row sums, a fixed cost that
-// weighs most at small budgets. `radiosity bench sampling` prints it (docs/benchmarks.md) and the lessons'
+// Monte Carlo: rays^-1/2). The control variate's row sums are counted apart, as a fixed cost that does not
+// grow with the budget (counted in, they would weigh most at small budgets and bend the slope).
+// `radiosity bench sampling` prints it (docs/benchmarks.md) and the lessons'
 // sampling stage draws it.
 #pragma once
 
@@ -23,7 +24,8 @@ const std::vector<SamplingVariant>& samplingVariants();
 
 struct SamplingPoint {
   long raysPerIteration = 0;
-  double rays = 0;           // mean over the seeds of all the rays used (the row sums' included)
+  double rays = 0;           // mean over the seeds of the rays the iterations shot
+  double rowSumRays = 0;     // the control variate's row sums: a fixed cost, paid once, not in `rays`
   double seconds = 0;        // mean run time
   double error = 0;          // root mean square over the seeds of the area-weighted relative RMS error
   double standardError = 0;  // mean over the seeds of the solver's own estimate, in the same measure
