@@ -105,8 +105,9 @@ SolverStatus walkSolve(const RadiositySystem& system, RgbField& B, const SolverO
     rec.emittedPower = emitted;
     rec.absorbedPower = absorbed / W;
     rec.escapedPower = escaped / W;
-    rec.residual = system.relativeResidual(B);
     rec.standardError = relativeAreaRms(se, B, A);
+    // Without F (continuous walks) there is no residual to compute: the stopping measure stands in for it.
+    rec.residual = system.F ? system.relativeResidual(B) : rec.standardError;
     rec.rays = walks;
     rec.seconds = clock.seconds();
     const bool done = !truncated && rec.standardError <= options.tolerance;
