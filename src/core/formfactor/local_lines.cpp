@@ -30,8 +30,10 @@ std::vector<LocalLine> shootLocalLines(const Mesh& mesh, const RayScene& scene, 
       const Vec2 s = jitteredSample(k, count, random);
       u[0] = s.x();
       u[1] = s.y();
-      u[2] = random.uniform();
+      // The direction's second number first: the order the earlier code's arguments were evaluated in, so
+      // that a seed gives the lines it always gave.
       u[3] = random.uniform();
+      u[2] = random.uniform();
     }
     LocalLine line;
     line.origin = pointOnPolygon(a.v.data(), a.count, u[0], u[1]) + lift * normal;
