@@ -4,7 +4,7 @@ set -euo pipefail
 packages=(
   cmake g++ ninja-build pkg-config ccache clang-format clang libclang-rt-14-dev llvm
   libvtk9-dev qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev libqt6openglwidgets6 qt6-charts-dev qt6-svg-dev
-  libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libgtest-dev libembree-dev libtbb-dev
+  libeigen3-dev libboost-dev libcgal-dev libgmp-dev libmpfr-dev libgtest-dev libembree-dev libtbb-dev
   nlohmann-json3-dev libcli11-dev libmd4c-dev libmd4c-html0-dev
   qt6-webengine-dev libjs-katex poppler-utils librsvg2-bin
   xvfb xauth mesa-utils libgl1-mesa-dri fonts-dejavu-core

@@ -15,6 +15,7 @@
 #include "cli/commands.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/formfactor/shaft_culling.h"
+#include "core/power_law.h"
 #ifdef RT_HAVE_VIZ
 #include "viz/chart.h"
 #endif
@@ -47,19 +48,6 @@ FormFactorOptions optionsFor(const std::string& method, int value, std::uint64_t
   o.seed = seed;
   const AccuracyKnob knob = accuracyKnobOf(method);
   return knob.applied(o, knob.fromSweep(value));
-}
-
-// Least-squares slope of log(y) against log(x) (points with y > 0 only).
-double logLogSlope(const std::vector<double>& x, const std::vector<double>& y) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  int n = 0;
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    if (!(x[k] > 0 && y[k] > 0)) continue;
-    const double lx = std::log(x[k]), ly = std::log(y[k]);
-    sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly, ++n;
-  }
-  const double d = n * sxx - sx * sx;
-  return n >= 2 && d != 0 ? (n * sxy - sx * sy) / d : std::nan("");
 }
 
 void run(const BenchArguments& a) {

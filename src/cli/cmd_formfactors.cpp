@@ -26,6 +26,7 @@ struct FormFactorsArguments {
   std::string method = defaultFormFactorMethod();
   MeshArguments mesh;
   FormFactorOptions options;
+  std::string sampling = "random";
   bool enforceReciprocity = false;
   bool normalizeRows = false;
   bool quiet = false;
@@ -81,7 +82,9 @@ void run(const FormFactorsArguments& a) {
   if (!a.compareTo.empty()) checkShape(reference, static_cast<Eigen::Index>(mesh.size()), a.compareTo);
   FormFactorStats stats;
   ProgressLine progress(!a.quiet);
-  FormFactorMatrix F = method->compute(mesh, a.options, progress, stats);
+  FormFactorOptions options = a.options;
+  options.sampling = parseLineSampling(a.sampling).value_or(LineSampling::Random);
+  FormFactorMatrix F = method->compute(mesh, options, progress, stats);
   progress.finish();
   const Eigen::VectorXd areas = mesh.areas();
   std::string repairs;
@@ -141,6 +144,7 @@ void addFormFactorsCommand(CLI::App& app) {
       "Print the error against a reference matrix (.npy, e.g. written by --method exact --output)");
   command->add_option("--seed", arguments->options.seed, "Seed of the stochastic methods")
       ->capture_default_str();
+  addSettingOption(*command, "sampling", arguments->sampling);
   command->add_option("--threads", arguments->options.threads, "Worker threads (0 = all cores)")
       ->check(CLI::NonNegativeNumber);
   command->add_flag(

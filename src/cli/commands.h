@@ -15,9 +15,10 @@ void addMatrixCommand(CLI::App& app);
 void addFigureCommand(CLI::App& app);
 void addLessonCommand(CLI::App& app);
 void addBookCommand(CLI::App& app);
-// `radiosity bench formfactors` and `radiosity bench solvers` share the `bench` parent.
+// `radiosity bench formfactors`, `solvers` and `sampling` share the `bench` parent.
 void addBenchFormFactorsCommand(CLI::App& bench);
 void addBenchSolversCommand(CLI::App& bench);
+void addBenchSamplingCommand(CLI::App& bench);
 // `radiosity homework new`, `check` and `topics` share the `homework` parent.
 void addHomeworkNewCommand(CLI::App& homework);
 void addHomeworkPdfCommand(CLI::App& homework);

@@ -61,6 +61,7 @@ int main(int argc, char** argv) {
   bench->require_subcommand(1);
   rt::cli::addBenchFormFactorsCommand(*bench);
   rt::cli::addBenchSolversCommand(*bench);
+  rt::cli::addBenchSamplingCommand(*bench);
   auto* homework = app.add_subcommand("homework", "Randomised exercises with answer keys, and their grading");
   homework->require_subcommand(1);
   rt::cli::addHomeworkNewCommand(*homework);

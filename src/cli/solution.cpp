@@ -16,6 +16,8 @@ void SolutionArguments::add(CLI::App& command) {
   addSettingOption(command, "iterations", maxIterations);
   addSettingOption(command, "seed", seed);
   addSettingOption(command, "rays-per-iteration", raysPerIteration);
+  addSettingOption(command, "sampling", sampling);
+  addSettingFlag(command, "control-variate", controlVariate);
   addSettingOption(command, "cluster-tolerance", clusterTolerance);
   addSettingOption(command, "resolution", resolution);
   addSettingOption(command, "samples", samples);
@@ -30,6 +32,7 @@ FormFactorOptions SolutionArguments::formFactorOptions() const {
   options.samples = samples;
   options.tolerance = formFactorTolerance;
   options.seed = seed;
+  options.sampling = parseLineSampling(sampling).value_or(LineSampling::Random);
   return options;
 }
 
@@ -39,6 +42,8 @@ SolverOptions SolutionArguments::solverOptions() const {
   options.maxIterations = maxIterations;
   options.seed = seed;
   options.raysPerIteration = raysPerIteration;
+  options.sampling = parseLineSampling(sampling).value_or(LineSampling::Random);
+  options.controlVariate = controlVariate;
   options.clusterTolerance = clusterTolerance;
   options.ambient = ambient;
   options.recordHistory = false;

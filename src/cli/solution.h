@@ -19,8 +19,10 @@ struct SolutionArguments {
   double tolerance = 1e-6;
   int maxIterations = 0;  // automatic
   std::uint64_t seed = 1;
-  int raysPerIteration = 0;     // stochastic solvers; 0 = automatic
-  double clusterTolerance = 0;  // hierarchical-clustering; 0 = automatic
+  int raysPerIteration = 0;         // stochastic solvers; 0 = automatic
+  std::string sampling = "random";  // montecarlo method, local-lines solvers
+  bool controlVariate = false;      // local-lines solvers
+  double clusterTolerance = 0;      // hierarchical-clustering; 0 = automatic
   int resolution = 128;
   int samples = 16;
   double formFactorTolerance = 0;  // the method's own

@@ -8,7 +8,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 35> kViews{{
+constexpr std::array<std::pair<View, const char*>, 36> kViews{{
     {View::Scene, "scene"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
@@ -44,6 +44,7 @@ constexpr std::array<std::pair<View, const char*>, 35> kViews{{
     {View::PhongSweep, "phong-sweep"},
     {View::Albedo, "albedo"},
     {View::PhongLocal, "phong-local"},
+    {View::SamplingError, "sampling-error"},
 }};
 
 }  // namespace
@@ -137,6 +138,13 @@ const std::vector<StageInfo>& stageTable() {
        "illumination plus `ambient-light` beside its radiosity solution (without one, the stage builds the "
        "lobe as its scene)",
        {V::Scene, V::Lobe, V::PhongSweep, V::Albedo, V::PhongLocal}},
+      {Stage::Sampling,
+       "sampling",
+       "B by a direct solve of F with `method` (the reference); `solver` (local-lines or "
+       "local-lines-regular) with plain Monte Carlo lines, the constant control variate and Sobol lines, "
+       "at each of `sweep` rays per iteration and four seeds from `seed`: RMS error against the reference, "
+       "rays, time, and the log-log slope of error against rays",
+       {V::Scene, V::SamplingError}},
   };
   return table;
 }

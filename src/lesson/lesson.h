@@ -36,6 +36,7 @@ enum class Stage {
   Radiometry,   // a patch seen from a point: solid angle, the cosine law, point against area source
   RayTrace,    // Whitted ray tracing: one pixel's ray tree, shadows, the epsilon, the cost, against radiosity
   Reflection,  // a BRDF's lobe, albedo and Phong's exponent; with a scene, Phong local light beside radiosity
+  Sampling,    // plain Monte Carlo, control variate and quasi-Monte Carlo lines: error against rays
 };
 
 // The figures a step can ask for; the names match the viz layer's views.
@@ -75,6 +76,7 @@ enum class View {
   PhongSweep,     // cos^q(alpha) against alpha for q = 1, 2, 4, ..., 128
   Albedo,         // the directional albedo against the angle of incidence
   PhongLocal,     // the scene lit by Phong local illumination plus ambient, beside its radiosity solution
+  SamplingError,  // sampling stage: error against rays per variance reduction, log-log, with fitted slopes
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.
@@ -121,10 +123,13 @@ struct StepParameters {
   std::optional<int> samples;                 // raycast / montecarlo samples
   std::optional<double> formFactorTolerance;  // quadrature / exact: the form factors' tolerance
   std::optional<std::uint64_t> seed;
-  std::optional<int> subdivide;   // N x N per patch
-  std::optional<double> maxEdge;  // or: split until no edge is longer than this
-  std::vector<int> subdivisions;  // compare: several subdivision levels
-  std::vector<int> sweep;         // benchmark: resolutions (hemicube) or samples (rays) to try
+  std::string sampling = "random";  // montecarlo, local-lines solvers: random or Sobol lines
+  bool controlVariate = false;      // local-lines solvers: a constant control variate
+  std::optional<int> subdivide;     // N x N per patch
+  std::optional<double> maxEdge;    // or: split until no edge is longer than this
+  bool splitAtContacts = false;     // with subdivide or maxEdge: cut patches where other surfaces stand
+  std::vector<int> subdivisions;    // compare: several subdivision levels
+  std::vector<int> sweep;           // benchmark: resolutions (hemicube) or samples (rays) to try
   std::string solver = "gauss-seidel";
   std::vector<std::string> solvers;  // compare: several solvers
   std::optional<int> iterations;     // maximum iterations

@@ -5,6 +5,7 @@
 
 #include "core/brdf.h"
 #include "core/formfactor/formfactor_method.h"
+#include "core/formfactor/line_sampling.h"
 #include "homework/topic_table.h"
 #include "lesson/lesson_parser.h"
 #include "lesson/value_parsing.h"
@@ -49,13 +50,13 @@ std::string number(double v) {
 
 // One row per key. Order: what the step is, what it computes with, how it solves, how it is shown.
 std::vector<StepKey> makeTable() {
-  const std::vector<Stage> computeF{Stage::FormFactors, Stage::Hemicube, Stage::Nusselt,   Stage::Rays,
-                                    Stage::Exact,       Stage::Matrix,   Stage::Solve,     Stage::Compare,
-                                    Stage::Bounces,     Stage::Local,    Stage::Benchmark, Stage::PathTrace,
-                                    Stage::Scaling,     Stage::RayTrace, Stage::Reflection};
-  const std::vector<Stage> solving{Stage::Solve,   Stage::Compare,  Stage::Matrix,
-                                   Stage::Local,   Stage::Exact,    Stage::PathTrace,
-                                   Stage::Scaling, Stage::RayTrace, Stage::Reflection};
+  const std::vector<Stage> computeF{Stage::FormFactors, Stage::Hemicube, Stage::Nusselt,    Stage::Rays,
+                                    Stage::Exact,       Stage::Matrix,   Stage::Solve,      Stage::Compare,
+                                    Stage::Bounces,     Stage::Local,    Stage::Benchmark,  Stage::PathTrace,
+                                    Stage::Scaling,     Stage::RayTrace, Stage::Reflection, Stage::Sampling};
+  const std::vector<Stage> solving{Stage::Solve,      Stage::Compare,   Stage::Matrix,  Stage::Local,
+                                   Stage::Exact,      Stage::PathTrace, Stage::Scaling, Stage::RayTrace,
+                                   Stage::Reflection, Stage::Sampling};
   const std::vector<Stage> seen{Stage::FormFactors, Stage::Hemicube, Stage::Nusselt, Stage::Rays,
                                 Stage::Exact};
   std::vector<StepKey> t;
@@ -156,6 +157,16 @@ std::vector<StepKey> makeTable() {
        .control = true,
        .logScale = true,
        .slot = &P::maxEdge});
+  add({.name = "split-at-contacts",
+       .type = KeyType::Bool,
+       .defaultText = "false",
+       .label = "Split at contacts",
+       .tooltip =
+           "With subdivide or max-edge: first cut every patch along the lines where other surfaces stand "
+           "on it, so that no element straddles a block's footprint (an element partly under a block "
+           "sends part of its light into the block, where it is lost).",
+       .control = true,
+       .slot = &P::splitAtContacts});
   add({.name = "subdivisions",
        .type = KeyType::Ints,
        .min = 1,
@@ -171,8 +182,9 @@ std::vector<StepKey> makeTable() {
        .label = "Sweep",
        .tooltip =
            "The values of each method's accuracy knob a benchmark tries (a resolution or a count; for "
-           "a tolerance, the digits d of 10^-d); scaling: the rays per element local lines is run with.",
-       .stages = {Stage::Benchmark, Stage::Scaling},
+           "a tolerance, the digits d of 10^-d); scaling: the rays per element local lines is run with; "
+           "sampling: the rays per iteration of each run.",
+       .stages = {Stage::Benchmark, Stage::Scaling, Stage::Sampling},
        .slot = &P::sweep});
   add({.name = "solver",
        .type = KeyType::Choice,
@@ -242,6 +254,29 @@ std::vector<StepKey> makeTable() {
        .zeroText = "automatic",
        .stages = solving,
        .slot = &P::raysPerIteration});
+  add({.name = "sampling",
+       .type = KeyType::Choice,
+       .choices = &lineSamplingNames,
+       .defaultText = "random",
+       .label = "Line sampling",
+       .tooltip = "How local lines draw their origins and directions (the montecarlo method; the local-lines "
+                  "solvers, which also draw each line's source): random, pseudo-random numbers; sobol, the "
+                  "points of a scrambled Sobol sequence, spread more evenly, so the error falls faster than "
+                  "1/sqrt(rays).",
+       .control = true,
+       .stages = computeF,
+       .slot = &P::sampling});
+  add({.name = "control-variate",
+       .type = KeyType::Bool,
+       .defaultText = "false",
+       .label = "Control variate",
+       .tooltip =
+           "local-lines solvers: shoot B - beta instead of B, beta the area-weighted median radiosity, "
+           "and add back the known part beta times each element's row sum (estimated once by "
+           "lines); less power shot, less noise.",
+       .control = true,
+       .stages = solving,
+       .slot = &P::controlVariate});
   add({.name = "cluster-tolerance",
        .type = KeyType::Double,
        .min = 0,

@@ -12,6 +12,7 @@
 #include "core/mesh.h"
 #include "core/pipeline/pipeline.h"
 #include "core/scene.h"
+#include "core/solvers/sampling_study.h"
 #include "homework/exercise.h"
 #include "lesson/radiometry_data.h"
 #include "lesson/raytrace_data.h"
@@ -79,6 +80,9 @@ struct StepResult {
 
   // Scaling stage: the dense method's cost and the clustering and local-lines solvers' against n and rays.
   std::shared_ptr<const ScalingData> scaling;
+
+  // Sampling stage: error against rays for plain Monte Carlo, the control variate and Sobol lines.
+  std::shared_ptr<const std::vector<SamplingSeries>> sampling;
 
   // Radiometry stage: the patch, its solid angle and the irradiance curves.
   std::shared_ptr<const RadiometryData> radiometry;

@@ -214,6 +214,9 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
     case Stage::RayTrace:
       detail::computeRayTrace(c);
       break;
+    case Stage::Sampling:
+      detail::computeSampling(c);
+      break;
   }
   if (result.B.rows() == static_cast<Eigen::Index>(result.mesh.size()))
     detail::addSurfaceValues(result, "B", result.B);

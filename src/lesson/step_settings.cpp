@@ -11,10 +11,12 @@ MeshOptions meshOptionsFor(const StepParameters& p) {
     o.mode = MeshOptions::Mode::MaxEdge;
     o.maxEdge = *p.maxEdge;
   }
+  o.splitAtContacts = p.splitAtContacts && o.mode != MeshOptions::Mode::None;
   return o;
 }
 
 void setMeshOptions(StepParameters& p, const MeshOptions& options) {
+  p.splitAtContacts = options.splitAtContacts;
   switch (options.mode) {
     case MeshOptions::Mode::Count:
       p.subdivide = options.count;
@@ -38,6 +40,7 @@ FormFactorOptions formFactorOptionsFor(const StepParameters& p, const std::strin
   if (p.samples) o.samples = *p.samples;
   if (p.formFactorTolerance) o.tolerance = *p.formFactorTolerance;
   if (p.seed) o.seed = *p.seed;
+  o.sampling = parseLineSampling(p.sampling).value_or(LineSampling::Random);
   if (sweepValue > 0) {
     const AccuracyKnob knob = accuracyKnobOf(method);
     o = knob.applied(o, knob.fromSweep(static_cast<int>(sweepValue)));
@@ -54,6 +57,8 @@ SolverOptions solverOptionsFor(const StepParameters& p) {
   if (p.clusterTolerance) o.clusterTolerance = *p.clusterTolerance;
   if (p.seed) o.seed = *p.seed;
   o.ambient = p.ambient;
+  o.sampling = parseLineSampling(p.sampling).value_or(LineSampling::Random);
+  o.controlVariate = p.controlVariate;
   return o;
 }
 

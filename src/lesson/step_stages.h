@@ -75,6 +75,7 @@ Rgb classicAmbient(const Mesh& mesh, const RgbField& direct, double chosen);
 // Adds `polygon` to a scene a stage builds for itself, as a patch of surface `surface` (normal and area from
 // the polygon).
 void addScenePatch(Scene& scene, const Polygon& polygon, int surface);
+void computeSampling(StageContext& c);  // stage_sampling.cpp
 // Rays stage with a `reference`: the `from` element's local lines per surface against the reference's F
 // (lines.<surface>, lines-se.<surface>, lines.<surface>.reference, lines-z.<surface>, lines-z.max, lines).
 void addLocalLineValues(StageContext& c);  // stage_rays.cpp

@@ -9,6 +9,7 @@
 
 #include "core/io/rgb_image.h"
 #include "core/pathtrace/path_tracer.h"
+#include "core/power_law.h"
 
 namespace rt::lesson {
 
@@ -31,9 +32,7 @@ struct TracedPictures {
   std::map<std::string, double> values;  // the step's numbers about them (rms.radiosity, seconds.trace...)
 };
 
-// Least-squares slope of log y against log x over the points where both are positive (0 with fewer than
-// two).
-double logLogSlope(const std::vector<double>& x, const std::vector<double>& y);
+using rt::logLogSlope;  // core/power_law.h
 
 // Mean over pixels and channels of an image (0 for an empty one).
 double imageMean(const RgbImage& image);

@@ -130,7 +130,8 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
             static_cast<int>(r.formFactorStats.raysCast / std::max<std::size_t>(1, r.mesh.size()));
         const RayScene scene(r.mesh);
         std::vector<LocalLine> lines =
-            shootLocalLines(r.mesh, scene, r.sourceElement, count, step.parameters.seed.value_or(1));
+            shootLocalLines(r.mesh, scene, r.sourceElement, count, step.parameters.seed.value_or(1),
+                            parseLineSampling(step.parameters.sampling).value_or(LineSampling::Random));
         if (lines.size() > 300) lines.resize(300);
         RaysViewOptions o;
         o.size = {s.width, s.height, 96.0};
@@ -353,6 +354,8 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
     case View::Albedo:
     case View::PhongLocal:
       return detail::renderReflectionView(view, step, r, s, path);
+    case View::SamplingError:
+      return detail::renderSamplingView(r, s, path);
   }
   return "";
 }

@@ -118,4 +118,31 @@ std::string renderScalingView(lesson::View view, const lesson::Step& step, const
   throw std::runtime_error(path + ": not a view of the scaling stage");
 }
 
+std::string renderSamplingView(const lesson::StepResult& r, const StepFigureSettings& s,
+                               const std::string& path) {
+  if (!r.sampling || r.sampling->empty()) throw std::runtime_error(path + ": the step measured no sampling");
+  std::vector<Series> measured, fitted;
+  std::string slopes;
+  for (const SamplingSeries& v : *r.sampling) {
+    Series points{v.variant.name, {}, {}};
+    for (const SamplingPoint& p : v.points) {
+      points.x.push_back(p.rays);
+      points.y.push_back(p.error);
+    }
+    if (points.x.size() < 2) throw std::runtime_error(path + ": fewer than two ray counts");
+    fitted.push_back(
+        fittedPowerLaw(points, v.slope, v.variant.name + " fit, slope " + formatted("%.2f", v.slope)));
+    slopes += (slopes.empty() ? "" : ", ") + v.variant.name + " " + formatted("%.2f", v.slope);
+    measured.push_back(std::move(points));
+  }
+  std::vector<Series> all = std::move(fitted);
+  all.insert(all.end(), measured.begin(), measured.end());
+  ChartOptions o{"Error against rays", "rays", "RMS error / B", true, true, s.width, s.height};
+  writeLineChart(all, o, path);
+  return "RMS error against the direct solution (F by " + r.method +
+         ") against the rays used, each point over " +
+         std::to_string(static_cast<int>(r.value("seeds").value_or(0))) +
+         " seeds (log-log); fitted slopes: " + slopes;
+}
+
 }  // namespace rt::viz::detail

@@ -19,7 +19,7 @@ namespace {
 // standard error) and hierarchical-clustering (an error estimate: its links approximate F).
 bool isStochastic(const std::string& name) {
   return name == "stochastic-jacobi" || name.rfind("random-walk", 0) == 0 || name == "local-lines" ||
-         name == "local-lines-regular" || name == "hierarchical-clustering";
+         name == "local-lines-regular" || name == "hierarchical-clustering" || name == "photon-density";
 }
 
 // Options under which each solver should reach the direct solution on a small system.
@@ -36,7 +36,7 @@ SolverOptions convergingOptions(const std::string& name) {
     o.raysPerIteration = 200000;
     o.maxIterations = 1000;
   }
-  if (name.rfind("random-walk", 0) == 0) {
+  if (name.rfind("random-walk", 0) == 0 || name == "photon-density") {
     o.tolerance = 2e-3;  // relative standard error
     o.raysPerIteration = 20000;
     o.maxIterations = 200;
@@ -86,6 +86,12 @@ TEST_P(SolverContract, ConvergesToDirectSolution) {
             EXPECT_NEAR(B(i, c), reference(i, c), 1e-12 * reference.norm());
           }
       ASSERT_GT(count, 0);
+      if (GetParam() == "photon-density") {
+        // Continuous walks solve the integral equation, not this constant-element system: on these whole
+        // faces the two differ by the discretisation (1-2 %), more than the noise.
+        EXPECT_LT((B - reference).norm() / reference.norm(), 0.03);
+        continue;
+      }
       EXPECT_LE(std::sqrt(chi / count), 3.0);
       EXPECT_LT((B - reference).norm() / reference.norm(), 0.01);
     } else {

@@ -18,7 +18,7 @@ namespace {
 // standard error) and hierarchical-clustering (an error estimate: its links approximate F).
 bool isStochastic(const std::string& name) {
   return name == "stochastic-jacobi" || name.rfind("random-walk", 0) == 0 || name == "local-lines" ||
-         name == "local-lines-regular" || name == "hierarchical-clustering";
+         name == "local-lines-regular" || name == "hierarchical-clustering" || name == "photon-density";
 }
 
 class Furnace : public ::testing::TestWithParam<std::tuple<std::string, double>> {};
@@ -41,7 +41,7 @@ TEST_P(Furnace, ReachesEOverOneMinusRho) {
     // The burn-in lasts until rho^k <= tolerance, then the mean's relative standard error must reach it.
     o.tolerance = rho >= 0.99 ? 2e-2 : 3e-3;
     o.raysPerIteration = 2000;
-  } else if (name.rfind("random-walk", 0) == 0) {
+  } else if (name.rfind("random-walk", 0) == 0 || name == "photon-density") {
     // Relative standard error; walks get 1 / (1 - rho) steps long, so the near-singular cases ask for less.
     o.tolerance = rho >= 0.99 ? 2e-2 : 3e-3;
     o.raysPerIteration = rho >= 0.99 ? 2000 : 20000;

@@ -1,7 +1,9 @@
 // The stochastic radiosity lesson's claims, on its own steps: the local lines' counts agree with the
 // quadrature's form factors within their binomial standard errors, the steps that say they compute no form
 // factor compute none (the step result holds no F and the runner's cache computed nothing), the regular
-// solver's burn-in is the bound the text gives, and the comparison's numbers say what its text says.
+// solver's burn-in is the bound the text gives, the comparison's numbers say what its text says, the
+// continuous walks agree with the discrete ones and the direct solution within their noise, and the figure of
+// error against rays has the slopes and gains its text gives.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -144,6 +146,49 @@ TEST(StochasticLesson, TheAbsorptionEstimatorNeedsMoreWalksForTheSameNoise) {
     EXPECT_LE(*r.value("standard-error." + s), *r.value("tolerance")) << s;
   }
   EXPECT_GT(*r.value("rays.random-walk-absorption"), 1.5 * *r.value("rays.random-walk"));
+}
+
+TEST(StochasticLesson, ContinuousWalksAgreeWithTheDiscreteOnesWithinTheirNoise) {
+  if (!test::hasMethod("quadrature")) GTEST_SKIP() << "quadrature is not in this build";
+  const Ran ran = runStep("photon-walks");
+  const StepResult& r = ran.result;
+  // F once, for the direct solve and the discrete walks; the photons trace rays.
+  EXPECT_EQ(ran.formFactorComputations, 1);
+  for (const std::string s : {"random-walk", "photon-density"}) {
+    EXPECT_EQ(*r.value("converged." + s), 1.0) << s;
+    EXPECT_LE(*r.value("standard-error." + s), *r.value("tolerance")) << s;
+    // "each about its own standard error"
+    EXPECT_LT(*r.value("rms-error." + s), 2.0 * *r.value("standard-error." + s)) << s;
+    EXPECT_GT(*r.value("rms-error." + s), 0.3 * *r.value("standard-error." + s)) << s;
+  }
+  // The floor agrees with the direct solution within the noise of the walks.
+  const double floor = *r.value("B.floor.direct");
+  EXPECT_NEAR(*r.value("B.floor.photon-density"), floor, 3.0 * *r.value("tolerance") * floor);
+  EXPECT_NEAR(*r.value("B.floor.random-walk"), floor, 3.0 * *r.value("tolerance") * floor);
+}
+
+TEST(StochasticLesson, SobolLinesAndTheControlVariateBeatPlainLinesAtEqualRays) {
+  if (!test::hasMethod("quadrature")) GTEST_SKIP() << "quadrature is not in this build";
+  const Ran ran = runStep("sampling");
+  const StepResult& r = ran.result;
+  EXPECT_EQ(ran.formFactorComputations, 1);  // the reference's F; the runs trace lines
+  EXPECT_EQ(*r.value("seeds"), 4);
+  EXPECT_EQ(*r.value("rowsum-rays"), 256.0 * static_cast<double>(r.mesh.size()));
+  // "the -1/2 of the binomial error"; Sobol lines steeper.
+  const double plain = *r.value("slope.monte-carlo"), sobol = *r.value("slope.quasi-monte-carlo");
+  EXPECT_NEAR(plain, -0.5, 0.1);
+  EXPECT_LT(sobol, plain - 0.04);
+  EXPECT_NEAR(*r.value("slope.control-variate"), -0.5, 0.1);
+  // At the largest budget: less error for both, the control variate's gain modest.
+  EXPECT_GT(*r.value("gain.quasi-monte-carlo"), 1.5);
+  EXPECT_GT(*r.value("gain.control-variate"), 1.0);
+  EXPECT_LT(*r.value("gain.control-variate"), 1.5);  // "modest"
+  // With its row sums' rays counted, still below plain Monte Carlo at the same rays.
+  EXPECT_LT(*r.value("error-ratio.control-variate"), 1.0);
+  EXPECT_LT(*r.value("gain.control-variate"), *r.value("gain.quasi-monte-carlo"));
+  EXPECT_EQ(*r.value("rays-per-iteration"), 320000);
+  for (const std::string v : {"monte-carlo", "control-variate", "quasi-monte-carlo"})
+    EXPECT_GT(*r.value("rays." + v), *r.value("rays-per-iteration")) << v;
 }
 
 }  // namespace

@@ -13,9 +13,10 @@ std::string FormFactorCache::key(const std::string& method, const Mesh& mesh,
                                  const FormFactorOptions& options) {
   // Every option that can change the matrix; `threads` cannot (per-pair seeding), so it is left out.
   char buffer[160];
-  std::snprintf(buffer, sizeof buffer, "%016llx-%zu-r%d-s%d-seed%llu-tol%.3g",
+  std::snprintf(buffer, sizeof buffer, "%016llx-%zu-r%d-s%d-seed%llu-tol%.3g-%s",
                 static_cast<unsigned long long>(mesh.geometryHash()), mesh.size(), options.hemicubeResolution,
-                options.samples, static_cast<unsigned long long>(options.seed), options.tolerance);
+                options.samples, static_cast<unsigned long long>(options.seed), options.tolerance,
+                toString(options.sampling).c_str());
   return method + "-" + buffer;
 }
 

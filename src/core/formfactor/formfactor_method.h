@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/formfactor/formfactor_matrix.h"
+#include "core/formfactor/line_sampling.h"
 #include "core/mesh.h"
 #include "core/progress.h"
 
@@ -18,6 +19,7 @@ struct FormFactorOptions {
   int hemicubeResolution = 128;  // pixels along the top face's edge
   int samples = 16;              // raycast: sample pairs per element pair; montecarlo: rays per element
   std::uint64_t seed = 1;        // stochastic methods are deterministic for a seed
+  LineSampling sampling = LineSampling::Random;  // montecarlo: pseudo-random or Sobol local lines
   // exact: requested relative tolerance; quadrature: absolute error per entry; 0: the method's own default
   // (its knob's defaultValue), so that a solve that names the method without a tolerance costs what the
   // method says it costs.

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/formfactor/line_sampling.h"
 #include "core/formfactor/ray_scene.h"
 #include "core/mesh.h"
 
@@ -21,8 +22,10 @@ struct LocalLine {
   double distance = 0;     // to the first element struck (0 when it escaped)
 };
 
-// Deterministic for (seed, i). `scene` must be built from `mesh`.
+// Deterministic for (seed, i). `scene` must be built from `mesh`. Random lines take their origins from a
+// jittered grid and their directions from the stream; Sobol lines take both from point k of a scrambled
+// 4-dimensional Sobol set (line_sampling.h), so origins and directions are spread evenly together.
 std::vector<LocalLine> shootLocalLines(const Mesh& mesh, const RayScene& scene, int i, int count,
-                                       std::uint64_t seed);
+                                       std::uint64_t seed, LineSampling sampling = LineSampling::Random);
 
 }  // namespace rt

@@ -69,7 +69,8 @@ class MonteCarloMethod : public FormFactorMethod {
     FormFactorMatrix F = zeroFormFactorMatrix(n);
     forEachRow(mesh.size(), options, progress, "form factors (montecarlo)", stats,
                [&](int i, RowCounters& counters) {
-                 for (const LocalLine& line : shootLocalLines(mesh, rays, i, samples, options.seed))
+                 for (const LocalLine& line :
+                      shootLocalLines(mesh, rays, i, samples, options.seed, options.sampling))
                    if (line.hit >= 0) F(i, line.hit) += 1;  // whole counts: exact up to 2^53
                  counters.raysCast += static_cast<std::size_t>(samples);
                  // Hits are counted whole and divided once: adding 1/N per hit drifts by rounding, and
@@ -82,7 +83,8 @@ class MonteCarloMethod : public FormFactorMethod {
                    }
                  }
                });
-    stats.notes = std::to_string(samples) + " cosine-distributed rays/element";
+    stats.notes = std::to_string(samples) + " cosine-distributed " +
+                  (options.sampling == LineSampling::Sobol ? "Sobol " : "") + "rays/element";
     checkRowSumsAtMost(F, 1.0, "montecarlo");  // each ray lands on at most one element
     return F;
   }

@@ -25,6 +25,37 @@ long budgetOf(const RadiositySystem& system, const SolverOptions& options) {
   return options.raysPerIteration > 0 ? options.raysPerIteration : localLinesDefaultRays(system.size());
 }
 
+// One round of lines, with the options' sampling and control variate. The control's known part, beta A_j R_j,
+// is added to what each element receives, and what escapes of it to the lost power; the row sums are
+// estimated the first time a nonzero beta needs them (their rays are added to `rays`).
+class Rounds {
+ public:
+  Rounds(const RadiositySystem& system, const SolverOptions& options)
+      : system_(system), options_(options), shooter_(*system.mesh) {}
+
+  LineRound shoot(const RgbField& radiosity, long count, int round, long& rays) {
+    LineShot how{options_.sampling, Eigen::RowVector3d::Zero()};
+    if (options_.controlVariate) how.control = constantControl(radiosity, system_.areas);
+    LineRound out = shooter_.shoot(radiosity, count, options_.seed, round, how);
+    rays += count;
+    if (how.control.isZero()) return out;
+    if (rowSums_.size() == 0) {
+      rowSums_ = shooter_.rowSums(kRowSumLines, options_.seed);
+      rays += kRowSumLines * static_cast<long>(system_.size());
+    }
+    const Eigen::VectorXd& A = system_.areas;
+    out.received += (A.cwiseProduct(rowSums_) * how.control).eval();
+    out.lost += how.control.sum() * (A.sum() - A.dot(rowSums_));
+    return out;
+  }
+
+ private:
+  const RadiositySystem& system_;
+  const SolverOptions& options_;
+  LineShooter shooter_;
+  Eigen::VectorXd rowSums_;
+};
+
 }  // namespace
 
 long localLinesDefaultRays(std::size_t elements) {
@@ -52,7 +83,7 @@ SolverStatus localLines(const RadiositySystem& system, RgbField& B, const Solver
   RgbField unshot = system.emission;
   const double emitted = totalEmittedPower(system);
   if (emitted <= 0.0) return SolverStatus::Success;
-  LineShooter shooter(*system.mesh);
+  Rounds rounds(system, options);
   const double eNorm = system.emission.norm();
   double absorbed = 0.0, escaped = 0.0;
   long raysSoFar = 0;
@@ -64,8 +95,7 @@ SolverStatus localLines(const RadiositySystem& system, RgbField& B, const Solver
     // stochasticJacobi).
     const long rays =
         std::max(1L, static_cast<long>(std::ceil(double(budget) * (total / emitted) * (1.0 - 1e-12))));
-    const LineRound round = shooter.shoot(unshot, rays, options.seed, k);
-    raysSoFar += rays;
+    const LineRound round = rounds.shoot(unshot, rays, k, raysSoFar);
     escaped += round.lost;
     for (Eigen::Index j = 0; j < n; ++j) {
       const Eigen::Array3d rho = system.reflectance.row(j).array().transpose();
@@ -112,7 +142,7 @@ SolverStatus regularLocalLines(const RadiositySystem& system, RgbField& B, const
   if (emitted <= 0.0) return SolverStatus::Success;
   const double rhoMax = system.reflectance.maxCoeff();
   const int burnIn = regularBurnIn(rhoMax, options.tolerance);
-  LineShooter shooter(*system.mesh);
+  Rounds rounds(system, options);
 
   // The iterate B^(k) and, from k > burnIn, the sum of the iterates and of the variances each one's own
   // lines added (the noise an iterate inherits from the ones before is not counted, as in localLines).
@@ -121,8 +151,7 @@ SolverStatus regularLocalLines(const RadiositySystem& system, RgbField& B, const
   int kept = 0;
   long raysSoFar = 0;
   for (int k = 1, cap = sweepCap(options); k <= cap; ++k) {
-    const LineRound round = shooter.shoot(current, rays, options.seed, k);
-    raysSoFar += rays;
+    const LineRound round = rounds.shoot(current, rays, k, raysSoFar);
     RgbField next = system.emission, fresh(n, 3);
     double absorbed = 0.0;
     for (Eigen::Index j = 0; j < n; ++j) {

@@ -22,6 +22,11 @@
 // mean's relative standard error is <= options.tolerance. The recorded residual is the stopping measure:
 // rho_max^k during the burn-in, then the relative standard error.
 //
+// Both take the two variance reductions of line_shooting.h: options.sampling (Sobol lines) and
+// options.controlVariate (every iteration shoots B - beta, beta = constantControl of what it shoots, and adds
+// back beta A_j R_j; the row sums R_j are estimated once, with kRowSumLines lines per element, when the
+// first nonzero beta needs them, and their rays are counted with the rest).
+//
 // Both estimate the standard error of B per element from each iteration's independent rays (the noise an
 // iteration inherits from the earlier ones is not counted) and record its area-weighted RMS relative to
 // that of B. Both are deterministic for options.seed at any thread count.

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/formfactor/line_sampling.h"
 #include "core/progress.h"
 #include "core/solvers/radiosity_system.h"
 
@@ -26,6 +27,10 @@ struct SolverOptions {
   bool ambient = false;       // progressive: add the ambient term to the displayed B
   std::uint64_t seed = 1;     // stochastic solvers
   long raysPerIteration = 0;  // stochastic: ray budget per iteration (0 = a default from n)
+  // local-lines, local-lines-regular: how the lines' numbers are drawn (line_sampling.h), and whether they
+  // shoot B - beta with a constant control variate beta (line_shooting.h).
+  LineSampling sampling = LineSampling::Random;
+  bool controlVariate = false;
   // hierarchical-clustering: a link is kept when the light it could miss is at most this fraction of the
   // scene's mean radiosity (0 = defaultClusterTolerance()).
   double clusterTolerance = 0;
@@ -130,7 +135,7 @@ const SolverInfo& solverInfo(const std::string& name);
 bool solverNeedsMatrix(const std::string& name);
 
 // Registry by name (solverTable()): direct, jacobi, gauss-seidel, southwell, progressive, bounces,
-// stochastic-jacobi, random-walk, random-walk-absorption, local-lines, local-lines-regular,
+// stochastic-jacobi, random-walk, random-walk-absorption, local-lines, local-lines-regular, photon-density,
 // hierarchical-clustering.
 std::unique_ptr<Solver> makeSolver(const std::string& name);  // throws std::invalid_argument
 std::vector<std::string> solverNames();

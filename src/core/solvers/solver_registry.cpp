@@ -6,6 +6,7 @@
 #include "core/solvers/direct_solver.h"
 #include "core/solvers/gathering_solvers.h"
 #include "core/solvers/local_lines_solver.h"
+#include "core/solvers/random_walks.h"
 #include "core/solvers/shooting_solvers.h"
 #include "core/solvers/solver.h"
 #include "core/solvers/stochastic_solvers.h"
@@ -47,11 +48,16 @@ const std::vector<SolverInfo>& solverTable() {
        Geometry,
        "incremental stochastic Jacobi: shoots the unshot power with rays traced through the scene; stores no "
        "form factor, memory O(n)",
-       {"tolerance", "iterations", "seed", "rays-per-iteration"}},
+       {"tolerance", "iterations", "seed", "rays-per-iteration", "sampling", "control-variate"}},
       {"local-lines-regular",
        Geometry,
        "regular stochastic Jacobi: every iteration shoots all the power again with rays traced through the "
        "scene and the iterates after a burn-in are averaged; stores no form factor",
+       {"tolerance", "iterations", "seed", "rays-per-iteration", "sampling", "control-variate"}},
+      {"photon-density",
+       Geometry,
+       "continuous random walks: photon trajectories traced through the scene from the lights, their hit "
+       "points histogrammed per element (the photon density is the irradiance); stores no form factor",
        {"tolerance", "iterations", "seed", "rays-per-iteration"}},
       {"hierarchical-clustering",
        Geometry,
@@ -89,6 +95,7 @@ std::unique_ptr<Solver> makeSolver(const std::string& name) {
     return std::make_unique<StochasticSolver>(name, &randomWalkAbsorption);
   if (name == "local-lines") return std::make_unique<StochasticSolver>(name, &localLines);
   if (name == "local-lines-regular") return std::make_unique<StochasticSolver>(name, &regularLocalLines);
+  if (name == "photon-density") return std::make_unique<StochasticSolver>(name, &photonDensity);
   if (name == "hierarchical-clustering")
     return std::make_unique<StochasticSolver>(name, &hierarchicalClustering);
   throw std::logic_error("solver '" + name + "' is in the table but has no implementation");

@@ -1,5 +1,7 @@
 #include "core/solvers/stochastic_solvers.h"
 
+#include "core/solvers/random_walks.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -32,10 +34,18 @@ class RowSampler {
   std::vector<std::vector<double>> cumulative_;
 };
 
-long defaultRays(const RadiositySystem& system, const SolverOptions& options) {
-  return options.raysPerIteration > 0 ? options.raysPerIteration
-                                      : std::max<long>(1000, 100 * (long)system.size());
-}
+// Discrete walks: the next element drawn from the row of F of the one the walk stands on.
+class RowJumps : public WalkJumps {
+ public:
+  explicit RowJumps(const FormFactorMatrix& F) : rows_(F) {}
+  WalkPosition start(int source, Random&) override { return {source, Vec3::Zero()}; }
+  WalkPosition jump(const WalkPosition& from, Random& random) override {
+    return {rows_.sample(from.element, random.uniform()), Vec3::Zero()};
+  }
+
+ private:
+  RowSampler rows_;
+};
 
 }  // namespace
 
@@ -51,7 +61,7 @@ SolverStatus stochasticJacobi(const RadiositySystem& system, RgbField& B, const 
   const Stopwatch clock;
   Random random(options.seed);
   RowSampler lines(*system.F);
-  const long budget = defaultRays(system, options);
+  const long budget = defaultWalks(system, options);
 
   RgbField unshot = system.emission;
   const double emitted = totalEmittedPower(system);
@@ -126,104 +136,10 @@ SolverStatus randomWalk(const RadiositySystem& system, RgbField& B, const Solver
                         const IterationSink& sink, RgbField* standardError) {
   B = system.emission;
   const SolverStatus valid = validate(system, true);
-  const auto n = static_cast<Eigen::Index>(system.size());
-  if (standardError) *standardError = RgbField::Zero(n, 3);
+  if (standardError) *standardError = RgbField::Zero(static_cast<Eigen::Index>(system.size()), 3);
   if (valid != SolverStatus::Success) return valid;
-  const Eigen::VectorXd& A = system.areas;
-  const RgbField& rho = system.reflectance;
-  const Stopwatch clock;
-  Random random(options.seed);
-  RowSampler lines(*system.F);
-  const long batch = defaultRays(system, options);
-  const bool absorption = options.walkEstimator == SolverOptions::WalkEstimator::Absorption;
-
-  std::vector<double> sourceCumulative(static_cast<std::size_t>(n));
-  double emitted = 0.0;
-  for (Eigen::Index j = 0; j < n; ++j)
-    sourceCumulative[std::size_t(j)] = emitted += system.emission.row(j).sum() * A(j);
-  if (emitted <= 0.0) return SolverStatus::Success;
-  Eigen::VectorXd survival(n);
-  for (Eigen::Index j = 0; j < n; ++j) survival(j) = std::min(rho.row(j).maxCoeff(), 1.0 - 1e-12);
-
-  // Sums over walks of each walk's total score per element (power), and of its square: walks are independent,
-  // scores within one walk are not, hence the per-walk merge below.
-  RgbField sum = RgbField::Zero(n, 3), sumSquares = RgbField::Zero(n, 3);
-  double absorbed = 0.0, escaped = 0.0;
-  long walks = 0;
-  bool truncated = false;
-  std::vector<std::pair<int, Eigen::RowVector3d>> scores;
-  // A walk ends with probability 1, but at rho = 1 (a singular system) not in finite time. Truncating at this
-  // length biases the result by at most q^kMaxSteps of the weight: below 1e-13 for every survival probability
-  // q <= 0.9997.
-  constexpr int kMaxSteps = 100000;
-
-  auto score = [&scores](int k, const Eigen::RowVector3d& s) {
-    for (auto& [element, value] : scores)
-      if (element == k) {
-        value += s;
-        return;
-      }
-    scores.emplace_back(k, s);
-  };
-
-  for (int it = 1, cap = sweepCap(options); it <= cap; ++it) {
-    for (long w = 0; w < batch; ++w) {
-      scores.clear();
-      const std::size_t picked = sampleCumulative(sourceCumulative, random.uniform() * emitted);
-      auto at = static_cast<Eigen::Index>(std::min(picked, std::size_t(n - 1)));
-      const double sourcePower = system.emission.row(at).sum() * A(at);
-      if (sourcePower <= 0.0) continue;
-      Eigen::RowVector3d weight = system.emission.row(at) * A(at) * (emitted / sourcePower);
-      int step = 0;
-      for (; step < kMaxSteps; ++step) {
-        const int hit = lines.sample(at, random.uniform());
-        if (hit < 0) {
-          escaped += weight.sum();
-          break;
-        }
-        const Eigen::RowVector3d reflected = weight.cwiseProduct(rho.row(hit));
-        absorbed += weight.sum() - reflected.sum();
-        const double q = survival(hit);
-        const bool survives = q > 0.0 && random.uniform() < q;
-        if (!absorption) score(hit, reflected);
-        if (!survives) {
-          if (absorption) score(hit, reflected / (1.0 - q));
-          break;
-        }
-        weight = reflected / q;
-        at = hit;
-      }
-      // A walk cut off by the limit scored nothing under the absorption estimator: the estimate of a system
-      // that (nearly) never absorbs is not to be trusted, whatever its standard error says.
-      if (step == kMaxSteps) truncated = true;
-      for (const auto& [element, value] : scores) {
-        sum.row(element) += value;
-        sumSquares.row(element) += value.cwiseProduct(value);
-      }
-    }
-    walks += batch;
-    const double W = double(walks);
-    const RgbField mean = sum / W;
-    const RgbField meanVariance =
-        ((sumSquares.array() / W - mean.array().square()).cwiseMax(0.0) / W).matrix();
-    B = system.emission + (A.cwiseInverse().asDiagonal() * mean);
-    RgbField se = (A.cwiseInverse().asDiagonal() * meanVariance.cwiseSqrt());
-    IterationRecord rec;
-    rec.iteration = it;
-    rec.B = B;
-    rec.emittedPower = emitted;
-    rec.absorbedPower = absorbed / W;
-    rec.escapedPower = escaped / W;
-    rec.residual = system.relativeResidual(B);
-    rec.standardError = relativeAreaRms(se, B, A);
-    rec.rays = walks;
-    rec.seconds = clock.seconds();
-    const bool done = !truncated && rec.standardError <= options.tolerance;
-    if (standardError) *standardError = se;
-    if (sink) sink(std::move(rec));
-    if (done) return SolverStatus::Success;
-  }
-  return SolverStatus::NoConvergence;
+  RowJumps jumps(*system.F);
+  return walkSolve(system, B, options, sink, standardError, jumps, defaultWalks(system, options));
 }
 
 SolverStatus randomWalkAbsorption(const RadiositySystem& system, RgbField& B, const SolverOptions& options,

@@ -13,12 +13,12 @@
 // the unshot power is <= tolerance times the emitted power: the remaining error is then noise, about
 // 1/sqrt(rays), reported as the standard error.
 //
-// random-walk: discrete random walks (shooting): a walk starts at an emitter drawn proportional to emitted
-// power, jumps by F, and survives a reflection with probability max_c rho_c (its weight is multiplied by
-// rho_c / that). Collision estimator: every arrival scores the reflected power at the element. Absorption
-// estimator: only the arrival where the walk ends scores, weighted by rho / (1 - survival). One iteration = a
-// batch of options.raysPerIteration walks (0 = 100 n). Stops when the relative standard error (area-weighted
-// RMS of SE over that of B) <= tolerance.
+// random-walk: discrete random walks (shooting; the walks themselves are random_walks.h's): a walk starts at
+// an emitter drawn proportional to emitted power, jumps by F, and survives a reflection with probability
+// max_c rho_c (its weight is multiplied by rho_c / that). Collision estimator: every arrival scores the
+// reflected power at the element. Absorption estimator: only the arrival where the walk ends scores, weighted
+// by rho / (1 - survival). One iteration = a batch of options.raysPerIteration walks (0 = 100 n). Stops when
+// the relative standard error (area-weighted RMS of SE over that of B) <= tolerance.
 #pragma once
 
 #include "core/solvers/solver.h"
