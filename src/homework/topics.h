@@ -22,5 +22,9 @@ std::optional<Exercise> generateToneMapping(Draw& draw);
 std::optional<Exercise> generateSubdivision(Draw& draw);
 std::optional<Exercise> generateIrradiance(Draw& draw);
 std::optional<Exercise> generateStochasticJacobi(Draw& draw);
+std::optional<Exercise> generateReflectionEquation(Draw& draw);
+std::optional<Exercise> generateHierarchicalOracle(Draw& draw);
+std::optional<Exercise> generateRandomWalk(Draw& draw);
+std::optional<Exercise> generateTwoPass(Draw& draw);
 
 }  // namespace rt::homework
