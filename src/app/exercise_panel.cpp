@@ -1,6 +1,7 @@
 #include "app/exercise_panel.h"
 
 #include <QButtonGroup>
+#include <QEvent>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -89,6 +90,7 @@ void ExercisePanel::setExercise(const std::optional<homework::Exercise>& exercis
   verdicts_.clear();
   delete choices_;
   choices_ = nullptr;
+  choiceTexts_.clear();
   choiceQuestion_.clear();
   summary_->clear();
   notes_.clear();
@@ -99,7 +101,7 @@ void ExercisePanel::setExercise(const std::optional<homework::Exercise>& exercis
   int line = 0;
   for (const homework::Question& q : exercise_->questions) {
     if (!q.choices.empty()) {
-      addChoices(q, line++);
+      line = addChoices(q, line);
       continue;
     }
     auto* row = new QWidget(fields_);
@@ -128,25 +130,43 @@ void ExercisePanel::setExercise(const std::optional<homework::Exercise>& exercis
   restoreAnswers();
 }
 
-void ExercisePanel::addChoices(const homework::Question& q, int line) {
-  auto* box = new QWidget(fields_);
-  auto* column = new QVBoxLayout(box);
-  column->setContentsMargins(0, 0, 0, 0);
+int ExercisePanel::addChoices(const homework::Question& q, int line) {
   choices_ = new QButtonGroup(this);
   choiceQuestion_ = q.id;
+  // One grid row per choice: the button with its letter, the choice's text wrapped beside it (a radio
+  // button's own text does not wrap). A click on the text picks the choice too (eventFilter).
   for (std::size_t k = 0; k < q.choices.size(); ++k) {
-    auto* button =
-        new QRadioButton(QString::fromStdString(homework::choiceLetter(k) + " ") + plain(q.choices[k]), box);
+    auto* button = new QRadioButton(QString::fromStdString(homework::choiceLetter(k)), fields_);
     button->setObjectName(QString("choice-%1").arg(k + 1));
+    auto* text = new QLabel(plain(q.choices[k]), fields_);
+    text->setWordWrap(true);
+    text->installEventFilter(this);
+    choiceTexts_[text] = button;
     choices_->addButton(button, static_cast<int>(k + 1));
-    column->addWidget(button);
+    form_->addWidget(button, line, 0, Qt::AlignTop);
+    form_->addWidget(text, line++, 1);
     connect(button, &QRadioButton::toggled, this, &ExercisePanel::keepAnswers);
   }
-  auto* verdict = new QLabel(box);
+  auto* verdict = new QLabel(fields_);
   verdict->setWordWrap(true);
-  column->addWidget(verdict);
-  form_->addWidget(box, line, 0, 1, 2);
+  form_->addWidget(verdict, line++, 0, 1, 2);
   verdicts_[q.id] = verdict;
+  return line;
+}
+
+bool ExercisePanel::eventFilter(QObject* watched, QEvent* event) {
+  const auto it = choiceTexts_.find(watched);
+  if (it != choiceTexts_.end() && event->type() == QEvent::MouseButtonRelease) {
+    it->second->click();
+    return true;
+  }
+  return QWidget::eventFilter(watched, event);
+}
+
+QString ExercisePanel::choiceText(int index) const {
+  for (const auto& [text, button] : choiceTexts_)
+    if (choices_ && choices_->id(button) == index) return static_cast<QLabel*>(text)->text();
+  return QString();
 }
 
 QRadioButton* ExercisePanel::choice(int index) const {

@@ -36,6 +36,8 @@ class ExercisePanel : public QWidget {
   QLineEdit* field(const std::string& questionId) const;
   // The radio button of a conceptual question's choice `index` (1-based); null when there is none.
   QRadioButton* choice(int index) const;
+  // The text shown beside that button (plain: maths as Unicode).
+  QString choiceText(int index) const;
   // The line that says how to answer.
   QString instruction() const;
   // What Check said about a question ("right", or the feedback naming the slip); empty before Check.
@@ -43,6 +45,9 @@ class ExercisePanel : public QWidget {
   QString summary() const;
   // The hint or solution last asked for (Markdown with $...$ maths); empty for a new exercise.
   const QString& notes() const { return notes_; }
+
+ protected:
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  signals:
   // Hint or Show solution was pressed: `markdown` goes under the step's text.
@@ -65,7 +70,9 @@ class ExercisePanel : public QWidget {
   // The answers typed and whether they were checked, kept under place_ for this exercise only.
   void keepAnswers() const;
   void restoreAnswers();
-  void addChoices(const homework::Question& q, int line);
+  // The choices from grid row `line` on, one a row, then the verdict; returns the next free row.
+  int addChoices(const homework::Question& q, int line);
+  std::map<QObject*, QRadioButton*> choiceTexts_;  // each choice's text label and its button
 
   QLabel* summary_ = nullptr;
   QString notes_;

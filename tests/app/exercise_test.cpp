@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QRadioButton>
@@ -187,7 +188,8 @@ TEST(AppExercise, AChoiceClickedIsCheckedWithItsExplanation) {
   ExercisePanel* panel = window->exercisePanel();
   ASSERT_TRUE(panel->isVisible());
   ASSERT_TRUE(panel->exercise().has_value());
-  const rt::homework::Question& q = panel->exercise()->questions.front();
+  // A copy: the panel holds a new exercise after the reader leaves the step and comes back.
+  const rt::homework::Question q = panel->exercise()->questions.front();
   ASSERT_GE(q.choices.size(), 3u);
   EXPECT_TRUE(panel->instruction().contains("Pick one answer")) << panel->instruction().toStdString();
   EXPECT_EQ(panel->field(q.id), nullptr) << "no text field for a choice";
@@ -198,15 +200,27 @@ TEST(AppExercise, AChoiceClickedIsCheckedWithItsExplanation) {
     if (static_cast<int>(m.value) == wrong) explanation = &m;
   ASSERT_NE(explanation, nullptr);
   ASSERT_NE(panel->choice(wrong), nullptr);
-  EXPECT_TRUE(panel->choice(wrong)->text().startsWith(wrong == 1 ? "(a)" : "(b)"));
+  EXPECT_EQ(panel->choice(wrong)->text(), wrong == 1 ? "(a)" : "(b)");
+  EXPECT_EQ(panel->choiceText(wrong),
+            QString::fromStdString(rt::homework::plainText(q.choices[static_cast<std::size_t>(wrong - 1)])));
   QTest::mouseClick(panel->choice(wrong), Qt::LeftButton, {}, QPoint(8, panel->choice(wrong)->height() / 2));
   EXPECT_TRUE(panel->choice(wrong)->isChecked());
   QTest::mouseClick(panel->findChild<QPushButton*>("checkAnswers"), Qt::LeftButton);
   EXPECT_EQ(panel->verdict(q.id),
             QString::fromStdString(rt::homework::plainText("wrong: " + explanation->name)));
   EXPECT_EQ(panel->summary(), "0 of 1 right");
-  if (const char* shot = std::getenv("RT_CHOICE_SCREENSHOT")) window->grab().save(shot);
-  QTest::mouseClick(panel->choice(right), Qt::LeftButton, {}, QPoint(8, panel->choice(right)->height() / 2));
+  if (const char* shot = std::getenv("RT_CHOICE_SCREENSHOT")) {
+    window->findChild<rt::app::LessonTextView*>()->waitUntilShown();
+    window->grab().save(shot);
+  }
+  // The right one by a click on its text, not its button.
+  QLabel* rightText = nullptr;
+  for (QLabel* label : panel->findChildren<QLabel*>())
+    if (label->text() == panel->choiceText(right)) rightText = label;
+  ASSERT_NE(rightText, nullptr);
+  QTest::mouseClick(rightText, Qt::LeftButton);
+  EXPECT_TRUE(panel->choice(right)->isChecked());
+  EXPECT_FALSE(panel->choice(wrong)->isChecked());
   QTest::mouseClick(panel->findChild<QPushButton*>("checkAnswers"), Qt::LeftButton);
   EXPECT_EQ(panel->verdict(q.id), "right");
   EXPECT_EQ(panel->summary(), "1 of 1 right");
