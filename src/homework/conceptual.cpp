@@ -15,22 +15,27 @@ Exercise conceptualExercise(const std::string& title, const std::vector<Choice>&
   q.label = "your choice";
   q.integer = true;
   q.tolerance = 0.5;
-  std::string right, others;
+  std::string right;
+  std::vector<std::string> wrong;
   for (std::size_t k = 0; k < choices.size(); ++k) {
     const Choice& c = choices[k];
     q.choices.push_back(c.text);
-    const std::string line = choiceLetter(k) + " " + c.text + ": " + c.because;
+    // "(b) The choice. Why.": a choice that ends without a full stop gets one.
+    const char last = c.text.empty() ? '.' : c.text.back();
+    const std::string line =
+        choiceLetter(k) + " " + c.text + (last == '.' || last == '?' || last == '!' ? " " : ". ") + c.because;
     if (c.right) {
       q.answer = static_cast<double>(k + 1);
       right = "The answer is " + line;
     } else {
       q.mistakes.push_back({c.because, static_cast<double>(k + 1)});
-      others += (others.empty() ? "" : " ") + std::string("Not ") + line;
+      wrong.push_back("Not " + line);
     }
   }
   e.hint =
       "Each wrong choice contradicts something this lesson shows or derives: rule them out one at a time.";
-  e.solution = {right, others};
+  e.solution = {right};
+  e.solution.insert(e.solution.end(), wrong.begin(), wrong.end());
   e.given["choices"] = static_cast<double>(choices.size());
   e.questions.push_back(std::move(q));
   return e;

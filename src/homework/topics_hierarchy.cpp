@@ -55,7 +55,8 @@ std::optional<Exercise> generateHierarchicalOracle(Draw& draw) {
       "$ m on the floor, facing up; node $q$ is a square of side $b = " + num(b) +
       "$ m on the ceiling $h = " + num(h) + "$ m above, facing down, its centre $x = " + num(x) +
       "$ m to the side of $p$'s (along an edge direction). The oracle estimates each form factor from the "
-      "centre of one node to the other as if that were small, $\\hat F_{pq} = A_q \\cos\\theta_p "
+      "centre of one node to the other; the program uses Lambert's formula for the whole node, and by hand "
+      "its small-node form will do, $\\hat F_{pq} = A_q \\cos\\theta_p "
       "\\cos\\theta_q / (\\pi r^2)$ with $r$ between the centres, and links the pair when "
       "$\\max(\\hat F_{pq}, \\hat F_{qp}) < \\varepsilon = " +
       num(epsilon) +
@@ -83,7 +84,10 @@ std::optional<Exercise> generateHierarchicalOracle(Draw& draw) {
                          : "$\\hat F_{pq}$: $q$ looks larger from $p$, so $q$") +
           " is split into four squares of side " + num(side / 2) + " m.",
       "The children's larger estimates, each from its own centre: " + children + ". So " +
-          std::to_string(linked) + " of the four link at this level; the others are refined further.",
+          (linked == 4 ? std::string("all four link at this level.")
+           : linked == 0
+               ? std::string("none links yet: each child is refined further.")
+               : std::to_string(linked) + " of the four link at this level; the others are refined further."),
   };
   e.questions = {
       {"Fpq",

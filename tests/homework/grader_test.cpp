@@ -257,7 +257,8 @@ TEST(HomeworkGrader, AWrongChoiceIsExplainedByItsOwnExplanation) {
   EXPECT_NE(book.find("- (a) Twice\n- (b) Four times\n- (c) Never"), std::string::npos) << book;
   const std::string answers = answersAppendix({{"Q", e}});
   EXPECT_NE(answers.find("- (b) Four times"), std::string::npos) << answers;
-  EXPECT_NE(answers.find("Not (a) Twice: The error falls"), std::string::npos) << answers;
+  EXPECT_NE(answers.find("- Not (a) Twice. The error falls"), std::string::npos) << answers;
+  EXPECT_NE(answers.find("- The answer is (b) Four times. Halving"), std::string::npos) << answers;
 }
 
 TEST(HomeworkPlainText, MathsBecomesUnicodeForWidgets) {
