@@ -1,27 +1,28 @@
 #include "app/exercise_panel.h"
 
+#include <QButtonGroup>
+#include <QEvent>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QRadioButton>
 #include <QScrollArea>
 #include <QSettings>
 #include <QVBoxLayout>
 
+#include "homework/conceptual.h"
 #include "homework/grader.h"
+#include "homework/plain_text.h"
 
 namespace rt::app {
 namespace {
 
-// Labels are Markdown with $...$ maths: a plain label shows them without dollars, braces and backslashes
-// (F_{12} reads F_12).
+// Labels, choices and verdicts are Markdown with $...$ maths: a plain label shows them as plain text
+// (F_{12} reads F_12, \rho reads ρ).
 QString plain(const std::string& label) {
-  QString text = QString::fromStdString(label);
-  text.remove('$');
-  text.remove('{');
-  text.remove('}');
-  return text.replace("\\", "");
+  return QString::fromStdString(homework::plainText(label));
 }
 
 QString settingsKey(const QString& place) {
@@ -39,6 +40,10 @@ ExercisePanel::ExercisePanel(QWidget* parent) : QWidget(parent) {
   setObjectName("exercisePanel");
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
+  instruction_ = new QLabel(this);
+  instruction_->setObjectName("exerciseInstruction");
+  instruction_->setWordWrap(true);
+  layout->addWidget(instruction_);
   auto* scroll = new QScrollArea(this);
   scroll->setWidgetResizable(true);
   fields_ = new QWidget(scroll);
@@ -83,12 +88,22 @@ void ExercisePanel::setExercise(const std::optional<homework::Exercise>& exercis
   }
   edits_.clear();
   verdicts_.clear();
+  delete choices_;
+  choices_ = nullptr;
+  choiceTexts_.clear();
+  choiceQuestion_.clear();
   summary_->clear();
   notes_.clear();
   setVisible(exercise_.has_value());
   if (!exercise_) return;
+  instruction_->setText(
+      QString::fromStdString(homework::answerInstruction(*exercise_, homework::Frame::App)));
   int line = 0;
   for (const homework::Question& q : exercise_->questions) {
+    if (!q.choices.empty()) {
+      line = addChoices(q, line);
+      continue;
+    }
     auto* row = new QWidget(fields_);
     auto* rowLayout = new QHBoxLayout(row);
     rowLayout->setContentsMargins(0, 0, 0, 0);
@@ -115,11 +130,60 @@ void ExercisePanel::setExercise(const std::optional<homework::Exercise>& exercis
   restoreAnswers();
 }
 
+int ExercisePanel::addChoices(const homework::Question& q, int line) {
+  choices_ = new QButtonGroup(this);
+  choiceQuestion_ = q.id;
+  // One grid row per choice: the button with its letter, the choice's text wrapped beside it (a radio
+  // button's own text does not wrap). A click on the text picks the choice too (eventFilter).
+  for (std::size_t k = 0; k < q.choices.size(); ++k) {
+    auto* button = new QRadioButton(QString::fromStdString(homework::choiceLetter(k)), fields_);
+    button->setObjectName(QString("choice-%1").arg(k + 1));
+    auto* text = new QLabel(plain(q.choices[k]), fields_);
+    text->setWordWrap(true);
+    text->installEventFilter(this);
+    choiceTexts_[text] = button;
+    choices_->addButton(button, static_cast<int>(k + 1));
+    form_->addWidget(button, line, 0, Qt::AlignTop);
+    form_->addWidget(text, line++, 1);
+    connect(button, &QRadioButton::toggled, this, &ExercisePanel::keepAnswers);
+  }
+  auto* verdict = new QLabel(fields_);
+  verdict->setWordWrap(true);
+  form_->addWidget(verdict, line++, 0, 1, 2);
+  verdicts_[q.id] = verdict;
+  return line;
+}
+
+bool ExercisePanel::eventFilter(QObject* watched, QEvent* event) {
+  const auto it = choiceTexts_.find(watched);
+  if (it != choiceTexts_.end() && event->type() == QEvent::MouseButtonRelease) {
+    it->second->click();
+    return true;
+  }
+  return QWidget::eventFilter(watched, event);
+}
+
+QString ExercisePanel::choiceText(int index) const {
+  for (const auto& [text, button] : choiceTexts_)
+    if (choices_ && choices_->id(button) == index) return static_cast<QLabel*>(text)->text();
+  return QString();
+}
+
+QRadioButton* ExercisePanel::choice(int index) const {
+  return choices_ ? qobject_cast<QRadioButton*>(choices_->button(index)) : nullptr;
+}
+
+QString ExercisePanel::instruction() const {
+  return instruction_->text();
+}
+
 void ExercisePanel::keepAnswers() const {
   if (!exercise_ || place_.isEmpty()) return;
   QVariantMap answers;
   for (const auto& [id, edit] : edits_)
     if (!edit->text().isEmpty()) answers[QString::fromStdString(id)] = edit->text();
+  if (choices_ && choices_->checkedId() > 0)
+    answers[QString::fromStdString(choiceQuestion_)] = choices_->checkedId();
   QVariantMap kept;
   kept["exercise"] = identity(*exercise_);
   kept["answers"] = answers;
@@ -133,6 +197,10 @@ void ExercisePanel::restoreAnswers() {
   if (kept.value("exercise").toString() != identity(*exercise_)) return;
   const QVariantMap answers = kept.value("answers").toMap();
   for (const auto& [id, edit] : edits_) edit->setText(answers.value(QString::fromStdString(id)).toString());
+  if (choices_)
+    if (QAbstractButton* chosen =
+            choices_->button(answers.value(QString::fromStdString(choiceQuestion_)).toInt()))
+      chosen->setChecked(true);
   if (kept.value("checked").toBool()) check();
 }
 
@@ -156,6 +224,10 @@ void ExercisePanel::check() {
   submission.files.push_back("app");
   std::vector<std::string> unreadable;
   for (const homework::Question& q : exercise_->questions) {
+    if (q.id == choiceQuestion_) {
+      if (choices_->checkedId() > 0) submission.values[exercise_->topic + "." + q.id] = choices_->checkedId();
+      continue;
+    }
     const QString text = edits_[q.id]->text().trimmed();
     if (text.isEmpty()) continue;
     bool ok = false;
@@ -176,7 +248,7 @@ void ExercisePanel::check() {
     else if (!grades[k].answered)
       label->setText(QString());
     else
-      label->setText(grades[k].right ? tr("right") : QString::fromStdString(grades[k].feedback));
+      label->setText(grades[k].right ? tr("right") : plain(grades[k].feedback));
   }
   summary_->setText(tr("%1 of %2 right").arg(grade.right).arg(grade.total));
   checked_ = true;

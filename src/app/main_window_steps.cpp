@@ -442,8 +442,10 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   }
 
   if (!r.mesh || r.mesh->size() == 0) {
-    statusLabel_->setText(exercise ? tr("An exercise: type the answers, then Check (or Enter in a field)")
-                                   : tr("A step of text: Right or Page Down for the next step"));
+    const bool choice = exercise && !stepResult->exercise->questions.front().choices.empty();
+    statusLabel_->setText(choice     ? tr("A question: pick one answer, then Check")
+                          : exercise ? tr("An exercise: type the answers, then Check (or Enter in a field)")
+                                     : tr("A step of text: Right or Page Down for the next step"));
     emit resultShown();
     return;
   }

@@ -9,6 +9,7 @@
 #include "cli/lesson_rendering.h"
 #include "core/input_error.h"
 #include "lesson/book.h"
+#include "lesson/exercise_topics.h"
 #include "lesson/lesson_loader.h"
 #include "lesson/step_keys.h"
 #include "lesson/step_numbers.h"
@@ -45,7 +46,8 @@ void check(const LessonArguments& a, bool run) {
     try {
       const lesson::Lesson l = lesson::loadLesson(file, folders.scenes);
       lesson::checkAgainstScenes(l, folders.scenes);
-      const auto problems = lessonTextProblems(l);
+      auto problems = lessonTextProblems(l);
+      for (auto& p : lesson::exerciseTopicProblems(l)) problems.push_back(std::move(p));
       if (!problems.empty()) {
         for (const auto& problem : problems) std::cerr << problem << "\n";
         throw InputError({l.file, 0}, std::to_string(problems.size()) + " problem(s) in its text");

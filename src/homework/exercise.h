@@ -29,6 +29,9 @@ struct Question {
   double tolerance = 0;  // |submitted - answer| <= tolerance is right
   bool integer = false;  // counts, indices, yes/no (1/0): tolerance 0.5
   std::vector<Mistake> mistakes;
+  // A multiple-choice question: the choices as the reader sees them (Markdown), the answer is the 1-based
+  // index of the right one, and each wrong choice is a mistake whose name explains why it is wrong.
+  std::vector<std::string> choices;
 };
 
 // A closed-room row of F: the terms the student derived plus the given ones must sum to 1. When a submitted

@@ -72,10 +72,12 @@ StudentGrade gradeStudent(const StudentExercises& key, const Submission& submiss
         if (qg.right) {
           ++g.right;
         } else {
-          qg.feedback = "wrong: " + number(it->second) + " is " + howFarOff(it->second, q);
+          // A wrong choice is neither too high nor too low: its own explanation is the feedback.
+          const bool choice = !q.choices.empty();
+          qg.feedback = choice ? "wrong" : "wrong: " + number(it->second) + " is " + howFarOff(it->second, q);
           for (const Mistake& m : q.mistakes)
             if (std::abs(it->second - m.value) <= q.tolerance) {
-              qg.feedback += "; likely mistake: " + m.name;
+              qg.feedback += (choice ? ": " : "; likely mistake: ") + m.name;
               break;
             }
           qg.feedback += rowFeedback(e, q, submission.values);

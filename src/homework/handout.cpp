@@ -1,5 +1,7 @@
 #include "homework/handout.h"
 
+#include "homework/conceptual.h"
+
 #include <filesystem>
 #include <fstream>
 
@@ -53,16 +55,23 @@ std::string handoutMarkdown(const StudentExercises& s, std::uint64_t seed) {
 
 std::string exerciseBookText(const Exercise& e) {
   std::string out = "\n" + e.statement + "\n\n";
-  for (const Question& q : e.questions) out += "- " + q.label + "\n";
-  return out + "\n*The answers and the worked solution are in the appendix, \"Answers to the exercises\".*\n";
+  for (const Question& q : e.questions) {
+    if (q.choices.empty()) out += "- " + q.label + "\n";
+    for (std::size_t k = 0; k < q.choices.size(); ++k)
+      out += "- " + choiceLetter(k) + " " + q.choices[k] + "\n";
+  }
+  return out + "\n" + answerInstruction(e, Frame::Book) + "\n";
 }
 
 std::string answersAppendix(const std::vector<AppendixEntry>& entries) {
   std::string out;
   for (const AppendixEntry& entry : entries) {
     out += "\n### " + entry.where + "\n\n";
-    for (const Question& q : entry.exercise.questions)
-      out += "- " + q.label + ": $" + num(q.answer, 6) + "$\n";
+    for (const Question& q : entry.exercise.questions) {
+      const auto k = static_cast<std::size_t>(q.answer - 1);
+      out += q.choices.empty() || k >= q.choices.size() ? "- " + q.label + ": $" + num(q.answer, 6) + "$\n"
+                                                        : "- " + choiceLetter(k) + " " + q.choices[k] + "\n";
+    }
     out += "\nWorked solution:\n\n";
     for (const std::string& step : entry.exercise.solution) out += "- " + step + "\n";
   }

@@ -21,40 +21,37 @@ const std::vector<Topic>& topicTable() {
   static const std::vector<Topic> table{
       {"rectangles", "Form factor between two rectangles",
        "F_ij and F_ji of two rectangles: parallel, perpendicular or at an angle",
-       "form-factor,exact-reference,hierarchical", generateRectangles},
+       "form-factor,exact-reference,runtime-error-lab", generateRectangles},
       {"nusselt", "The Nusselt analog", "point-to-rectangle F by projecting onto the hemisphere and the disk",
-       "nusselt-analog,hemicube,ray-casting", generateNusselt},
+       "nusselt-analog,hemicube", generateNusselt},
       {"closure", "Reciprocity and closure", "missing F_ij of a closed box from given ones",
        "form-factor,radiosity-matrix", generateClosure},
       {"hemicube", "Hemicube delta form factors",
-       "delta form factors of given pixels and the F of a footprint", "hemicube,nusselt-analog",
-       generateHemicube},
+       "delta form factors of given pixels and the F of a footprint", "hemicube", generateHemicube},
       {"raycast", "A ray-cast or local-line estimate and its standard error",
        "F_ij from a given table of random numbers (point pairs or local lines), with the standard error",
-       "exact-reference,ray-casting,runtime-error-lab,stochastic,two-solutions,when-n-squared-is-too-big",
-       generateRaycast},
+       "exact-reference,ray-casting,runtime-error-lab", generateRaycast},
       {"assemble-k", "Assembling K", "K = I - diag(rho) F for an enclosure of 3 to 5 patches",
-       "meshing,numerical-stability,radiosity-matrix,rendering-equation", generateAssembleK},
+       "numerical-stability,radiosity-matrix", generateAssembleK},
       {"jacobi-gauss-seidel", "Jacobi and Gauss-Seidel by hand",
-       "two Jacobi and two Gauss-Seidel sweeps, and the exact solution", "gathering,local-vs-global",
+       "two Jacobi and two Gauss-Seidel sweeps, and the exact solution", "gathering",
        generateJacobiGaussSeidel},
       {"southwell", "Southwell shooting", "three shots, the shooter and the unshot power after each",
-       "cornell-box,shooting,when-n-squared-is-too-big", generateSouthwell},
+       "shooting", generateSouthwell},
       {"stochastic-jacobi", "One iteration of stochastic Jacobi",
        "lines drawn from a table of random numbers by power and by F, the estimate, its standard error and "
        "the deterministic sweep",
-       "stochastic", generateStochasticJacobi},
+       "stochastic,when-n-squared-is-too-big", generateStochasticJacobi},
       {"bounces", "The k-th bounce", "the power carried by bounce k and its share of the total",
-       "local-vs-global,rendering-equation,shooting", generateBounces},
+       "cornell-box,local-vs-global,rendering-equation,shooting", generateBounces},
       {"spectral-radius", "Spectral radius and iteration count",
-       "the spectral radius of rho F and the sweeps needed for a tolerance",
-       "gathering,numerical-stability,runtime-error-lab", generateSpectralRadius},
+       "the spectral radius of rho F and the sweeps needed for a tolerance", "gathering,numerical-stability",
+       generateSpectralRadius},
       {"tone-mapping", "Tone mapping to 8-bit",
-       "exposure, linear or Reinhard tone map and sRGB gamma to 0..255", "cornell-box,patches-to-pixels",
+       "exposure, linear or Reinhard tone map and sRGB gamma to 0..255", "patches-to-pixels",
        generateToneMapping},
       {"subdivision", "The adaptive subdivision criterion",
-       "whether the gradient criterion splits an element",
-       "hierarchical,meshing,patches-to-pixels,two-solutions", generateSubdivision},
+       "whether the gradient criterion splits an element", "meshing", generateSubdivision},
       {"irradiance", "Solid angle and irradiance",
        "a small tilted patch lit by a point source: its solid angle, the intensity, the irradiance and the "
        "power received",
@@ -66,6 +63,21 @@ const std::vector<Topic>& topicTable() {
        "a distant lamp and a viewer in the plane of incidence: the angle from the mirror direction, the "
        "normalised Phong BRDF's specular part and whole value, and the radiance seen",
        "reflection", generatePhong},
+      {"reflection-equation", "One bounce of the reflection equation",
+       "a round lamp of radiance L over a Lambertian point: the cosine-weighted solid angle, the irradiance, "
+       "the "
+       "reflected radiance and the radiosity",
+       "rendering-equation,cornell-box", generateReflectionEquation},
+      {"hierarchical-oracle", "A refinement decision of hierarchical radiosity",
+       "the oracle's form-factor estimates of two nodes, which node splits and how many of its children link",
+       "hierarchical,when-n-squared-is-too-big", generateHierarchicalOracle},
+      {"random-walk", "Random walks: path length and the two estimators",
+       "the expected arrivals of a walk for a given rho, and one walk's collision and absorption scores",
+       "stochastic,two-solutions", generateRandomWalk},
+      {"two-pass", "The two-pass method at a point",
+       "the direct part from a small lamp plus the indirect part gathered from the first pass, the radiosity "
+       "and the radiance",
+       "two-solutions,local-vs-global", generateTwoPass},
   };
   return table;
 }
@@ -80,6 +92,11 @@ std::vector<std::string> topicIds() {
   std::vector<std::string> ids;
   for (const Topic& t : topicTable()) ids.emplace_back(t.id);
   return ids;
+}
+
+bool topicFitsLesson(const Topic& topic, const std::string& lessonId) {
+  const std::string list = std::string(",") + topic.lessons + ",";
+  return list.find("," + lessonId + ",") != std::string::npos;
 }
 
 Exercise generateExercise(const Topic& topic, std::uint64_t seed, int student) {

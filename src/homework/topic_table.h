@@ -38,13 +38,17 @@ struct Topic {
   const char* id;
   const char* title;
   const char* practises;  // one line for the docs and --help
-  const char* lessons;    // the lessons whose exercise steps use it (comma-separated ids)
+  // The lessons whose own topic it practises (comma-separated ids): the one place that says which topics fit
+  // a lesson. A lesson's exercise steps may name only topics whose row lists it (a test checks every step).
+  const char* lessons;
   Generator generate;
 };
 
 const std::vector<Topic>& topicTable();
 const Topic* findTopic(const std::string& id);
 std::vector<std::string> topicIds();
+// Whether `lessonId` is one of the lessons the topic's row lists.
+bool topicFitsLesson(const Topic& topic, const std::string& lessonId);
 
 // The variant of `topic` for `student` (0 = a lesson's exercise): the same (seed, student) always gives the
 // same numbers. Draws again while the generator rejects a draw; throws std::runtime_error after 1000.

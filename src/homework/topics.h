@@ -24,5 +24,9 @@ std::optional<Exercise> generateIrradiance(Draw& draw);
 std::optional<Exercise> generatePhong(Draw& draw);
 std::optional<Exercise> generateStochasticJacobi(Draw& draw);
 std::optional<Exercise> generateRayTree(Draw& draw);
+std::optional<Exercise> generateReflectionEquation(Draw& draw);
+std::optional<Exercise> generateHierarchicalOracle(Draw& draw);
+std::optional<Exercise> generateRandomWalk(Draw& draw);
+std::optional<Exercise> generateTwoPass(Draw& draw);
 
 }  // namespace rt::homework

@@ -11,6 +11,7 @@
 
 #include "core/formfactor/formfactor_method.h"
 #include "core/scene.h"
+#include "homework/conceptual.h"
 
 namespace rt::lesson {
 
@@ -193,6 +194,10 @@ struct Step {
   std::string figure;                   // base name of the step's figure files
   std::vector<std::string> controls;    // parameter keys the app may let the reader change
   std::map<std::string, Field> fields;  // every key as written, with its line (for late errors)
+  // An exercise step's conceptual question: the choices of its ```question block (the step's text asks the
+  // question), and the block's line.
+  std::vector<homework::Choice> choices;
+  int questionLine = 0;
 
   // File names (without folder) of the figures, one per view: "<figure>.png" for a single view,
   // "<figure>-<view>.png" otherwise.

@@ -162,6 +162,16 @@ class Parser {
         }
         continue;
       }
+      if (!inFence && t == "```question") {
+        if (!step) fail(line, "a ```question block belongs to an exercise step");
+        if (step->questionLine) fail(line, "the step already has a ```question block");
+        step->questionLine = line;
+        const std::size_t end = parseQuestionBlock(i + 1, *step);
+        // Blank lines in its place keep the text's line numbers right.
+        text.insert(text.end(), end - i + 1, "");
+        i = end;
+        continue;
+      }
       if (startsWith(t, "```")) inFence = !inFence;
       text.push_back(raw);
     }
@@ -190,6 +200,61 @@ class Parser {
       applyField(step, key, value, {file_, line});
     }
     fail(static_cast<int>(at), "the ```step block is not closed by ```");
+  }
+
+  // Reads a ```question block: `right:` or `wrong:` lines, each followed by a `because:` line (a line that
+  // starts with spaces continues the one before); returns the index of the closing fence.
+  std::size_t parseQuestionBlock(std::size_t at, Step& step) {
+    std::string* last = nullptr;  // the entry a continuation line extends
+    bool needsBecause = false;
+    int choiceLine = 0;
+    for (std::size_t i = at; i < lines_.size(); ++i) {
+      const int line = static_cast<int>(i) + 1;
+      const std::string& raw = lines_[i];
+      const std::string t = trim(raw);
+      if (t == "```") {
+        if (needsBecause) fail(choiceLine, "this choice has no 'because:' line that explains it");
+        int right = 0;
+        for (const homework::Choice& c : step.choices) right += c.right;
+        if (step.choices.size() < 2)
+          fail(step.questionLine, "a ```question block needs at least two choices ('right:' and 'wrong:')");
+        if (right != 1)
+          fail(step.questionLine,
+               "a ```question block needs exactly one 'right:' choice, not " + std::to_string(right));
+        if (step.choices.size() > 6)
+          fail(step.questionLine, "a ```question block offers at most six choices");
+        return i;
+      }
+      if (t.empty()) continue;
+      if (raw[0] == ' ' || raw[0] == '\t') {
+        if (!last)
+          fail(line,
+               "a continuation line (it starts with spaces) needs a 'right:', 'wrong:' or "
+               "'because:' line before it");
+        *last += " " + t;
+        continue;
+      }
+      const auto colon = t.find(':');
+      const std::string key = colon == std::string::npos ? "" : trim(t.substr(0, colon));
+      const std::string value = colon == std::string::npos ? "" : trim(t.substr(colon + 1));
+      if (key != "right" && key != "wrong" && key != "because")
+        fail(line,
+             "expected 'right: ...', 'wrong: ...' or 'because: ...' in the question block, got '" + t + "'");
+      if (value.empty()) fail(line, "'" + key + "' has no text");
+      if (key == "because") {
+        if (!needsBecause) fail(line, "'because:' explains the 'right:' or 'wrong:' line just before it");
+        step.choices.back().because = value;
+        last = &step.choices.back().because;
+        needsBecause = false;
+      } else {
+        if (needsBecause) fail(choiceLine, "this choice has no 'because:' line that explains it");
+        step.choices.push_back({value, "", key == "right"});
+        last = &step.choices.back().text;
+        needsBecause = true;
+        choiceLine = line;
+      }
+    }
+    fail(step.questionLine, "the ```question block is not closed by ```");
   }
 
   // Parameters go through the table of step keys (step_keys.h); the keys that describe the step itself are
@@ -275,12 +340,17 @@ class Parser {
     };
     if (!step.fields.count("stage")) fail(step.line, "step '" + step.title + "' has no 'stage'");
     const StepParameters& p = step.parameters;
+    if (step.questionLine && step.stage != Stage::Exercise)
+      fail(step.questionLine, "a ```question block belongs to an exercise step ('stage: exercise')");
     if (step.stage == Stage::Text || step.stage == Stage::Exercise) {
       if (!step.views.empty())
         fail(lineOf("views"),
              "a " + toString(step.stage) + " step has no figures: remove 'views' or choose a stage");
-      if (step.stage == Stage::Exercise && p.topic.empty())
-        fail(lineOf("stage"), "an exercise step needs a 'topic' (see `radiosity homework topics`)");
+      if (step.stage == Stage::Exercise && p.topic.empty() && step.choices.empty())
+        fail(lineOf("stage"),
+             "an exercise step needs a 'topic' (see `radiosity homework topics`) or a ```question block");
+      if (step.stage == Stage::Exercise && !p.topic.empty() && !step.choices.empty())
+        fail(step.questionLine, "an exercise step has a 'topic' or a ```question block, not both");
     } else if (step.stage == Stage::Radiometry) {
       if (!step.scene.empty())
         fail(lineOf("scene"),

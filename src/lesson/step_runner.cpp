@@ -95,7 +95,13 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
   if (options_.quick) quickCaps(c.parameters);
   if (step.stage == Stage::Text) return result;
   if (step.stage == Stage::Exercise) {
-    // No scene: the exercise brings its own numbers, drawn from the step's seed (student 0: the book's).
+    // No scene: a conceptual question is the lesson's own; a numeric exercise brings its own numbers, drawn
+    // from the step's seed (student 0: the book's).
+    if (!step.choices.empty()) {
+      result.exercise = homework::conceptualExercise(step.title, step.choices);
+      result.values["answer.choice"] = result.exercise->questions.front().answer;
+      return result;
+    }
     const homework::Topic* topic = homework::findTopic(step.parameters.topic);
     if (!topic) c.fail("topic", "unknown homework topic '" + step.parameters.topic + "'");
     result.exercise = homework::generateExercise(*topic, step.parameters.seed.value_or(1), 0);

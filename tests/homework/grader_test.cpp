@@ -13,7 +13,10 @@
 
 #include "core/input_error.h"
 #include "core/io/matrix_export.h"
+#include "homework/conceptual.h"
 #include "homework/grader.h"
+#include "homework/handout.h"
+#include "homework/plain_text.h"
 #include "homework/topic_table.h"
 #include "support/test_paths.h"
 
@@ -230,6 +233,39 @@ TEST(HomeworkGrader, AMalformedKeyIsAnInputErrorNamingTheFile) {
       EXPECT_NE(std::string(e.what()).find("bad-key.json"), std::string::npos) << e.what();
     }
   }
+}
+
+// A conceptual question: the right choice scores, a wrong one is said wrong with its own explanation (never
+// too high or too low), and the book prints the choices with letters and the answer in the appendix.
+TEST(HomeworkGrader, AWrongChoiceIsExplainedByItsOwnExplanation) {
+  const Exercise e =
+      conceptualExercise("Q", {{"Twice", "The error falls like one over the root of N.", false},
+                               {"Four times", "Halving 1/sqrt(N) needs N four times larger.", true},
+                               {"Never", "Monte Carlo error falls with the samples.", false}});
+  ASSERT_TRUE(exerciseProblems(e).empty()) << exerciseProblems(e).front();
+  const StudentExercises key{"reader", {e}};
+  auto grade = [&](double choice) {
+    Submission sub;
+    sub.files.push_back("app");
+    sub.values["conceptual.choice"] = choice;
+    return gradeStudent(key, sub).exercises.front().front();
+  };
+  EXPECT_TRUE(grade(2).right);
+  EXPECT_EQ(grade(1).feedback, "wrong: The error falls like one over the root of N.");
+  EXPECT_EQ(grade(3).feedback, "wrong: Monte Carlo error falls with the samples.");
+  const std::string book = exerciseBookText(e);
+  EXPECT_NE(book.find("- (a) Twice\n- (b) Four times\n- (c) Never"), std::string::npos) << book;
+  const std::string answers = answersAppendix({{"Q", e}});
+  EXPECT_NE(answers.find("- (b) Four times"), std::string::npos) << answers;
+  EXPECT_NE(answers.find("- Not (a) Twice. The error falls"), std::string::npos) << answers;
+  EXPECT_NE(answers.find("- The answer is (b) Four times. Halving"), std::string::npos) << answers;
+}
+
+TEST(HomeworkPlainText, MathsBecomesUnicodeForWidgets) {
+  EXPECT_EQ(plainText("$\\rho_i F_{ij} \\le 1$"), "ρ_i F_ij ≤ 1");
+  EXPECT_EQ(plainText("$\\operatorname{diag}(\\rho)F$ and $s/\\sqrt N$"), "diag(ρ)F and s/√N");
+  EXPECT_EQ(plainText("$\\cos\\theta\\,d\\omega$"), "cosθ dω");
+  EXPECT_EQ(plainText("F_ji given for F_ij"), "F_ji given for F_ij");
 }
 
 }  // namespace

@@ -386,6 +386,136 @@ TEST(HomeworkIndependent, PhongAgreesWithTheCoreBrdf) {
   });
 }
 
+// A disc of radius R, `sides` corners, centred on the z axis at the height h, facing down (CCW seen from
+// below).
+Polygon discFacingDown(double R, double h, int sides) {
+  Polygon disc;
+  for (int k = 0; k < sides; ++k) {
+    const double t = -2 * std::numbers::pi * k / sides;
+    disc.emplace_back(R * std::cos(t), R * std::sin(t), h);
+  }
+  return disc;
+}
+
+TEST(HomeworkIndependent, ReflectionEquationAgreesWithLambertsFormulaForTheLamp) {
+  forEachVariant("reflection-equation", [](const Exercise& e) {
+    const double R = e.given.at("radius"), h = e.given.at("height"), L = e.given.at("radiance");
+    const int sides = 720;
+    // The inscribed polygon's area is short of the disc's by sin(2 pi/n) / (2 pi/n): scale it back.
+    const double step = 2 * std::numbers::pi / sides;
+    const double F = pointToPolygonFormFactor(Vec3::Zero(), Vec3(0, 0, 1), discFacingDown(R, h, sides)) /
+                     (std::sin(step) / step);
+    const double H = std::numbers::pi * L * F, rho = e.given.at("rho");
+    EXPECT_AGREES(e, "s2", F, 0.2);
+    EXPECT_AGREES(e, "H", H, 0.2);
+    EXPECT_AGREES(e, "Lr", rho * H / std::numbers::pi, 0.2);
+    EXPECT_AGREES(e, "B", rho * H, 0.2);
+  });
+}
+
+TEST(HomeworkIndependent, HierarchicalOracleAgreesWithTheCoresKernelAndSplittingRule) {
+  forEachVariant("hierarchical-oracle", [](const Exercise& e) {
+    const double a = e.given.at("a"), b = e.given.at("b"), h = e.given.at("height"), x = e.given.at("offset");
+    const Vec3 cp(0, 0, 0), cq(x, 0, h), up(0, 0, 1), down(0, 0, -1);
+    // A node shrunk about its centre by delta: its point-to-polygon F over delta^2 is the small-node
+    // estimate.
+    const double delta = 1e-3;
+    auto square = [](const Vec3& c, double side, bool facingUp) {
+      const double s = side / 2;
+      return facingUp
+                 ? Polygon{c + Vec3(-s, -s, 0), c + Vec3(s, -s, 0), c + Vec3(s, s, 0), c + Vec3(-s, s, 0)}
+                 : Polygon{c + Vec3(-s, -s, 0), c + Vec3(-s, s, 0), c + Vec3(s, s, 0), c + Vec3(s, -s, 0)};
+    };
+    const double Fpq = pointToPolygonFormFactor(cp, up, square(cq, b * delta, false)) / (delta * delta);
+    const double Fqp = pointToPolygonFormFactor(cq, down, square(cp, a * delta, true)) / (delta * delta);
+    EXPECT_AGREES(e, "Fpq", Fpq, 0.05);
+    EXPECT_AGREES(e, "Fqp", Fqp, 0.05);
+    // The core's rule (refine/hierarchical_radiosity.cpp): split the receiver p when F_qp >= F_pq.
+    const bool splitReceiver = pointToPolygonFormFactor(cq, down, square(cp, a, true)) >=
+                               pointToPolygonFormFactor(cp, up, square(cq, b, false));
+    EXPECT_EQ(answer(e, "split"), splitReceiver ? 1.0 : 2.0) << "seed " << e.seed;
+    // The children, each with its own centre.
+    const double side = splitReceiver ? a : b, other = splitReceiver ? b : a;
+    const Vec3 splitCentre = splitReceiver ? cp : cq, otherCentre = splitReceiver ? cq : cp;
+    const Vec3 splitNormal = splitReceiver ? up : down, otherNormal = splitReceiver ? down : up;
+    int linked = 0;
+    for (int c = 0; c < 4; ++c) {
+      const Vec3 child =
+          splitCentre + Vec3((c & 1) ? side / 4 : -side / 4, (c & 2) ? side / 4 : -side / 4, 0);
+      const double toOther =
+          pointToPolygonFormFactor(child, splitNormal, square(otherCentre, other * delta, !splitReceiver));
+      const double toChild =
+          pointToPolygonFormFactor(otherCentre, otherNormal, square(child, side / 2 * delta, splitReceiver));
+      linked += std::max(toOther, toChild) / (delta * delta) < e.given.at("epsilon");
+    }
+    EXPECT_EQ(answer(e, "linked"), linked) << "seed " << e.seed;
+  });
+}
+
+TEST(HomeworkIndependent, RandomWalkLengthAgreesWithTheCoresDirectSolution) {
+  forEachVariant("random-walk", [](const Exercise& e) {
+    // A closed room of three patches (rows of F sum to 1, A_i F_ij = A_j F_ji) with the exercise's rho and a
+    // light on patch 1: the power arriving everywhere over the power emitted is the mean number of arrivals.
+    Eigen::Vector3d A(1.0, 2.0, 3.0);
+    Eigen::Matrix3d exchange;  // A_i F_ij: symmetric, row i sums to A_i
+    exchange << 0, 0.4, 0.6, 0.4, 0.6, 1.0, 0.6, 1.0, 1.4;
+    const FormFactorMatrix F = A.cwiseInverse().asDiagonal() * exchange;
+    for (int i = 0; i < 3; ++i) ASSERT_NEAR(F.row(i).sum(), 1, 1e-12);
+    const double rho = e.given.at("rho");
+    RadiositySystem system;
+    system.F = &F;
+    system.reflectance = RgbField::Constant(3, 3, rho);
+    system.emission = RgbField::Zero(3, 3);
+    system.emission.row(0).setConstant(10);
+    system.areas = A;
+    RgbField B;
+    directSolve(system, B, {});
+    double arriving = 0;
+    for (int i = 0; i < 3; ++i) arriving += A(i) * (B(i, 0) - system.emission(i, 0)) / rho;
+    EXPECT_AGREES(e, "hits", arriving / (A(0) * 10), 0.01);
+    EXPECT_AGREES(e, "survive", std::pow(rho, e.given.at("k") - 1), 0.01);
+  });
+}
+
+TEST(HomeworkIndependent, TwoPassAgreesWithTheNusseltProjectionAndTheLampsExactFormFactor) {
+  forEachVariant("two-pass", [](const Exercise& e) {
+    const Eigen::MatrixXd& table = data(e, "surfaces");
+    const double W = e.given.at("W"), D = e.given.at("D"), H = e.given.at("H"), s = e.given.at("side");
+    const double lx = e.given.at("lx"), ly = e.given.at("ly");
+    const Vec3 P(e.given.at("px"), e.given.at("py"), 0), n(0, 0, 1);
+    const Polygon lamp{Vec3(lx - s / 2, ly - s / 2, H), Vec3(lx - s / 2, ly + s / 2, H),
+                       Vec3(lx + s / 2, ly + s / 2, H), Vec3(lx + s / 2, ly - s / 2, H)};
+    const std::vector<Polygon> others{{Vec3(0, 0, H), Vec3(0, D, H), Vec3(W, D, H), Vec3(W, 0, H)},
+                                      {Vec3(0, 0, 0), Vec3(0, D, 0), Vec3(0, D, H), Vec3(0, 0, H)},
+                                      {Vec3(W, 0, 0), Vec3(W, 0, H), Vec3(W, D, H), Vec3(W, D, 0)},
+                                      {Vec3(0, 0, 0), Vec3(0, 0, H), Vec3(W, 0, H), Vec3(W, 0, 0)},
+                                      {Vec3(0, D, 0), Vec3(W, D, 0), Vec3(W, D, H), Vec3(0, D, H)}};
+    // The printed form factors against the Nusselt projection (to their four digits), and the hemisphere
+    // closes: lamp, ceiling and walls are everything the floor point sees.
+    const double lampF = nusseltFormFactor(P, n, lamp.data(), 4, 512);
+    EXPECT_NEAR(table(0, 1), lampF, 6e-4 * lampF);
+    double sum = table(0, 1), Hi = 0;
+    for (std::size_t j = 0; j < others.size(); ++j) {
+      double F = nusseltFormFactor(P, n, others[j].data(), 4, 512);
+      if (j == 0) F -= lampF;
+      EXPECT_NEAR(table(static_cast<Eigen::Index>(j + 1), 1), F, 6e-5)
+          << "seed " << e.seed << " row " << j + 1;
+      sum += table(static_cast<Eigen::Index>(j + 1), 1);
+      Hi += table(static_cast<Eigen::Index>(j + 1), 0) * table(static_cast<Eigen::Index>(j + 1), 1);
+    }
+    EXPECT_NEAR(sum, 1.0, 4e-4);
+    EXPECT_AGREES(e, "Hi", Hi, 0.01);
+    // The small-source direct part against the lamp's exact form factor: within the small-source error,
+    // about (side / r)^2 of it.
+    const double r2 = (Vec3(lx, ly, H) - P).squaredNorm();
+    const double exact = table(0, 0) * pointToPolygonFormFactor(P, n, lamp);
+    EXPECT_NEAR(answer(e, "Hd"), exact, exact * s * s / r2) << "seed " << e.seed;
+    const double rho = e.given.at("rho");
+    EXPECT_AGREES(e, "B", rho * (answer(e, "Hd") + Hi), 0.01);
+    EXPECT_AGREES(e, "L", rho * (answer(e, "Hd") + Hi) / std::numbers::pi, 0.01);
+  });
+}
+
 #ifdef RT_HAVE_VIZ
 TEST(HomeworkIndependent, ToneMappingAgreesWithTheDisplayPipeline) {
   forEachVariant("tone-mapping", [](const Exercise& e) {
