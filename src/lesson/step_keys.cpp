@@ -523,7 +523,7 @@ std::vector<StepKey> makeTable() {
        .min = 0,
        .max = 1,
        .defaultText = "0.3",
-       .label = "Specular fraction k_s / (k_d + k_s)",
+       .label = "Specular fraction",
        .tooltip = "Reflection stage: the share of the reflectance that is specular, k_s / (k_d + k_s); the "
                   "rest is diffuse, so k_d + k_s stays the surface's reflectance.",
        .control = true,
@@ -536,7 +536,7 @@ std::vector<StepKey> makeTable() {
        .min = 1,
        .max = 16,
        .defaultText = "1",
-       .label = "Anisotropy alpha_x / alpha_y",
+       .label = "Anisotropy",
        .tooltip = "Reflection stage: Ward's lobe is alpha_x / alpha_y times wider along the surface's x axis "
                   "than along y (1: isotropic).",
        .control = true,
@@ -549,7 +549,7 @@ std::vector<StepKey> makeTable() {
        .min = 0,
        .max = 89,
        .defaultText = "45",
-       .label = "Incidence angle (degrees)",
+       .label = "Incidence (degrees)",
        .tooltip = "Reflection stage: the angle between the surface's normal and the direction the light "
                   "arrives from, in the plane of the surface's x axis.",
        .control = true,

@@ -20,7 +20,7 @@ TEST(ProgressPhases, TheStripShowsThePhaseAndTheMethodThatRuns) {
   auto window = test::makeWindow(/*threaded=*/true, /*quick=*/false);
   ASSERT_TRUE(window->openScene(QString()));
   ASSERT_TRUE(window->waitUntilIdle());
-  // A finer mesh and a finer hemicube: a job of a few seconds, started by typing, as a reader starts it.
+  // A finer mesh: a job of a few seconds, started by typing, as a reader starts it.
   QWidget* subdivide = window->parameterPanel()->editor("subdivide");
   subdivide->setFocus();
   QTest::mouseClick(subdivide, Qt::LeftButton);
@@ -44,7 +44,7 @@ TEST(ProgressPhases, TheStripShowsThePhaseAndTheMethodThatRuns) {
   EXPECT_TRUE(shownWhileBusy);
   bool formFactors = false;
   for (const std::string& s : stages)
-    formFactors = formFactors || s.find("form factors (hemicube)") != std::string::npos;
+    formFactors = formFactors || s.find("form factors (quadrature)") != std::string::npos;
   std::string all;
   for (const std::string& s : stages) all += s + " | ";
   EXPECT_TRUE(formFactors) << all;

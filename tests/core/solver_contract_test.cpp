@@ -195,7 +195,7 @@ INSTANTIATE_TEST_SUITE_P(AllSolvers, SolverContract, ::testing::ValuesIn(solverN
                          });
 
 TEST(SolverRegistry, KnowsEveryMethodAndRejectsOthers) {
-  EXPECT_EQ(solverNames().size(), 12u);
+  EXPECT_EQ(solverNames().size(), 13u);
   EXPECT_FALSE(solverNeedsMatrix("local-lines"));
   EXPECT_FALSE(solverNeedsMatrix("local-lines-regular"));
   EXPECT_FALSE(solverNeedsMatrix("hierarchical-clustering"));
