@@ -182,12 +182,23 @@ bool LessonTextView::waitUntilShown(int timeoutMs) {
   return true;
 }
 
+QJsonObject LessonTextView::pageAnswer(const QString& script, int timeoutMs) {
+  // The page answers on its own thread's time: wait for it, but never longer than the caller allows.
+  QEventLoop loop;
+  QVariant answer;
+  view_->page()->runJavaScript(script, [&](const QVariant& value) {
+    answer = value;
+    loop.quit();
+  });
+  QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+  loop.exec();
+  return QJsonDocument::fromJson(answer.toString().toUtf8()).object();
+}
+
 LessonTextView::MathsState LessonTextView::mathsState(int timeoutMs) {
   MathsState state;
   if (!waitUntilShown(timeoutMs)) return state;
-  QEventLoop loop;
-  QVariant answer;
-  view_->page()->runJavaScript(
+  const QJsonObject o = pageAnswer(
       "(function () { var eq = Array.prototype.map.call(document.querySelectorAll('.katex'), function (e) {"
       " return parseFloat(getComputedStyle(e).fontSize); });"
       " var overlaps = 0; document.querySelectorAll('.katex-display').forEach(function (d) {"
@@ -197,13 +208,7 @@ LessonTextView::MathsState LessonTextView::mathsState(int timeoutMs) {
       "    overlaps++; }); });"
       " return JSON.stringify({katex: eq.length, body: parseFloat(getComputedStyle(document.body).fontSize),"
       " smallest: eq.length ? Math.min.apply(null, eq) : 0, overlaps: overlaps}); })()",
-      [&](const QVariant& value) {
-        answer = value;
-        loop.quit();
-      });
-  QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
-  loop.exec();
-  const QJsonObject o = QJsonDocument::fromJson(answer.toString().toUtf8()).object();
+      timeoutMs);
   state.ready = !o.isEmpty();
   state.formulas = formulas_;
   state.errors = errors_;
@@ -216,23 +221,15 @@ LessonTextView::MathsState LessonTextView::mathsState(int timeoutMs) {
 
 QRect LessonTextView::linkRect(const QString& hrefSuffix, int timeoutMs) {
   if (!waitUntilShown(timeoutMs)) return {};
-  QEventLoop loop;
-  QVariant answer;
   QString suffix = hrefSuffix;
   suffix.replace('\\', "\\\\").replace('\'', "\\'");
-  view_->page()->runJavaScript(
+  const QJsonObject o = pageAnswer(
       "(function () { var a = Array.prototype.find.call(document.querySelectorAll('a[href]'), function (e) {"
       " return e.getAttribute('href').endsWith('" +
           suffix +
           "'); }); if (!a) return ''; a.scrollIntoView({block: 'center'}); var r = a.getBoundingClientRect();"
           " return JSON.stringify({x: r.left, y: r.top, w: r.width, h: r.height}); })()",
-      [&](const QVariant& value) {
-        answer = value;
-        loop.quit();
-      });
-  QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
-  loop.exec();
-  const QJsonObject o = QJsonDocument::fromJson(answer.toString().toUtf8()).object();
+      timeoutMs);
   if (o.isEmpty()) return {};
   const double zoom = view_->zoomFactor();
   return QRectF(o.value("x").toDouble() * zoom, o.value("y").toDouble() * zoom,

@@ -3,6 +3,7 @@
 // palette, so presenter mode and the zoom keys scale the equations with the text.
 #pragma once
 
+#include <QJsonObject>
 #include <QPalette>
 #include <QRect>
 #include <QString>
@@ -58,6 +59,8 @@ class LessonTextView : public QWidget {
 
  private:
   QString pageHtml(const QString& body) const;
+  // Runs a script that returns JSON text on the page; its answer (empty when none came in time).
+  QJsonObject pageAnswer(const QString& script, int timeoutMs);
   QString styleSheet() const;
   void applyStyle();
   void watchChildren(QObject* object);
