@@ -14,6 +14,7 @@
 #include "core/polygon.h"
 #include "lesson/reflection_data.h"
 #include "lesson/step_stages.h"
+#include "lesson/traced_pictures.h"
 
 namespace rt::lesson::detail {
 namespace {
@@ -55,12 +56,6 @@ Scene lobeScene(const BrdfLobe& lobe, const Vec3& wi) {
   return s;
 }
 
-double meanOf(const RgbImage& image) {
-  double sum = 0;
-  for (const Rgb& p : image.pixels) sum += p.mean();
-  return image.pixels.empty() ? 0.0 : sum / static_cast<double>(image.pixels.size());
-}
-
 // Phong local illumination and the radiosity solution of the step's scene through its camera.
 void lightTheScene(StageContext& c, ReflectionData& d) {
   StepResult& r = c.result;
@@ -84,8 +79,8 @@ void lightTheScene(StageContext& c, ReflectionData& d) {
   auto& v = r.values;
   v["ambient"] = d.ambient.mean();
   v["light-samples"] = kLightSamples;
-  v["image.local.mean"] = meanOf(d.local);
-  v["image.radiosity.mean"] = meanOf(d.radiosity);
+  v["image.local.mean"] = imageMean(d.local);
+  v["image.radiosity.mean"] = imageMean(d.radiosity);
   v["image.local-ratio"] = v["image.local.mean"] / v["image.radiosity.mean"];
   addSurfaceValues(r, "B", r.B);
 }
