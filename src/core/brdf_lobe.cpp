@@ -48,7 +48,9 @@ BrdfLobe brdfLobe(const Brdf& brdf, const Vec3& wi, double size, int rings, int 
     return lobe;
   }
   const Vec3 axis = brdf.model == BrdfModel::Lambertian ? Vec3::UnitZ() : mirrorDirection(wi);
-  const auto [u, v] = perpendiculars(axis);
+  // Named copies, not structured bindings: C++20 lambdas may capture those only from clang 16 on.
+  const auto frame = perpendiculars(axis);
+  const Vec3 u = frame.first, v = frame.second;
   // Ring a at the angle pi (a / rings)^2 from the axis: dense near it, reaching the opposite pole.
   auto direction = [&](int a, int b) {
     const double t = static_cast<double>(a) / rings, beta = kPi * t * t, phi = 2 * kPi * b / sectors;
