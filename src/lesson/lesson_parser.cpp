@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/formfactor/formfactor_method.h"
 #include "core/input_error.h"
 #include "core/solvers/solver.h"
 #include "lesson/placeholders.h"
@@ -428,9 +429,7 @@ const std::vector<std::string>& stepKeys() {
 }
 
 const std::vector<std::string>& knownMethods() {
-  static const std::vector<std::string> methods{"analytic", "analytic-visibility", "hemicube",
-                                                "raycast",  "montecarlo",          "nusselt",
-                                                "hybrid",   "quadrature",          "exact"};
+  static const std::vector<std::string> methods = declaredFormFactorMethods();  // the registry's names
   return methods;
 }
 

@@ -116,6 +116,11 @@ std::unique_ptr<FormFactorMethod> makeFormFactorMethod(const std::string& name) 
   std::lock_guard lock(registryMutex());
   auto it = registry().find(name);
   if (it == registry().end()) {
+    const auto& optional = optionalFormFactorMethods();
+    if (std::find(optional.begin(), optional.end(), name) != optional.end())
+      throw std::invalid_argument(
+          "the form-factor method '" + name +
+          "' is not in this build: it needs the exact layer (CGAL; RT_BUILD_EXACT=ON)");
     std::string known;
     for (const auto& [key, factory] : registry()) known += (known.empty() ? "" : ", ") + key;
     throw std::invalid_argument("unknown form-factor method '" + name + "' (known: " + known + ")");

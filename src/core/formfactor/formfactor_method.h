@@ -94,7 +94,13 @@ using FormFactorMethodFactory = std::function<std::unique_ptr<FormFactorMethod>(
 void registerFormFactorMethod(const std::string& name, FormFactorMethodFactory factory);
 std::unique_ptr<FormFactorMethod> makeFormFactorMethod(
     const std::string& name);  // throws std::invalid_argument
+// The methods this build can run (the registry).
 std::vector<std::string> formFactorMethodNames();
+// Methods a layer above the core registers when the build has it ("exact" needs CGAL): lesson files and the
+// CLI accept their names in every build, and making one that is absent says what the build lacks.
+const std::vector<std::string>& optionalFormFactorMethods();
+// Every name a lesson or a command may give: the registered methods and the optional ones, sorted.
+std::vector<std::string> declaredFormFactorMethods();
 // The method every computation uses when none is named: the CLI, the app, a lesson step without `method`,
 // PipelineSettings. Quadrature: the most accurate for its time on every scene measured (docs/formfactors.md).
 const std::string& defaultFormFactorMethod();

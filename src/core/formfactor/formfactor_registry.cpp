@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include "core/formfactor/analytic_method.h"
 #include "core/formfactor/formfactor_method.h"
 
@@ -21,6 +23,19 @@ void registerBuiltinFormFactorMethods() {
     return true;
   }();
   (void)once;
+}
+
+const std::vector<std::string>& optionalFormFactorMethods() {
+  static const std::vector<std::string> names{"exact"};
+  return names;
+}
+
+std::vector<std::string> declaredFormFactorMethods() {
+  std::vector<std::string> names = formFactorMethodNames();
+  for (const std::string& name : optionalFormFactorMethods())
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 }  // namespace rt
