@@ -1,6 +1,7 @@
 #include "app/residual_chart.h"
 
 #include <QChart>
+#include <QFontMetricsF>
 #include <QLegendMarker>
 #include <QLineSeries>
 #include <QLogValueAxis>
@@ -96,7 +97,10 @@ void ResidualChart::setRuns(const std::vector<QString>& names,
   xAxis_->setTickType(QValueAxis::TicksDynamic);
   xAxis_->setTickAnchor(1);
   xAxis_->setTickInterval(std::max(1, (longest + 7) / 8));
-  yAxis_->setRange(std::pow(10, std::floor(std::log10(floor))), std::pow(10, std::ceil(std::log10(highest))));
+  lowestDecade_ = static_cast<int>(std::floor(std::log10(floor)));
+  highestDecade_ = std::max(lowestDecade_ + 1, static_cast<int>(std::ceil(std::log10(highest))));
+  yAxis_->setRange(std::pow(10, lowestDecade_), std::pow(10, highestDecade_));
+  fitResidualLabels();
   c->legend()->setVisible(residuals_.size() > 1);
   // Empty axes alone would look like a solver that failed to start.
   c->setTitle(residuals_.empty() ? tr("No iteration history in this step") : QString());
@@ -158,6 +162,31 @@ void ResidualChart::setLargeFonts(bool large) {
     axes[k]->setTitleFont(fonts[3 + k]);
   }
   chart()->legend()->setFont(fonts[5]);
+  fitResidualLabels();
+}
+
+void ResidualChart::resizeEvent(QResizeEvent* event) {
+  QChartView::resizeEvent(event);
+  fitResidualLabels();
+}
+
+void ResidualChart::fitResidualLabels() {
+  // A label needs its line and a little air; the plot area is the chart's height less the x axis and the
+  // legend (estimated before the first layout, when the chart has no plot area yet).
+  const double labelHeight = 1.4 * QFontMetricsF(yAxis_->labelsFont()).height();
+  double room = chart()->plotArea().height();
+  if (room <= 0) room = height() - 4 * labelHeight;
+  const int fit = std::max(2, static_cast<int>(room / labelHeight));
+  const int decades = highestDecade_ - lowestDecade_;
+  const int perLabel = std::max(1, (decades + fit - 2) / (fit - 1));
+  // The axis labels the powers of its base inside its range: base 10^k labels every k-th decade.
+  yAxis_->setBase(std::pow(10.0, perLabel));
+  yAxis_->setMinorTickCount(perLabel > 1 ? perLabel - 1 : 0);
+}
+
+int ResidualChart::residualLabels() const {
+  const int perLabel = static_cast<int>(std::lround(std::log10(yAxis_->base())));
+  return (highestDecade_ - lowestDecade_) / std::max(1, perLabel) + 1;
 }
 
 QFont ResidualChart::axisTitleFont() const {

@@ -31,14 +31,24 @@ class ResidualChart : public QChartView {
   QFont labelsFont() const;
   // The x axis's title font (bold, as Qt Charts sets axis titles, in both modes).
   QFont axisTitleFont() const;
+  // How many labels the residual axis shows; fewer than its decades when the chart is short (one label per
+  // decade would not fit, and Qt Charts would write each as "...").
+  int residualLabels() const;
+
+ protected:
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
+  void fitResidualLabels();
+
   std::vector<std::vector<double>> residuals_;
   std::vector<QLineSeries*> full_, shown_;
   QScatterSeries* marker_ = nullptr;
   QValueAxis* xAxis_ = nullptr;
   QLogValueAxis* yAxis_ = nullptr;
   bool large_ = false;
+  // The residual axis's range, as powers of ten.
+  int lowestDecade_ = -6, highestDecade_ = 0;
   // The fonts of the normal mode: chart title, x and y labels, x and y titles, legend.
   std::array<QFont, 6> normalFonts_;
   bool normalFontsKnown_ = false;

@@ -4,8 +4,11 @@
 
 #include <QApplication>
 #include <QDebug>
+#include <QFontMetricsF>
 #include <QTest>
+#include <cmath>
 
+#include "app/residual_chart.h"
 #include "app_test_support.h"
 
 using namespace rt::app;
@@ -38,5 +41,31 @@ TEST(ProjectorSize, TheWindowFitsA1024By768Screen) {
     if (window->minimumSizeHint().width() > 1024) reportWidest(window.get());
     EXPECT_LE(window->minimumSizeHint().width(), 1024) << lesson;
     EXPECT_LE(window->width(), 1024) << lesson;
+  }
+}
+
+TEST(ProjectorSize, ChartLabelsFitAShortWindow) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+  ASSERT_TRUE(window->openLesson("gathering", 1));
+  ASSERT_TRUE(window->waitUntilIdle());
+  ResidualChart* chart = window->residualChart();
+  ASSERT_NE(chart, nullptr);
+  // Twelve decades of residual, as a long Jacobi run gives, in a window 600 px high.
+  std::vector<double> residuals;
+  for (int k = 0; k <= 24; ++k) residuals.push_back(std::pow(10.0, -0.5 * k));
+  chart->setRuns({"Jacobi"}, {residuals});
+  for (int height : {1000, 600}) {
+    window->resize(1024, height);
+    QApplication::processEvents();
+    QApplication::processEvents();
+    const double room = chart->chart()->plotArea().height();
+    const double labelHeight = QFontMetricsF(chart->labelsFont()).height();
+    EXPECT_GE(chart->residualLabels(), 2) << height;
+    EXPECT_LE(chart->residualLabels() * labelHeight, room)
+        << "labels of the residual axis at window height " << height
+        << " would be elided: " << chart->residualLabels() << " labels in " << room << " px";
   }
 }
