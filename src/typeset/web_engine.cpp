@@ -19,6 +19,14 @@ void prepareWebEngine() {
   if (geteuid() == 0 && qEnvironmentVariableIsEmpty("QTWEBENGINE_DISABLE_SANDBOX"))
     qputenv("QTWEBENGINE_DISABLE_SANDBOX", "1");
   QCoreApplication::setAttribute(Qt::AA_ShareOpenGLContexts);
+  // Text and maths, laid out or printed, need no GPU. With it, Chromium reads the 3D view's default surface
+  // format (a core profile), reports that it falls back from it, and its GPU process sometimes reports a
+  // transient failure at start: harmless, but on every start's stderr. Without it neither is printed, and
+  // Qt's and Chromium's descriptions of their set-up are silenced too.
+  if (qEnvironmentVariableIsEmpty("QTWEBENGINE_CHROMIUM_FLAGS"))
+    qputenv("QTWEBENGINE_CHROMIUM_FLAGS", "--disable-gpu --disable-logging --log-level=3");
+  if (qEnvironmentVariableIsEmpty("QT_LOGGING_RULES"))
+    qputenv("QT_LOGGING_RULES", "qt.webenginecontext=false");
 }
 
 QString katexDirectory() {
@@ -54,11 +62,6 @@ WebSession::WebSession() {
   if (QCoreApplication::instance()) return;
   if (qEnvironmentVariableIsEmpty("DISPLAY") && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
     qputenv("QT_QPA_PLATFORM", "offscreen");
-  // A page laid out and printed needs no GPU; without these Chromium and Qt describe their set-up on stderr.
-  if (qEnvironmentVariableIsEmpty("QTWEBENGINE_CHROMIUM_FLAGS"))
-    qputenv("QTWEBENGINE_CHROMIUM_FLAGS", "--disable-gpu --disable-logging --log-level=3");
-  if (qEnvironmentVariableIsEmpty("QT_LOGGING_RULES"))
-    qputenv("QT_LOGGING_RULES", "qt.webenginecontext=false");
   if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
     const QByteArray dir = "/tmp/runtime-" + QByteArray::number(getuid());
     QDir().mkpath(QString::fromUtf8(dir));
