@@ -25,8 +25,9 @@ void prepareWebEngine() {
   // Qt's and Chromium's descriptions of their set-up are silenced too.
   if (qEnvironmentVariableIsEmpty("QTWEBENGINE_CHROMIUM_FLAGS"))
     qputenv("QTWEBENGINE_CHROMIUM_FLAGS", "--disable-gpu --disable-logging --log-level=3");
-  if (qEnvironmentVariableIsEmpty("QT_LOGGING_RULES"))
-    qputenv("QT_LOGGING_RULES", "qt.webenginecontext=false");
+  // As rules, not as QT_LOGGING_RULES: the registry may have read the environment already (the 3D view's
+  // surface format is set first), and a reader's own QT_LOGGING_RULES still takes precedence over these.
+  QLoggingCategory::setFilterRules("qt.webenginecontext.info=false\nqt.webenginecontext.debug=false");
 }
 
 QString katexDirectory() {
@@ -74,7 +75,6 @@ WebSession::WebSession() {
   static char name[] = "radiosity";
   static char* argv[] = {name, nullptr};
   app_ = std::make_unique<QGuiApplication>(argc, argv);
-  QLoggingCategory::setFilterRules("qt.webenginecontext.info=false\nqt.webenginecontext.debug=false");
 }
 
 WebSession::~WebSession() = default;
