@@ -269,7 +269,8 @@ void MainWindow::buildUi() {
   // Scrollable, so that the panel never forces the window wider than asked for (--size, small screens).
   auto* sideScroll = new QScrollArea(this);
   sideScroll->setWidgetResizable(true);
-  sideScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  // Whatever does not fit stays reachable (never cut off at the window's edge).
+  sideScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
   sideScroll->setWidget(side);
   sideScroll->setMinimumWidth(240);
   parametersDock_ = new QDockWidget(tr("Parameters"), this);

@@ -51,6 +51,9 @@ void addGridRow(QGridLayout* grid, const QString& label, QWidget* field) {
   const int row = grid->rowCount();
   auto* text = new QLabel(label, field->parentWidget());
   text->setBuddy(field);
+  // A long label ("Hemicube resolution") takes two lines in a narrow panel rather than pushing its field
+  // out of sight on a 1024-pixel projector.
+  text->setWordWrap(true);
   grid->addWidget(text, row, 0);
   grid->addWidget(field, row, 1);
 }

@@ -4,7 +4,9 @@
 
 #include <QApplication>
 #include <QDebug>
+#include <QDockWidget>
 #include <QFontMetricsF>
+#include <QScrollArea>
 #include <QTest>
 #include <cmath>
 
@@ -41,6 +43,13 @@ TEST(ProjectorSize, TheWindowFitsA1024By768Screen) {
     if (window->minimumSizeHint().width() > 1024) reportWidest(window.get());
     EXPECT_LE(window->minimumSizeHint().width(), 1024) << lesson;
     EXPECT_LE(window->width(), 1024) << lesson;
+    // The parameters are all in sight: the panel fits its dock's width.
+    auto* dock = window->findChild<QDockWidget*>("parametersDock");
+    ASSERT_NE(dock, nullptr);
+    auto* scroll = qobject_cast<QScrollArea*>(dock->widget());
+    ASSERT_NE(scroll, nullptr);
+    EXPECT_LE(scroll->widget()->minimumSizeHint().width(), scroll->viewport()->width())
+        << lesson << ": the parameter panel is wider than its dock";
   }
 }
 
