@@ -34,6 +34,8 @@ EMSCRIPTEN_BINDINGS(radiosity_core) {
                                         [](const WebSession& s) { return copied(s.triangleElements()); }))
       .function("radiosity", emscripten::optional_override(
                                  [](const WebSession& s, int k) { return copied(s.radiosity(k)); }))
+      .function("formFactorRow", emscripten::optional_override(
+                                     [](const WebSession& s, int i) { return copied(s.formFactorRow(i)); }))
       .function("residuals",
                 emscripten::optional_override([](const WebSession& s) { return copied(s.residuals()); }));
 }

@@ -151,6 +151,14 @@ std::vector<double> WebSession::radiosity(int k) const {
   return out;
 }
 
+std::vector<double> WebSession::formFactorRow(int i) const {
+  std::vector<double> out;
+  if (!solved_ || !output_.F || i < 0 || i >= output_.F->rows()) return out;
+  out.reserve(std::size_t(output_.F->cols()));
+  for (Eigen::Index j = 0; j < output_.F->cols(); ++j) out.push_back((*output_.F)(i, j));
+  return out;
+}
+
 std::vector<double> WebSession::residuals() const {
   std::vector<double> out;
   if (!solved_) return out;

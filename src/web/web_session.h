@@ -38,6 +38,8 @@ class WebSession {
   std::vector<int> triangleElements() const;
   // B (n x 3, row-major) after iteration `k` (0-based), or the final B for k < 0 or past the last.
   std::vector<double> radiosity(int k) const;
+  // Row i of F (empty without F: a solver that traces its own rays stores none).
+  std::vector<double> formFactorRow(int i) const;
   // The relative residual after each recorded iteration.
   std::vector<double> residuals() const;
   // B per element as `radiosity solve --output` writes it.

@@ -123,6 +123,13 @@ for (const file of pages) {
     check(dragged.sum !== before.sum, `${label}: a drag rotates the view`);
     await handle.screenshot({ path: path.join(shots, `${path.basename(file, '.html')}-${k + 1}-dragged.png`) });
 
+    const picked = await page.evaluate((k, x, y) => {
+      const view = window.rtLiveViews[k];
+      const e = view.pick(x, y);
+      return [e, view.picked.textContent];
+    }, k, cx, cy);
+    check(picked[0] >= 0 && /row of F sums to/.test(picked[1]), `${label}: a click picks an element and shows its B and row of F`,
+          picked[1].slice(0, 110));
     const text = await numbers(page, k);
     const t0 = Date.now();
     await setSlider(page, k, 'light', 2);

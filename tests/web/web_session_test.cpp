@@ -52,6 +52,10 @@ TEST(WebSession, SolvesAsThePipelineDoes) {
   EXPECT_EQ(session.residuals().size(), std::size_t(session.iterations()));
   EXPECT_EQ(session.trianglePositions().size(), 9 * session.triangleElements().size());
   EXPECT_EQ(session.csv().substr(0, 30), "element,patch,surface,area,B_r");
+  const std::vector<double> row = session.formFactorRow(3);
+  ASSERT_EQ(row.size(), out.mesh->size());
+  for (std::size_t j = 0; j < row.size(); ++j) EXPECT_EQ(row[j], (*out.F)(3, Eigen::Index(j)));
+  EXPECT_TRUE(session.formFactorRow(-1).empty());
 }
 
 TEST(WebSession, AReflectanceChangeSolvesAgainWithTheSameFormFactors) {

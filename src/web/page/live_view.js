@@ -126,6 +126,15 @@
                                               class: 'live-reflectance' }, rho);
       }
       this.numbers = element('div', { class: 'live-numbers' }, panel);
+      this.picked = element('div', { class: 'live-picked', text: 'Click an element to see its B and its row of F.' },
+                            panel);
+      // A click (not a drag) picks the element under the pointer.
+      const canvas = this.renderer.domElement;
+      canvas.addEventListener('pointerdown', (e) => (this.down = [e.clientX, e.clientY]));
+      canvas.addEventListener('pointerup', (e) => {
+        if (this.down && Math.hypot(e.clientX - this.down[0], e.clientY - this.down[1]) < 4)
+          this.pick(e.clientX, e.clientY);
+      });
       this.scrubber.addEventListener('input', () => this.show(Number(this.scrubber.value)));
       this.play.addEventListener('click', () => this.toggle());
       for (const s of Object.values(this.sliders)) s.addEventListener('change', () => this.change());
@@ -213,6 +222,34 @@
           '; mean B ' + (total / B.length).toFixed(3) + ' W/m² (computed here in ' +
           this.seconds.toFixed(2) + ' s)';
       this.render();
+    }
+
+    // The element seen at a client position: its B in the iteration shown and its row of F.
+    pick(clientX, clientY) {
+      const r = this.renderer.domElement.getBoundingClientRect();
+      const ndc = new THREE.Vector2(((clientX - r.left) / r.width) * 2 - 1, -((clientY - r.top) / r.height) * 2 + 1);
+      const ray = new THREE.Raycaster();
+      ray.setFromCamera(ndc, this.camera);
+      const hit = ray.intersectObject(this.mesh)[0];
+      if (!hit) return -1;
+      const e = this.triangleElements[hit.faceIndex];
+      const k = Number(this.scrubber.value);
+      const B = k < this.history.length ? this.history[k] : this.final;
+      const row = this.session.formFactorRow(e);
+      let text = 'Element ' + e + ': B = (' + [0, 1, 2].map((c) => B[3 * e + c].toFixed(3)).join(', ') + ') W/m²';
+      if (row.length) {
+        let sum = 0;
+        const largest = [];
+        row.forEach((f, j) => {
+          sum += f;
+          largest.push([f, j]);
+        });
+        largest.sort((a, b) => b[0] - a[0]);
+        text += '; its row of F sums to ' + sum.toFixed(4) + ', largest ' +
+                largest.slice(0, 3).map(([f, j]) => 'F(' + e + ',' + j + ') = ' + f.toFixed(4)).join(', ');
+      }
+      this.picked.textContent = text;
+      return e;
     }
 
     toggle() {
