@@ -46,12 +46,8 @@ bool isLive(const lesson::Step& step) {
   return solves && shown && !step.scene.empty();
 }
 
-Json vec(const Vec3& v) {
-  return Json::array({v.x(), v.y(), v.z()});
-}
-
 // The step for the page: its scene's files, its settings, the surface whose reflectance the reader may
-// change (the floor when there is one, else the first surface that does not emit) and the scene's camera.
+// change (the floor when there is one, else the first surface that does not emit).
 Json liveStep(const lesson::Step& step, const std::string& scenesDir) {
   const fs::path scenePath = fs::path(scenesDir) / step.scene;
   Json files = Json::object();
@@ -85,11 +81,6 @@ Json liveStep(const lesson::Step& step, const std::string& scenesDir) {
     out["surfaceColour"] = {rho[0], rho[1], rho[2]};
     out["surfaceReflectance"] = rho.maxCoeff();
   }
-  const Camera camera = scene.cameraOrDefault();
-  out["camera"] = {{"position", vec(camera.position)},
-                   {"target", vec(camera.target)},
-                   {"up", vec(camera.up)},
-                   {"fov", camera.fovYDegrees}};
   return out;
 }
 

@@ -95,6 +95,13 @@ std::string WebSession::run() {
   const Mesh& mesh = *output_.mesh;
   for (Eigen::Index i = 0; i < mesh.emission.rows(); ++i)
     if (mesh.emission.row(i).maxCoeff() > 0) emitters.push_back(i);
+  // The scene's camera, or one that frames the whole scene, as the desktop views start from.
+  const Camera camera = output_.scene->cameraOrDefault();
+  auto vec = [](const Vec3& v) { return Json::array({v.x(), v.y(), v.z()}); };
+  const Json view{{"position", vec(camera.position)},
+                  {"target", vec(camera.target)},
+                  {"up", vec(camera.up)},
+                  {"fov", camera.fovYDegrees}};
   return Json{{"scene", sceneName_},
               {"elements", elements()},
               {"method", output_.formFactorMethod},
@@ -107,6 +114,7 @@ std::string WebSession::run() {
               {"seconds", solve.seconds},
               {"surfaces", surfaces},
               {"emitters", emitters},
+              {"camera", view},
               {"note", output_.note}}
       .dump();
 }

@@ -32,6 +32,7 @@ TEST(WebSession, SolvesAsThePipelineDoes) {
   ASSERT_EQ(session.configure(R"({"subdivide": 2, "solver": "gauss-seidel", "method": "analytic"})"), "");
   const std::string summary = session.run();
   EXPECT_EQ(summary.find("error"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"camera\":{\"fov\""), std::string::npos) << summary;
 
   const Scene scene = loadScene(test::sourcePath("scenes/cornell-box.json"));
   PipelineSettings settings;

@@ -185,7 +185,7 @@
       this.scene.add(this.mesh);
       geometry.computeBoundingSphere();
       const { center, radius } = geometry.boundingSphere;
-      const view = this.step.camera;
+      const view = summary.camera;
       if (view) {
         this.camera.position.set(...view.position);
         this.controls.target.set(...view.target);
