@@ -8,7 +8,10 @@ packages=(
   nlohmann-json3-dev libcli11-dev libmd4c-dev libmd4c-html0-dev
   qt6-webengine-dev libjs-katex poppler-utils librsvg2-bin
   xvfb xauth mesa-utils libgl1-mesa-dri fonts-dejavu-core
+  emscripten libjs-three chromium
 )
+# The web edition's tests run node and npm (tests/browser); a node from elsewhere with its own npm will do.
+command -v npm >/dev/null 2>&1 || packages+=(npm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -32,6 +32,12 @@ case "$what" in
   test)
     cmake --preset dev >/dev/null
     cmake --build --preset dev -j "$jobs"
+    # The web edition: the core in WebAssembly and the browser tests' driver (puppeteer-core, which never
+    # downloads a browser: the tests run Debian's chromium). RT_REQUIRE_WEB makes their absence a failure.
+    cmake --preset wasm >/dev/null
+    cmake --build --preset wasm -j "$jobs"
+    (cd tests/browser && PUPPETEER_SKIP_DOWNLOAD=1 npm ci --no-audit --no-fund --silent)
+    export RT_REQUIRE_WEB=1
     # Everything that renders needs an X server: run the whole suite under one Xvfb.
     xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" ctest --preset dev -j "$jobs"
     ;;

@@ -6,6 +6,7 @@
 
 #include "cli/commands.h"
 #include "cli/lesson_rendering.h"
+#include "cli/web_edition.h"
 #include "core/input_error.h"
 #include "lesson/book_html.h"
 #ifdef RT_HAVE_TYPESET
@@ -27,6 +28,8 @@ struct BookOptions {
   std::string output;
   RenderSettings figures;
   bool pdf = true;
+  bool web = false;  // the web edition: live views computed in the browser (web_edition.h)
+  WebAssets assets = defaultWebAssets();
 };
 
 #ifdef RT_HAVE_TYPESET
@@ -85,6 +88,10 @@ void book(BookOptions o) {
   }
   if (!problems.empty()) fail(problems, "formula(s) did not typeset");
   std::cout << out.string() << "/index.html: " << pages.size() << " pages, " << formulas << " formulas\n";
+  if (o.web) {
+    const int views = writeWebEdition(o.output, lessons, files, folders, o.assets);
+    std::cout << out.string() << "/web: " << views << " live views, computed in the browser\n";
+  }
   if (!o.pdf) return;
   const fs::path print = out / lesson::kBookPrintFile;
   write(print, lesson::printBookHtml(lessons));
@@ -108,6 +115,12 @@ void addBookCommand(CLI::App& app) {
   command->add_option("--output,-o", options->output, "Output folder")->required();
   command->add_flag("--quick", options->figures.quick, "Small meshes, resolutions and figures (for tests)");
   command->add_flag("!--no-pdf", options->pdf, "Write the HTML site only");
+  command->add_flag("--web", options->web,
+                    "The web edition: every step that solves a scene in 3D gets a live view under its figure "
+                    "(rotate, scrub the iterations, change the light and a reflectance), computed in the "
+                    "browser by the WebAssembly core; opens from the file system or any static server");
+  command->add_option("--wasm", options->assets.module,
+                      "--web: the WebAssembly core to ship (default: the wasm preset's build)");
   command->add_option("--width", options->figures.width, "Figure width in pixels")
       ->check(CLI::Range(64, 8192));
   command->add_option("--height", options->figures.height, "Figure height in pixels")

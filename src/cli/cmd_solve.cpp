@@ -13,6 +13,7 @@
 #include "cli/solution.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/io/ply_export.h"
+#include "core/io/radiosity_csv.h"
 #include "core/io/scene_loader.h"
 #include "core/pipeline/pipeline.h"
 #include "core/refine/refine.h"
@@ -50,22 +51,10 @@ struct SolveArguments {
   RefineOptions refine;
 };
 
-// B per element, then where the element is: its centroid and unit normal, so that a value can be found by
-// position without rebuilding the mesh (B stays in columns 4-6 for the readers written before).
 void writeRadiosityCsv(const Scene& scene, const Mesh& mesh, const RgbField& B, const std::string& path) {
   std::ofstream out(path);
   if (!out) throw InputError({path}, "cannot write the radiosity file");
-  out << "element,patch,surface,area,B_r,B_g,B_b,x,y,z,nx,ny,nz\n";
-  char line[768];
-  for (std::size_t i = 0; i < mesh.size(); ++i) {
-    const Element& e = mesh.elements[i];
-    const auto r = static_cast<Eigen::Index>(i);
-    std::snprintf(
-        line, sizeof line, "%zu,%d,%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", i,
-        e.patch, scene.surfaces[scene.patches[e.patch].surface].name.c_str(), e.area, B(r, 0), B(r, 1),
-        B(r, 2), e.centroid.x(), e.centroid.y(), e.centroid.z(), e.normal.x(), e.normal.y(), e.normal.z());
-    out << line;
-  }
+  out << radiosityCsv(scene, mesh, B);
   if (!out) throw InputError({path}, "error while writing the radiosity file");
 }
 

@@ -1,15 +1,11 @@
 #include "core/formfactor/pair_matrix.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
-#include <tbb/task_arena.h>
-
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <mutex>
 
+#include "core/parallel.h"
 #include "core/vector_state.h"
 
 namespace rt {
@@ -38,12 +34,12 @@ void forEachRow(std::size_t rows, const FormFactorOptions& options, Progress& pr
   RowCounters total;
   const std::size_t reportEvery = std::max<std::size_t>(1, rows / 100);
   progress.report(0.0, stage);
-  auto body = [&](const tbb::blocked_range<std::size_t>& range) {
+  auto body = [&](std::size_t begin, std::size_t end) {
     // The worker may have been created from a thread whose vector state a library left dirty
     // (vector_state.h).
     clearUpperVectorState();
     RowCounters local;
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+    for (std::size_t i = begin; i != end; ++i) {
       if (cancelled.load(std::memory_order_relaxed)) return;
       if (progress.cancelled()) {
         cancelled = true;
@@ -69,14 +65,7 @@ void forEachRow(std::size_t rows, const FormFactorOptions& options, Progress& pr
   // One row per task: rows differ in cost by orders of magnitude (the first rows own the most pairs, and the
   // rows near occluders the most expensive ones), and the automatic partitioner's chunks of many rows left
   // one core idle while the other worked through the expensive chunk. A task per row costs microseconds.
-  const tbb::blocked_range<std::size_t> all(0, rows, 1);
-  tbb::simple_partitioner partitioner;
-  if (options.threads > 0) {
-    tbb::task_arena arena(options.threads);
-    arena.execute([&] { tbb::parallel_for(all, body, partitioner); });
-  } else {
-    tbb::parallel_for(all, body, partitioner);
-  }
+  parallelForChunks(0, rows, {.grain = 1, .chunkPerTask = true, .threads = options.threads}, body);
   if (cancelled) throw Cancelled();
   progress.report(1.0, stage);
   stats.pairsComputed += total.pairsComputed;
@@ -109,12 +98,7 @@ void mirrorByReciprocity(const Mesh& mesh, const FormFactorOptions& options, For
           F(j, i) = F(i, j) * mesh.elements[static_cast<std::size_t>(i)].area / aj;
       }
   };
-  if (options.threads > 0) {
-    tbb::task_arena arena(options.threads);
-    arena.execute([&] { tbb::parallel_for(Eigen::Index{0}, bands, band); });
-  } else {
-    tbb::parallel_for(Eigen::Index{0}, bands, band);
-  }
+  parallelFor(Eigen::Index{0}, bands, band, {.threads = options.threads});
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
-// Visibility queries on a mesh with Embree 3: one scene of all elements as triangles. Public header: no
+// Visibility queries on a mesh: one scene of all elements as triangles, cast by Embree 3 where the build has
+// it and by the core's own bounding-volume hierarchy elsewhere (formfactor/ray_caster.h). Public header: no
 // Embree types.
 #pragma once
 
@@ -14,9 +15,13 @@ struct RayHit {
   bool frontSide = false;  // hit the side the element faces (the only side that receives)
 };
 
+// Which back end casts the rays: `automatic` is Embree where the build has it, else the portable one.
+enum class RayBackend { automatic, embree, portable };
+
 class RayScene {
  public:
-  explicit RayScene(const Mesh& mesh);
+  // Throws std::invalid_argument for `embree` in a build without it (rayBackendAvailable says which).
+  explicit RayScene(const Mesh& mesh, RayBackend backend = RayBackend::automatic);
   ~RayScene();
   RayScene(const RayScene&) = delete;
   RayScene& operator=(const RayScene&) = delete;
@@ -34,6 +39,7 @@ class RayScene {
   bool visibleAfter(const Vec3& from, const Vec3& to, double tnear, int ignoreTo) const;
   RayHit firstHitAfter(const Vec3& origin, const Vec3& direction, double tnear) const;
   double sceneSize() const { return size_; }
+  RayBackend backend() const { return backend_; }
 
  private:
   bool unoccluded(const Vec3& from, const Vec3& to, float tnear, int ignoreA, int ignoreB) const;
@@ -42,6 +48,9 @@ class RayScene {
   struct Impl;
   std::unique_ptr<Impl> impl_;
   double size_ = 1;
+  RayBackend backend_ = RayBackend::portable;
 };
+
+bool rayBackendAvailable(RayBackend backend);
 
 }  // namespace rt

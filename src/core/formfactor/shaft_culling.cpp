@@ -1,10 +1,10 @@
 #include "core/formfactor/shaft_culling.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <map>
 #include <tuple>
+
+#include "core/parallel.h"
 
 namespace rt {
 namespace {
@@ -148,13 +148,13 @@ ShaftCulling::ShaftCulling(const Mesh& mesh) : mesh_(mesh) {
       blockerIndex_[static_cast<std::size_t>(blockers_[t])] = static_cast<int>(t);
     patchSides_.resize(P * B);
     elementSides_.resize(n * B);
-    tbb::parallel_for(std::size_t(0), P, [&](std::size_t a) {
+    parallelFor(std::size_t(0), P, [&](std::size_t a) {
       for (std::size_t t = 0; t < B; ++t)
         patchSides_[a * B + t] =
             static_cast<std::uint8_t>(sideOfPatch(blockers_[t], static_cast<int>(a)) |
                                       sideOfPatch(static_cast<int>(a), blockers_[t]) << 2);
     });
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t e) {
+    parallelFor(std::size_t(0), n, [&](std::size_t e) {
       for (std::size_t t = 0; t < B; ++t)
         elementSides_[e * B + t] = sideOfElement(static_cast<int>(e), blockers_[t]);
     });
@@ -162,7 +162,7 @@ ShaftCulling::ShaftCulling(const Mesh& mesh) : mesh_(mesh) {
 
   if (anyOccluder_ && P <= kMaxTabulatedPatches && n >= 2 * P) {
     pairCandidates_.assign(P * P, {});
-    tbb::parallel_for(std::size_t(0), P, [&](std::size_t a) {
+    parallelFor(std::size_t(0), P, [&](std::size_t a) {
       for (std::size_t b = a + 1; b < P; ++b)
         pairCandidates_[a * P + b] = patchPairCandidates(static_cast<int>(a), static_cast<int>(b));
     });

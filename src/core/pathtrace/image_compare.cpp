@@ -1,12 +1,10 @@
 #include "core/pathtrace/image_compare.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 
 #include "core/formfactor/sampling.h"
+#include "core/parallel.h"
 
 namespace rt {
 
@@ -14,8 +12,8 @@ RgbImage renderElements(const Mesh& mesh, const RgbField& B, const RayScene& ray
                         int width, int height, int samples) {
   RgbImage image(width, height);
   const StrataGrid grid(std::max(1, samples));
-  tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& range) {
-    for (int y = range.begin(); y != range.end(); ++y)
+  parallelForChunks(0, static_cast<std::size_t>(height), {}, [&](std::size_t lo, std::size_t hi) {
+    for (int y = static_cast<int>(lo); y != static_cast<int>(hi); ++y)
       for (int x = 0; x < width; ++x) {
         PairRandom random(7, static_cast<std::uint64_t>(y) * width + x, 0);
         Rgb sum = Rgb::Zero();

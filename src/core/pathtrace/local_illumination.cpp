@@ -1,14 +1,12 @@
 #include "core/pathtrace/local_illumination.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "core/brdf.h"
 #include "core/formfactor/sampling.h"
+#include "core/parallel.h"
 #include "core/pathtrace/path_tracer.h"
 
 namespace rt {
@@ -34,8 +32,8 @@ RgbImage renderLocalIllumination(const TracingScene& scene, const Camera& camera
   const RayScene& rays = scene.rays();
   const int pixelSamples = std::max(1, o.pixelSamples), lightSamples = std::max(1, o.lightSamples);
   const StrataGrid pixelGrid(pixelSamples), lightGrid(lightSamples);
-  tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& range) {
-    for (int y = range.begin(); y != range.end(); ++y)
+  parallelForChunks(0, static_cast<std::size_t>(height), {}, [&](std::size_t lo, std::size_t hi) {
+    for (int y = static_cast<int>(lo); y != static_cast<int>(hi); ++y)
       for (int x = 0; x < width; ++x) {
         PairRandom random(11, static_cast<std::uint64_t>(y) * width + x, 0);
         Rgb sum = Rgb::Zero();

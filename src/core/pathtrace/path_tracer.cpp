@@ -1,11 +1,10 @@
 #include "core/pathtrace/path_tracer.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "core/parallel.h"
 
 namespace rt {
 
@@ -80,10 +79,10 @@ std::vector<PointEstimate> PathTracer::estimate(const std::vector<SurfacePoint>&
   const int batches = std::clamp(options.batches, 1, std::max(1, options.samples));
   const int perBatch = std::max(1, options.samples / batches);
   const StrataGrid grid(perBatch);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size()), [&](const auto& range) {
+  parallelForChunks(0, points.size(), {}, [&](std::size_t lo, std::size_t hi) {
     std::uint64_t rays = 0;
     std::vector<int> order;
-    for (std::size_t p = range.begin(); p != range.end(); ++p) {
+    for (std::size_t p = lo; p != hi; ++p) {
       const SurfacePoint& point = points[p];
       const int element = tracing_.locate(point);
       const Vec3 normal = point.normal.normalized();
@@ -135,10 +134,10 @@ TracedImage PathTracer::render(const Camera& camera, int width, int height,
   const StrataGrid grid(samples);
   const Mesh& mesh = tracing_.mesh();
   std::atomic<std::uint64_t> total{0};
-  tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
+  parallelForChunks(0, static_cast<std::size_t>(height), {}, [&](std::size_t lo, std::size_t hi) {
     std::uint64_t rays = 0;
     std::vector<int> lightOrder, bounceOrder;
-    for (int y = rows.begin(); y != rows.end(); ++y)
+    for (int y = static_cast<int>(lo); y != static_cast<int>(hi); ++y)
       for (int x = 0; x < width; ++x) {
         PairRandom random(options.seed, static_cast<std::uint64_t>(y) * width + x, 0x9e3779b9u);
         shuffledStrata(samples, random, lightOrder);

@@ -1,14 +1,12 @@
 #include "core/pathtrace/two_pass.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/quadrature/shadow_clipper.h"
 #include "core/formfactor/sampling.h"
+#include "core/parallel.h"
 #include "core/pathtrace/path_tracer.h"
 
 namespace rt {
@@ -22,7 +20,7 @@ std::vector<double> receivingFractions(const Mesh& mesh, const RayScene& rays) {
   std::vector<double> fractions(mesh.size(), 1.0);
   constexpr int kPoints = 16;
   const StrataGrid grid(kPoints);
-  tbb::parallel_for(std::size_t(0), mesh.size(), [&](std::size_t e) {
+  parallelFor(std::size_t(0), mesh.size(), [&](std::size_t e) {
     const Polygon polygon = mesh.polygon(static_cast<int>(e));
     const PolygonSampler sampler(polygon.data(), static_cast<int>(polygon.size()));
     const Vec3& normal = mesh.elements[e].normal;
@@ -233,7 +231,7 @@ Rgb TwoPass::secondaryGather(const Vec3& point, const Vec3& normal, int element,
 std::vector<PointEstimate> TwoPass::estimate(const std::vector<SurfacePoint>& points,
                                              const TwoPassOptions& options) const {
   std::vector<int> elements(points.size());
-  tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t p) {
+  parallelFor(std::size_t(0), points.size(), [&](std::size_t p) {
     elements[p] = tracing_.locate({points[p].position, points[p].normal.normalized()});
   });
   return estimate(points, elements, options);
@@ -243,8 +241,8 @@ std::vector<PointEstimate> TwoPass::estimate(const std::vector<SurfacePoint>& po
                                              const std::vector<int>& elements,
                                              const TwoPassOptions& options) const {
   std::vector<PointEstimate> out(points.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size()), [&](const auto& range) {
-    for (std::size_t p = range.begin(); p != range.end(); ++p) {
+  parallelForChunks(0, points.size(), {}, [&](std::size_t lo, std::size_t hi) {
+    for (std::size_t p = lo; p != hi; ++p) {
       const SurfacePoint point{points[p].position, points[p].normal.normalized()};
       const int element = elements[p];
       Rgb directError, gatherError;

@@ -5,11 +5,10 @@
 // every `spacing`-th of each row and column, and interpolated between grid pixels that lie on the same patch
 // and near the pixel in the scene. A pixel with no such grid pixel around it (a thin sliver of a patch, an
 // edge) gathers for itself. A 1024 x 1024 picture at spacing 8 then gathers at 17k points instead of 1M.
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <cmath>
 
+#include "core/parallel.h"
 #include "core/pathtrace/path_tracer.h"
 #include "core/pathtrace/two_pass.h"
 
@@ -29,7 +28,7 @@ RgbImage TwoPass::render(const Camera& camera, int width, int height, const TwoP
                          int gatherSpacing) const {
   const int spacing = std::max(1, gatherSpacing);
   std::vector<PixelHit> hits(static_cast<std::size_t>(width) * height);
-  tbb::parallel_for(0, height, [&](int y) {
+  parallelFor(0, height, [&](int y) {
     for (int x = 0; x < width; ++x) {
       const Vec3 direction = cameraRay(camera, width, height, x + 0.5, y + 0.5);
       const RayHit hit = tracing_.rays().firstHit(camera.position, direction, -1);
@@ -55,7 +54,7 @@ RgbImage TwoPass::render(const Camera& camera, int width, int height, const TwoP
   auto gridY = [&](int j) { return std::min(j * spacing, height - 1); };
   std::vector<Rgb> gathered(static_cast<std::size_t>(gw) * gh, Rgb::Zero());
   if (spacing > 1)
-    tbb::parallel_for(0, gh, [&](int j) {
+    parallelFor(0, gh, [&](int j) {
       for (int i = 0; i < gw; ++i) {
         const PixelHit& p = hits[static_cast<std::size_t>(gridY(j)) * width + gridX(i)];
         if (p.element >= 0)
@@ -71,7 +70,7 @@ RgbImage TwoPass::render(const Camera& camera, int width, int height, const TwoP
   const std::uint64_t ownIndex = static_cast<std::uint64_t>(gw) * gh;
 
   RgbImage image(width, height);
-  tbb::parallel_for(0, height, [&](int y) {
+  parallelFor(0, height, [&](int y) {
     for (int x = 0; x < width; ++x) {
       const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
       const PixelHit& p = hits[pixel];

@@ -1,13 +1,11 @@
 #include "core/raytrace/whitted.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "core/formfactor/sampling.h"
+#include "core/parallel.h"
 #include "core/pathtrace/path_tracer.h"
 
 namespace rt {
@@ -143,8 +141,8 @@ WhittedImage WhittedTracer::render(const Camera& camera, int width, int height) 
   const int samples = options_.pixelSamples;
   const StrataGrid grid(samples);
   std::vector<WhittedStats> perRow(static_cast<std::size_t>(std::max(height, 0)));
-  tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
-    for (int y = rows.begin(); y != rows.end(); ++y) {
+  parallelForChunks(0, static_cast<std::size_t>(height), {}, [&](std::size_t lo, std::size_t hi) {
+    for (int y = static_cast<int>(lo); y != static_cast<int>(hi); ++y) {
       WhittedStats& stats = perRow[static_cast<std::size_t>(y)];
       for (int x = 0; x < width; ++x) {
         const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(width) + x;

@@ -1,12 +1,10 @@
 #include "core/refine/dense_transfer.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <atomic>
 #include <stdexcept>
 
+#include "core/parallel.h"
 #include "core/solvers/gathering_solvers.h"
 
 namespace rt {
@@ -49,21 +47,20 @@ FormFactorMatrix updateFormFactors(const FormFactorMatrix& previous, const std::
     progress.report(static_cast<double>(start) / static_cast<double>(std::max<std::size_t>(1, fresh.size())),
                     stage);
     const std::size_t end = std::min(fresh.size(), start + block);
-    tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(start, end), [&](const tbb::blocked_range<std::size_t>& r) {
-          std::size_t local = 0;
-          for (std::size_t k = r.begin(); k != r.end(); ++k) {
-            const int a = fresh[k];
-            for (int b = 0; b < n; ++b) {
-              if (b == a || (isNew(b) && b < a)) continue;
-              const auto [fab, fba] = pieceFormFactors(pieces[a], pieces[b], visibility, options);
-              F(a, b) = fab;
-              F(b, a) = fba;
-              ++local;
-            }
-          }
-          pairs += local;
-        });
+    parallelForChunks(start, end, {}, [&](std::size_t lo, std::size_t hi) {
+      std::size_t local = 0;
+      for (std::size_t k = lo; k != hi; ++k) {
+        const int a = fresh[k];
+        for (int b = 0; b < n; ++b) {
+          if (b == a || (isNew(b) && b < a)) continue;
+          const auto [fab, fba] = pieceFormFactors(pieces[a], pieces[b], visibility, options);
+          F(a, b) = fab;
+          F(b, a) = fba;
+          ++local;
+        }
+      }
+      pairs += local;
+    });
   }
   progress.report(1.0, stage);
   pairsComputed = pairs.load();

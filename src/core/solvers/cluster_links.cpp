@@ -1,16 +1,12 @@
 #include "core/solvers/cluster_links.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/sampling.h"
+#include "core/parallel.h"
 
 namespace rt {
 namespace {
@@ -185,31 +181,30 @@ std::vector<ClusterLink> refineLinks(const ClusterTree& tree, const Mesh& mesh, 
   std::vector<ClusterLink> links;
   if (tree.size() == 0) return links;
   const Oracle oracle(tree, mesh, scene, brightness, options);
-  tbb::enumerable_thread_specific<std::vector<ClusterLink>> found;
+  PerWorker<std::vector<ClusterLink>> found;
   std::vector<Pair> frontier{{0, 0}};
   // Level by level: every pair of a level is decided independently, so the level runs in parallel.
   while (!frontier.empty()) {
-    tbb::enumerable_thread_specific<std::vector<Pair>> next;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, frontier.size(), 64),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        auto& mine = found.local();
-                        auto& children = next.local();
-                        long cast = 0;
-                        for (std::size_t k = range.begin(); k != range.end(); ++k)
-                          oracle.visit(frontier[k], mine, children, cast);
-                        rays += cast;
-                      });
+    PerWorker<std::vector<Pair>> next;
+    parallelForChunks(0, frontier.size(), {.grain = 64}, [&](std::size_t lo, std::size_t hi) {
+      auto& mine = found.local();
+      auto& children = next.local();
+      long cast = 0;
+      for (std::size_t k = lo; k != hi; ++k) oracle.visit(frontier[k], mine, children, cast);
+      rays += cast;
+    });
     frontier.clear();
-    for (const auto& part : next) frontier.insert(frontier.end(), part.begin(), part.end());
+    next.forEach(
+        [&](const std::vector<Pair>& part) { frontier.insert(frontier.end(), part.begin(), part.end()); });
   }
   std::size_t total = 0;
-  for (const auto& part : found) total += part.size();
+  found.forEach([&](const std::vector<ClusterLink>& part) { total += part.size(); });
   links.reserve(total);
-  for (auto& part : found) {
+  found.forEach([&](std::vector<ClusterLink>& part) {
     links.insert(links.end(), part.begin(), part.end());
     std::vector<ClusterLink>().swap(part);
-  }
-  tbb::parallel_sort(links.begin(), links.end(), [](const ClusterLink& a, const ClusterLink& b) {
+  });
+  parallelSort(links.begin(), links.end(), [](const ClusterLink& a, const ClusterLink& b) {
     return a.receiver < b.receiver || (a.receiver == b.receiver && a.source < b.source);
   });
   return links;

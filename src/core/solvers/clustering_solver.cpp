@@ -1,8 +1,5 @@
 #include "core/solvers/clustering_solver.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -10,6 +7,7 @@
 #include <vector>
 
 #include "core/formfactor/ray_scene.h"
+#include "core/parallel.h"
 #include "core/solvers/cluster_directions.h"
 #include "core/solvers/cluster_links.h"
 #include "core/solvers/cluster_tree.h"
@@ -92,10 +90,9 @@ class HierarchySolve {
   RgbField sweep(const LinkTable& table) {
     H_.setZero();  // nodes that receive nothing this round
     bins_.setZero();
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, table.receivers.size(), 256),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        for (std::size_t k = range.begin(); k != range.end(); ++k) gather(table, k);
-                      });
+    parallelForChunks(0, table.receivers.size(), {.grain = 256}, [&](std::size_t lo, std::size_t hi) {
+      for (std::size_t k = lo; k != hi; ++k) gather(table, k);
+    });
     const auto& nodes = tree_.nodes();
     RgbField elements(system_.size(), 3);
     below_.row(0) = bins_.row(0);

@@ -1,8 +1,5 @@
 #include "core/solvers/line_shooting.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -10,6 +7,7 @@
 
 #include "core/formfactor/ray_scene.h"
 #include "core/formfactor/sampling.h"
+#include "core/parallel.h"
 #include "core/solvers/solver_support.h"
 
 namespace rt {
@@ -27,8 +25,7 @@ constexpr double kFixed = 4294967296.0;
 struct Scores {
   explicit Scores(std::size_t n) : values(new std::atomic<std::int64_t>[6 * n]), size(6 * n) {}
   void clear() {
-    tbb::parallel_for(std::size_t(0), size, std::size_t(1) << 16, [this](std::size_t begin) {
-      const std::size_t end = std::min(size, begin + (std::size_t(1) << 16));
+    parallelForChunks(0, size, {.grain = std::size_t(1) << 16}, [this](std::size_t begin, std::size_t end) {
       for (std::size_t k = begin; k < end; ++k) values[k].store(0, std::memory_order_relaxed);
     });
   }
@@ -146,9 +143,9 @@ LineRound LineShooter::shoot(const RgbField& radiosity, long rays, std::uint64_t
   s.scores.clear();
   std::atomic<std::int64_t> lost{0};
   const long chunks = (rays + kChunk - 1) / kChunk;
-  tbb::parallel_for(tbb::blocked_range<long>(0, chunks, 1), [&](const tbb::blocked_range<long>& range) {
+  parallelForChunks(0, static_cast<std::size_t>(chunks), {.grain = 1}, [&](std::size_t lo, std::size_t hi) {
     std::int64_t lostHere = 0;
-    for (long chunk = range.begin(); chunk != range.end(); ++chunk) {
+    for (long chunk = static_cast<long>(lo); chunk != static_cast<long>(hi); ++chunk) {
       RayNumbers numbers(how.sampling, seed, round, chunk, chunk * kChunk);
       for (long r = chunk * kChunk, end = std::min(rays, r + kChunk); r < end; ++r) {
         double u[5];
@@ -207,7 +204,7 @@ Eigen::VectorXd LineShooter::rowSums(int perElement, std::uint64_t seed) {
   const auto n = static_cast<Eigen::Index>(s.mesh.size());
   Eigen::VectorXd sums = Eigen::VectorXd::Zero(n);
   if (perElement < 1) return sums;
-  tbb::parallel_for(Eigen::Index(0), n, [&](Eigen::Index j) {
+  parallelFor(Eigen::Index(0), n, [&](Eigen::Index j) {
     const Source source = sourceOf(s.mesh, j);
     // Its own scrambled set per element, so that every element's lines are evenly spread over it.
     ScrambledSobol sobol(4, seed, 0x726f7773ull + static_cast<std::uint64_t>(j));

@@ -22,14 +22,13 @@
 #include <memory>
 #include <string>
 
-#include <tbb/enumerable_thread_specific.h>
-
 #include "core/formfactor/analytic_method.h"
 #include "core/formfactor/pair_matrix.h"
 #include "core/formfactor/quadrature/hidden_integral.h"
 #include "core/formfactor/quadrature/quadrature_pair.h"
 #include "core/formfactor/quadrature/quadrature_scene.h"
 #include "core/formfactor/shaft_culling.h"
+#include "core/parallel.h"
 
 namespace rt {
 namespace {
@@ -60,17 +59,15 @@ class QuadratureMethod : public FormFactorMethod {
     const ShaftCulling shafts(mesh);
     const QuadratureScene scene(mesh, shafts);
     const double tolerance = std::clamp(options.tolerance, 1e-12, 0.5);
-    // Looked up once per pair: a native thread-local key, not the default hash table keyed by thread id.
-    tbb::enumerable_thread_specific<QuadraturePair, tbb::cache_aligned_allocator<QuadraturePair>,
-                                    tbb::ets_key_per_instance>
-        pairs(std::cref(scene), tolerance);
+    // Looked up once per pair, by the worker's index: one scratch pair per worker, no lock.
+    PerWorker<QuadraturePair> pairs(std::cref(scene), tolerance);
     FormFactorMatrix F = computeReciprocalMatrix(
         mesh, options, progress, stats, "form factors (quadrature)", [&](int i, int j) {
           QuadraturePair& pair = pairs.local();
           return fromSmallerElement(mesh, i, j, [&](int a, int b) { return pair(a, b, i); });
         });
     QuadraturePair::Counts total;
-    for (const QuadraturePair& pair : pairs) total += pair.counts();
+    pairs.forEach([&](const QuadraturePair& pair) { total += pair.counts(); });
     std::string routes;
     for (int r = 0; r < kQuadratureRoutes; ++r)
       if (const long count = total.routes[static_cast<std::size_t>(r)]; count > 0)

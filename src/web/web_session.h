@@ -1,0 +1,58 @@
+// The web edition's computing session: what a page asks of the core, in plain C++ types so that the same
+// class runs natively (tests compare it with the programs) and in WebAssembly (web_bindings.cpp hands it to
+// JavaScript). A page gives it the text of its files, its settings as JSON, and reads back the mesh's
+// triangles, B after every iteration and the convergence curve; one Pipeline keeps F cached across runs,
+// so that a reflectance or light change only solves again.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/pipeline/pipeline.h"
+#include "core/scene.h"
+
+namespace rt::web {
+
+class WebSession {
+ public:
+  WebSession();
+
+  // A file the scene loader may read: the scene (.json or .obj) and the material libraries its OBJ names.
+  void putFile(const std::string& name, const std::string& text);
+  // Loads the scene `name` from the files given. Returns "" or the loader's message (file, line, field).
+  std::string load(const std::string& name);
+  // The settings as a JSON object (web_settings.h). Returns "" or what is wrong, naming the key.
+  std::string configure(const std::string& settingsJson);
+  // Mesh, form factors (cached by geometry and method), solve with every iteration recorded. Returns a JSON
+  // object: the counts, the solver and its status, the surfaces with their reflectance and emission, or
+  // {"error": message}.
+  std::string run();
+
+  int elements() const;
+  int iterations() const;  // recorded iterations (0 before a run)
+  // The mesh as triangles, three float xyz vertices each, unshared, so that a view colours each flat; and
+  // for each triangle its element.
+  std::vector<float> trianglePositions() const;
+  std::vector<int> triangleElements() const;
+  // B (n x 3, row-major) after iteration `k` (0-based), or the final B for k < 0 or past the last.
+  std::vector<double> radiosity(int k) const;
+  // Row i of F (empty without F: a solver that traces its own rays stores none).
+  std::vector<double> formFactorRow(int i) const;
+  // The relative residual after each recorded iteration.
+  std::vector<double> residuals() const;
+  // B per element as `radiosity solve --output` writes it.
+  std::string csv() const;
+
+ private:
+  std::map<std::string, std::string> files_;
+  std::shared_ptr<const Scene> scene_;
+  std::string sceneName_;
+  PipelineSettings settings_;
+  Pipeline pipeline_;
+  PipelineOutput output_;
+  bool solved_ = false;
+};
+
+}  // namespace rt::web
