@@ -162,6 +162,10 @@ void computeSolve(StageContext& c) {
   r.values["power.emitted"] = emitted.sum();
   r.values["power.absorbed"] = absorbed.sum();
   r.values["power.escaped"] = escaped.sum();
+  // The two sides of B = E + rho H for each surface: the irradiance H = F B it receives, and the radiance
+  // L = B / pi it sends into every direction (diffuse surfaces).
+  addSurfaceValues(r, "H", RgbField(*F * r.B));
+  addSurfaceValues(r, "L", RgbField(r.B / 3.14159265358979323846));
 }
 
 void computeCompare(StageContext& c) {
