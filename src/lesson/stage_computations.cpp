@@ -380,6 +380,31 @@ void computeRefine(StageContext& c) {
   r.values["critical-segments"] = static_cast<double>(solution.stats.criticalSegments);
   r.values["seconds"] = solution.stats.seconds;
   r.values["refine-tolerance"] = o.mode == RefineMode::Hierarchical ? o.linkTolerance : o.gradientTolerance;
+  // The critical lines by kind: umbra or outer penumbra boundaries (the light wholly on one side of the
+  // critical plane) against lines inside a penumbra; vertex of the light with an occluder edge (VE) against
+  // light edge with an occluder vertex (EV).
+  double extremal = 0, ve = 0;
+  for (const CriticalSegment& s : solution.discontinuities) {
+    extremal += s.extremal ? 1 : 0;
+    ve += s.kind == CriticalSegment::Kind::VE ? 1 : 0;
+  }
+  const double segments = static_cast<double>(solution.discontinuities.size());
+  r.values["critical-segments.extremal"] = extremal;
+  r.values["critical-segments.interior"] = segments - extremal;
+  r.values["critical-segments.ve"] = ve;
+  r.values["critical-segments.ev"] = segments - ve;
+  // The adaptive split threshold at the final solution: the tolerance times the area-weighted mean luminance
+  // of the elements that emit nothing.
+  double weighted = 0, area = 0;
+  for (std::size_t e = 0; e < solution.mesh.size(); ++e) {
+    const auto i = static_cast<Eigen::Index>(e);
+    if ((solution.mesh.emission.row(i).array() > 0).any()) continue;
+    weighted += solution.mesh.elements[e].area * luminance(solution.B.row(i));
+    area += solution.mesh.elements[e].area;
+  }
+  r.values["luminance.mean"] = area > 0 ? weighted / area : 0.0;
+  r.values["split-threshold"] = o.gradientTolerance * r.values["luminance.mean"];
+  r.refined = std::make_shared<const RefinedSolution>(solution);
 }
 
 }  // namespace rt::lesson::detail
