@@ -393,16 +393,8 @@ void computeRefine(StageContext& c) {
   r.values["critical-segments.interior"] = segments - extremal;
   r.values["critical-segments.ve"] = ve;
   r.values["critical-segments.ev"] = segments - ve;
-  // The adaptive split threshold at the final solution: the tolerance times the area-weighted mean luminance
-  // of the elements that emit nothing.
-  double weighted = 0, area = 0;
-  for (std::size_t e = 0; e < solution.mesh.size(); ++e) {
-    const auto i = static_cast<Eigen::Index>(e);
-    if ((solution.mesh.emission.row(i).array() > 0).any()) continue;
-    weighted += solution.mesh.elements[e].area * luminance(solution.B.row(i));
-    area += solution.mesh.elements[e].area;
-  }
-  r.values["luminance.mean"] = area > 0 ? weighted / area : 0.0;
+  // The adaptive split threshold at the final solution.
+  r.values["luminance.mean"] = meanReflectingLuminance(solution.mesh, solution.B);
   r.values["split-threshold"] = o.gradientTolerance * r.values["luminance.mean"];
   r.refined = std::make_shared<const RefinedSolution>(solution);
 }
