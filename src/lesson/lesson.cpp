@@ -8,7 +8,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 36> kViews{{
+constexpr std::array<std::pair<View, const char*>, 38> kViews{{
     {View::Scene, "scene"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
@@ -45,6 +45,8 @@ constexpr std::array<std::pair<View, const char*>, 36> kViews{{
     {View::Albedo, "albedo"},
     {View::PhongLocal, "phong-local"},
     {View::SamplingError, "sampling-error"},
+    {View::Discontinuity, "discontinuity"},
+    {View::Glossy, "glossy"},
 }};
 
 }  // namespace
@@ -98,7 +100,10 @@ const std::vector<StageInfo>& stageTable() {
        "benchmark",
        "run time and error of `methods` over `sweep`",
        {V::Scene, V::FormFactor, V::Matrix, V::RuntimeError, V::SweepError}},
-      {Stage::Refine, "refine", "an adaptive, discontinuity or hierarchical mesh and its B", {V::Scene}},
+      {Stage::Refine,
+       "refine",
+       "an adaptive, discontinuity or hierarchical mesh and its B; with `discontinuity`, its critical lines",
+       {V::Scene, V::Discontinuity}},
       {Stage::Exercise,
        "exercise",
        "a homework exercise of `topic` drawn with `seed`: questions, Check, hint, worked solution",
@@ -124,11 +129,12 @@ const std::vector<StageInfo>& stageTable() {
       {Stage::RayTrace,
        "raytrace",
        "B with `solver`; Whitted images of `image-size` (`ray-depth`, `shadow-rays`, `ray-epsilon`, "
-       "`light-size`, `mirrors`) with their rays counted by kind and timed, against the cost formula; hard "
-       "against soft shadows; epsilon 0, the step's and too large, with the acne and leaks counted; the ray "
-       "tree of pixel (`pixel-x`, `pixel-y`); path-traced images (`paths`) with 0, 1, 2 and any number of "
-       "bounces",
-       {V::Scene, V::RayTree, V::Shadows, V::Epsilon, V::RayCost, V::Whitted, V::PathBounces}},
+       "`light-size`, `mirrors`, `gloss`, `pixel-samples`) with their rays counted by kind and timed, "
+       "against "
+       "the cost formula; hard against soft shadows; epsilon 0, the step's and too large, with the acne and "
+       "leaks counted; ideal against glossy mirrors; the ray tree of pixel (`pixel-x`, `pixel-y`); "
+       "path-traced images (`paths`) with 0, 1, 2 and any number of bounces",
+       {V::Scene, V::RayTree, V::Shadows, V::Epsilon, V::RayCost, V::Whitted, V::PathBounces, V::Glossy}},
       {Stage::Reflection,
        "reflection",
        "the BRDF `brdf-model` with `phong-exponent`, `specular-fraction` and `anisotropy` for light arriving "

@@ -78,6 +78,8 @@ enum class View {
   Albedo,         // the directional albedo against the angle of incidence
   PhongLocal,     // the scene lit by Phong local illumination plus ambient, beside its radiosity solution
   SamplingError,  // sampling stage: error against rays per variance reduction, log-log, with fitted slopes
+  Discontinuity,  // refine stage: the mesh with its critical lines, umbra/penumbra boundaries apart
+  Glossy,         // raytrace stage: the mirrors ideal beside the same mirrors glossy (gloss, pixel-samples)
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.
@@ -169,6 +171,8 @@ struct StepParameters {
   int shadowRays = 16;           // per light per hit (1: hard shadows)
   double rayEpsilon = 0.1;       // self-intersection offset, in the scene's units
   double lightSize = 1.0;        // the lights scaled about their centres, power kept
+  double gloss = 0.0;            // mirrors' Phong exponent q for glossy reflection (0: ideal mirrors)
+  int pixelSamples = 1;          // primary rays per pixel, jittered (antialiasing, and the lobe's average)
   int pixelX = 64, pixelY = 64;  // the pixel whose ray tree is drawn
   std::string mirrors;           // surfaces that reflect as mirrors, comma-separated
   // reflection stage: the BRDF shown (core/brdf.h) and the direction light arrives from

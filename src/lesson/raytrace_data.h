@@ -17,6 +17,9 @@ struct RayTraceData {
   RgbImage hard;                       // one shadow ray per light, otherwise the step's settings
   RgbImage epsilonZero, epsilonLarge;  // one shadow ray, epsilon 0 and largeEpsilon
   RgbImage epsilonStep;                // one shadow ray, the step's epsilon
+  RgbImage idealMirrors;               // the step's settings with gloss 0 (the glossy view)
+  double gloss = 0;
+  int pixelSamples = 1;
   double epsilon = 0, largeEpsilon = 0;
   int shadowRays = 1, depth = 0, lights = 0;
   RayTree tree;  // of pixel (pixelX, pixelY)

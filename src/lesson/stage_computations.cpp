@@ -162,6 +162,10 @@ void computeSolve(StageContext& c) {
   r.values["power.emitted"] = emitted.sum();
   r.values["power.absorbed"] = absorbed.sum();
   r.values["power.escaped"] = escaped.sum();
+  // The two sides of B = E + rho H for each surface: the irradiance H = F B it receives, and the radiance
+  // L = B / pi it sends into every direction (diffuse surfaces).
+  addSurfaceValues(r, "H", RgbField(*F * r.B));
+  addSurfaceValues(r, "L", RgbField(r.B / 3.14159265358979323846));
 }
 
 void computeCompare(StageContext& c) {
@@ -376,6 +380,23 @@ void computeRefine(StageContext& c) {
   r.values["critical-segments"] = static_cast<double>(solution.stats.criticalSegments);
   r.values["seconds"] = solution.stats.seconds;
   r.values["refine-tolerance"] = o.mode == RefineMode::Hierarchical ? o.linkTolerance : o.gradientTolerance;
+  // The critical lines by kind: umbra or outer penumbra boundaries (the light wholly on one side of the
+  // critical plane) against lines inside a penumbra; vertex of the light with an occluder edge (VE) against
+  // light edge with an occluder vertex (EV).
+  double extremal = 0, ve = 0;
+  for (const CriticalSegment& s : solution.discontinuities) {
+    extremal += s.extremal ? 1 : 0;
+    ve += s.kind == CriticalSegment::Kind::VE ? 1 : 0;
+  }
+  const double segments = static_cast<double>(solution.discontinuities.size());
+  r.values["critical-segments.extremal"] = extremal;
+  r.values["critical-segments.interior"] = segments - extremal;
+  r.values["critical-segments.ve"] = ve;
+  r.values["critical-segments.ev"] = segments - ve;
+  // The adaptive split threshold at the final solution.
+  r.values["luminance.mean"] = meanReflectingLuminance(solution.mesh, solution.B);
+  r.values["split-threshold"] = o.gradientTolerance * r.values["luminance.mean"];
+  r.refined = std::make_shared<const RefinedSolution>(solution);
 }
 
 }  // namespace rt::lesson::detail

@@ -96,6 +96,8 @@ void computeRayTrace(StageContext& c) {
   options.shadowRays = p.shadowRays;
   options.epsilon = p.rayEpsilon;
   options.lightScale = p.lightSize;
+  options.glossExponent = p.gloss;
+  options.pixelSamples = p.pixelSamples;
   options.mirrorSurfaces = mirrors;
   options.seed = p.seed.value_or(1);
   options.checkShadows = true;
@@ -110,7 +112,14 @@ void computeRayTrace(StageContext& c) {
   d.lights = tracer.lights();
   d.pixelX = p.pixelX;
   d.pixelY = p.pixelY;
+  d.gloss = p.gloss;
+  d.pixelSamples = p.pixelSamples;
   d.tree = tracer.trace(r.camera, size, size, p.pixelX, p.pixelY);
+  if (wants(View::Glossy)) {
+    WhittedOptions ideal = options;
+    ideal.glossExponent = 0;
+    d.idealMirrors = WhittedTracer(tracing, ideal).render(r.camera, size, size).B;
+  }
 
   // One shadow ray per light: the hard shadows, and the epsilon's acne unblurred by the light's area.
   WhittedOptions single = options;
@@ -138,6 +147,7 @@ void computeRayTrace(StageContext& c) {
   in.pixels = static_cast<std::int64_t>(size) * size;
   in.lights = d.lights;
   in.shadowRays = p.shadowRays;
+  in.pixelSamples = p.pixelSamples;
   in.depth = p.rayDepth;
   const RayCost cost = whittedRayCost(in);
   for (int depth = 0; wants(View::RayCost) && depth <= std::max(6, p.rayDepth); ++depth) {
@@ -180,6 +190,13 @@ void computeRayTrace(StageContext& c) {
   v["ray-depth"] = p.rayDepth;
   v["epsilon"] = p.rayEpsilon;
   v["light-size"] = p.lightSize;
+  v["gloss"] = p.gloss;
+  v["pixel-samples"] = p.pixelSamples;
+  if (wants(View::Glossy)) {
+    // How far the glossy picture is from the ideal mirrors', RMS over the pixels relative to the mean.
+    const double mean = imageMean(d.whitted);
+    v["gloss-difference"] = mean > 0 ? rmsDifference(d.whitted, d.idealMirrors) / mean : 0.0;
+  }
   v["rays.primary"] = static_cast<double>(n.primary);
   v["rays.shadow"] = static_cast<double>(n.shadow);
   v["rays.reflection"] = static_cast<double>(n.reflection);

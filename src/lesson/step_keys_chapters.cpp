@@ -114,6 +114,35 @@ void addChapterKeys(std::vector<StepKey>& t) {
                .step = 0.25,
                .stages = {Stage::RayTrace},
                .slot = &P::lightSize});
+  t.push_back(
+      {.name = "gloss",
+       .type = KeyType::Double,
+       .min = 0,
+       .max = 10000,
+       .defaultText = "0",
+       .label = "Gloss exponent",
+       .tooltip = "Raytrace stage: the mirrors' Phong exponent q. 0 is an ideal mirror, one reflected ray in "
+                  "the mirror direction; q > 0 draws each reflected ray from the lobe cos^q about it "
+                  "(glossy reflection): the smaller q, the blurrier the reflection.",
+       .control = true,
+       .decimals = 0,
+       .step = 8,
+       .stages = {Stage::RayTrace},
+       .slot = &P::gloss});
+  t.push_back({.name = "pixel-samples",
+               .type = KeyType::Int,
+               .min = 1,
+               .max = 1024,
+               .defaultText = "1",
+               .label = "Rays per pixel",
+               .tooltip =
+                   "Raytrace stage: primary rays per pixel, jittered over its area (antialiasing). Each also "
+                   "draws its own shadow-ray points and its own direction in a glossy lobe, so their average "
+                   "smooths all three.",
+               .control = true,
+               .step = 4,
+               .stages = {Stage::RayTrace},
+               .slot = &P::pixelSamples});
   t.push_back({.name = "pixel-x",
                .type = KeyType::Int,
                .min = 0,

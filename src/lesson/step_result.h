@@ -11,6 +11,7 @@
 #include "core/formfactor/formfactor_method.h"
 #include "core/mesh.h"
 #include "core/pipeline/pipeline.h"
+#include "core/refine/refine.h"
 #include "core/scene.h"
 #include "core/solvers/sampling_study.h"
 #include "homework/exercise.h"
@@ -91,6 +92,8 @@ struct StepResult {
   std::shared_ptr<const RayTraceData> raytrace;
   // Reflection stage: the BRDF, its lobe and albedo; with a scene, the local and radiosity pictures.
   std::shared_ptr<const ReflectionData> reflection;
+  // Refine stage: the refined solution, with its T-vertices and (discontinuity) critical lines.
+  std::shared_ptr<const RefinedSolution> refined;
 
   // Exercise stage: the question, its answers and worked solution (values: given.<name>, answer.<id>).
   std::optional<homework::Exercise> exercise;

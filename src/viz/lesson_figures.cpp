@@ -18,6 +18,7 @@
 #include "viz/lesson_scaling_figures.h"
 #include "viz/lesson_traced_figures.h"
 #include "viz/matrix_view.h"
+#include "viz/meshing_view.h"
 #include "viz/nusselt_view.h"
 #include "viz/rays_view.h"
 #include "viz/scene_view.h"
@@ -348,6 +349,7 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
     case View::RayCost:
     case View::Whitted:
     case View::PathBounces:
+    case View::Glossy:
       return detail::renderRayTraceView(view, step, r, s, path);
     case View::Lobe:
     case View::PhongSweep:
@@ -356,6 +358,17 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
       return detail::renderReflectionView(view, step, r, s, path);
     case View::SamplingError:
       return detail::renderSamplingView(r, s, path);
+    case View::Discontinuity: {
+      if (!r.refined) throw std::runtime_error(path + ": the step refined no mesh");
+      DiscontinuityViewOptions o;
+      o.size = {s.width, s.height, 96.0};
+      o.image = sceneOptions(step, r, s).image;
+      writeDiscontinuityFigure(*r.refined, r.camera, o, path);
+      const CriticalLineCounts counts = countCriticalLines(*r.refined);
+      return "The " + step.parameters.refine +
+             " mesh with its critical lines: " + std::to_string(counts.extremal) +
+             " umbra and penumbra boundaries, " + std::to_string(counts.interior) + " lines inside penumbrae";
+    }
   }
   return "";
 }

@@ -85,6 +85,17 @@ std::string renderRayTraceView(lesson::View view, const lesson::Step& step, cons
       return "The Whitted picture, direct light and mirror reflections only, beside the radiosity "
              "solution from the same camera at one exposure: only the second has light on the ceiling and "
              "colour bled from the walls";
+    case lesson::View::Glossy: {
+      const std::string rays =
+          std::to_string(d.pixelSamples) + (d.pixelSamples == 1 ? " ray per pixel" : " rays per pixel");
+      const std::string q = formatted("%.0f", d.gloss);
+      writeImagePanelsFigure({{"ideal mirrors", d.idealMirrors}, {"glossy mirrors, q = " + q, d.whitted}},
+                             stepPictureOptions(step, s, "Ideal and glossy reflection (" + rays + ")"), path);
+      return "The same Whitted picture with ideal mirrors and with glossy ones, each reflected ray drawn "
+             "from "
+             "the Phong lobe cos^" +
+             q + " about the mirror direction, " + rays + " averaging the lobe";
+    }
     case lesson::View::PathBounces: {
       std::vector<ImagePanel> panels;
       for (std::size_t k = 0; k < d.pathBounces.size(); ++k) {

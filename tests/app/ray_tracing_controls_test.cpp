@@ -71,3 +71,35 @@ TEST(RayTraceControls, TheRayTreeIsDrawnInThe3DViewAndFollowsThePixel) {
   EXPECT_NE(window->primaryView()->grab().toImage(), view) << "the 3D view did not redraw the tree";
   EXPECT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
 }
+
+// The glossy step: the mirrors' gloss exponent is a number field; a smaller q blurs the reflection more, in
+// the picture and in the number that measures it, and the rays per pixel are a field that changes the picture
+// too.
+TEST(RayTraceControls, TheGlossExponentAndTheRaysPerPixelChangeThePicture) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  const int step = stepWithFigure(*window, "glossy");
+  ASSERT_GE(step, 0);
+  ASSERT_TRUE(window->openLesson("ray-tracing", step)) << window->lastError().toStdString();
+  auto* gloss = qobject_cast<QDoubleSpinBox*>(window->parameterPanel()->editor("gloss"));
+  ASSERT_NE(gloss, nullptr) << "gloss is offered as a number field";
+  const double blur = test::stepValue(*window, "gloss-difference");
+  EXPECT_GT(blur, 0);
+  const QImage picture = window->figuresPane()->grab().toImage();
+
+  test::typeInto(gloss, "4");
+  EXPECT_TRUE(window->parameterPanel()->lastRefusal().isEmpty())
+      << window->parameterPanel()->lastRefusal().toStdString();
+  EXPECT_DOUBLE_EQ(test::stepValue(*window, "gloss"), 4.0);
+  EXPECT_GT(test::stepValue(*window, "gloss-difference"), blur) << "q = 4: blurrier than the step's q";
+  EXPECT_NE(window->figuresPane()->grab().toImage(), picture) << "the figure was not redrawn";
+
+  auto* rays = qobject_cast<QSpinBox*>(window->parameterPanel()->editor("pixel-samples"));
+  ASSERT_NE(rays, nullptr);
+  const QImage before = window->figuresPane()->grab().toImage();
+  test::typeInto(rays, "1");
+  EXPECT_DOUBLE_EQ(test::stepValue(*window, "pixel-samples"), 1.0);
+  EXPECT_EQ(test::stepValue(*window, "rays.primary"), test::stepValue(*window, "pixels"));
+  EXPECT_NE(window->figuresPane()->grab().toImage(), before) << "the figure was not redrawn";
+  EXPECT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
+}

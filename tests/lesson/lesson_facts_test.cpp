@@ -53,6 +53,30 @@ TEST_F(LessonFacts, AClosedRoomAbsorbsWhatItEmits) {
   EXPECT_NEAR(*r.value("B.floor"), *r.value("B.left"), 0.01 * *r.value("B.floor")) << "almost the same";
 }
 
+// The furnace's faces are Lambertian: the radiance they send into every direction is B / pi.
+TEST_F(LessonFacts, TheFurnaceSendsRadianceBOverPi) {
+  RUN_OR_SKIP(r, "rendering-equation", "furnace");
+  EXPECT_NEAR(*r.value("L.floor"), *r.value("B.floor") / 3.14159265358979323846, 1e-12);
+  EXPECT_NEAR(*r.value("L.floor"), *r.value("L.ceiling"), 1e-9);
+}
+
+// "Each face obeys B = E + rho H": the irradiance H = F B the step reports closes the equation on the floor
+// (no emission) and on the ceiling (emission; it receives less than the floor).
+TEST_F(LessonFacts, EachFaceIsItsEmissionPlusRhoTimesItsIrradiance) {
+  RUN_OR_SKIP(r, "rendering-equation", "balance");
+  EXPECT_EQ(*r.value("E.floor"), 0.0);
+  EXPECT_GT(*r.value("E.ceiling"), 0.0);
+  for (const char* s : {"floor", "ceiling", "left"}) {
+    const std::string n = s;
+    for (const char* c : {".r", ".g", ".b"})
+      EXPECT_NEAR(*r.value("B." + n + c),
+                  *r.value("E." + n + c) + *r.value("rho." + n + c) * *r.value("H." + n + c),
+                  1e-6 * *r.value("B." + n + c))
+          << s << c;
+  }
+  EXPECT_LT(*r.value("H.ceiling"), *r.value("H.floor"));
+}
+
 TEST_F(LessonFacts, ParallelAndPerpendicularSquaresExchangeAboutAFifth) {
   RUN_OR_SKIP(parallel, "form-factor", "parallel");
   RUN_OR_SKIP(perpendicular, "form-factor", "perpendicular");

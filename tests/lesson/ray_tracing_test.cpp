@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "core/io/rgb_image.h"
+#include "core/raytrace/whitted.h"
 #include "lesson/step_runner.h"
 #include "lesson_test_support.h"
 
@@ -114,6 +115,50 @@ TEST(RayTracingLesson, TheRayTracerMissesTheLightRadiosityAndPathsFind) {
   EXPECT_LT(r["mean.path.2"] - r["mean.path.1"], r["mean.path.1"] - r["mean.path.0"]) << "adds less again";
   EXPECT_GT(r["mean.path.all"], r["mean.path.2"]);
   EXPECT_NEAR(r["floor.path.0"], r["floor.whitted"], 0.05 * r["floor.whitted"]) << "the same direct light";
+}
+
+// The glossy figure: the glossy mirror differs from the ideal one, more for a smaller q (a blurrier
+// reflection), and not at all for q = 0, the ideal mirror; the gloss control changes the picture.
+TEST(RayTracingLesson, GlossyMirrorsBlurWhatIdealOnesReflect) {
+  const Ran r = run("glossy");
+  ASSERT_TRUE(r.result.raytrace);
+  EXPECT_GT(r["gloss"], 0);
+  EXPECT_GT(r["gloss-difference"], 0.01) << "the reflection is visibly blurred";
+  const Ran blurrier = run("glossy", [](StepParameters& p) { p.gloss = 4; });
+  EXPECT_GT(blurrier["gloss-difference"], r["gloss-difference"]);
+  EXPECT_GT(rmsDifference(blurrier.result.raytrace->whitted, r.result.raytrace->whitted),
+            0.01 * r["mean.whitted"])
+      << "the control changes the picture";
+  const Ran ideal = run("glossy", [](StepParameters& p) { p.gloss = 0; });
+  EXPECT_EQ(ideal["gloss-difference"], 0) << "q = 0 is the ideal mirror";
+}
+
+// The rays-per-pixel control: every pixel sends that many primary rays, the counts follow it, and the
+// picture changes (jittered edges, averaged lobe).
+TEST(RayTracingLesson, RaysPerPixelMultiplyThePrimaryRaysAndSmoothThePicture) {
+  const Ran r = run("glossy");
+  EXPECT_EQ(r["rays.primary"], r["pixels"] * r["pixel-samples"]);
+  const Ran one = run("glossy", [](StepParameters& p) { p.pixelSamples = 1; });
+  EXPECT_EQ(one["rays.primary"], one["pixels"]);
+  EXPECT_GT(rmsDifference(one.result.raytrace->whitted, r.result.raytrace->whitted),
+            0.01 * r["mean.whitted"]);
+}
+
+// Equation (lobe-density): directions drawn by cos(alpha) = u^(1/(q+1)) have the Phong lobe's mean cosine,
+// (q + 1) / (q + 2), and are unit vectors about the axis.
+TEST(RayTracingLesson, TheLobeDirectionsFollowThePhongDensity) {
+  const Vec3 axis = Vec3(1, 2, 3).normalized();
+  for (const double q : {1.0, 16.0, 128.0}) {
+    double sum = 0;
+    const int n = 200;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const Vec3 d = phongLobeDirection(axis, q, (i + 0.5) / n, (j + 0.5) / 4);
+        EXPECT_NEAR(d.norm(), 1.0, 1e-12);
+        sum += d.dot(axis);
+      }
+    EXPECT_NEAR(sum / (4 * n), (q + 1) / (q + 2), 1e-3) << q;
+  }
 }
 
 TEST(RayTracingLesson, APixelOutsideTheImageIsAnErrorNamingTheKey) {

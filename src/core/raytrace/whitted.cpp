@@ -25,6 +25,16 @@ struct WhittedTracer::Walk {
   RayTree* tree = nullptr;
 };
 
+Vec3 phongLobeDirection(const Vec3& axis, double q, double u, double v) {
+  const double cosAlpha = std::pow(1.0 - u, 1.0 / (q + 1.0));  // 1 - u in (0, 1]: no zero to a power
+  const double sinAlpha = std::sqrt(std::max(0.0, 1.0 - cosAlpha * cosAlpha));
+  const double phi = 2 * std::numbers::pi * v;
+  // Any frame about the axis: the azimuth is uniform.
+  const Vec3 helper = std::abs(axis.x()) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+  const Vec3 t = axis.cross(helper).normalized(), b = axis.cross(t);
+  return (cosAlpha * axis + sinAlpha * (std::cos(phi) * t + std::sin(phi) * b)).normalized();
+}
+
 WhittedTracer::WhittedTracer(const TracingScene& tracing, const WhittedOptions& options)
     : tracing_(tracing), options_(options) {
   options_.depth = std::max(options_.depth, 0);
@@ -122,8 +132,13 @@ Rgb WhittedTracer::radiance(const Vec3& origin, const Vec3& direction, RayKind k
   if (!mirror) B += rho * H;
   if (mirror && depth < options_.depth) {
     const Vec3& n = mesh.elements[static_cast<std::size_t>(hit.element)].normal;
-    const Vec3 reflected = direction - 2 * direction.dot(n) * n;
-    B += rho * radiance(x, reflected, RayKind::Reflection, depth + 1, self, walk);
+    Vec3 reflected = direction - 2 * direction.dot(n) * n;
+    if (options_.glossExponent > 0) {
+      const double u = walk.random.uniform(), v = walk.random.uniform();
+      reflected = phongLobeDirection(reflected, options_.glossExponent, u, v);
+    }
+    // A lobe direction below the surface reflects nothing: that part of the lobe is absorbed.
+    if (reflected.dot(n) > 0) B += rho * radiance(x, reflected, RayKind::Reflection, depth + 1, self, walk);
   }
   return B;
 }

@@ -9,7 +9,8 @@
 // Carpenter 1984). Secondary rays count hits only beyond `epsilon` along the ray, the classic remedy for a
 // ray finding the surface it leaves at a rounding-error distance: 0 gives shadow acne, too large a value lets
 // light through near contacts. The tracer counts its rays by kind, and can check each shadow ray against
-// the robust visibility test to count the acne and the leaks.
+// the robust visibility test to count the acne and the leaks. Mirrors may be glossy: each reflected ray then
+// samples a Phong lobe about the mirror direction (see phongLobeDirection).
 #pragma once
 
 #include <cstdint>
@@ -27,6 +28,10 @@ struct WhittedOptions {
   double epsilon = 0;     // secondary rays ignore hits closer than this (scene units)
   double lightScale = 1;  // each light scaled about its centre, its power kept
   int pixelSamples = 1;   // primary rays per pixel, jittered (antialiasing)
+  // Mirrors' gloss: 0 reflects every ray exactly (an ideal mirror); q > 0 sends each reflected ray in a
+  // direction drawn from the Phong lobe cos^q about the mirror direction (glossy reflection), so that the
+  // primary rays of a pixel average the lobe (distributed ray tracing).
+  double glossExponent = 0;
   std::vector<int> mirrorSurfaces;  // surfaces (indices into the scene's) that reflect as mirrors
   std::uint64_t seed = 1;
   bool checkShadows = false;  // also test each shadow ray robustly: acne and leak counts
@@ -49,6 +54,11 @@ struct WhittedImage {
   std::vector<int> element;  // per pixel, the element the centre's primary ray reaches (-1: none)
   WhittedStats stats;
 };
+
+// A direction drawn from the density (q + 1) / (2 pi) cos^q(alpha) over the sphere of directions about the
+// unit vector `axis`, alpha the angle to it, from two uniform numbers in [0, 1): cos(alpha) = u^(1 / (q + 1))
+// and the azimuth 2 pi v. q = 0 gives the uniform hemisphere about `axis`; large q a narrow cone.
+Vec3 phongLobeDirection(const Vec3& axis, double q, double u, double v);
 
 class WhittedTracer {
  public:

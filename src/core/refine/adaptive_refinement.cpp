@@ -57,19 +57,8 @@ std::vector<int> elementsToSplit(const Scene& scene, const Mesh& mesh, const Rgb
                                  const std::vector<TVertex>& tVertices, const RefineOptions& options,
                                  const VisibilityOracle& visibility) {
   const std::size_t n = mesh.size();
-  // The scale of "a large jump": the mean radiosity of the reflecting elements (of all, when every one
-  // emits).
-  double weighted = 0, area = 0, weightedAll = 0, areaAll = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double a = mesh.elements[i].area, y = luminance(B.row(static_cast<Eigen::Index>(i)));
-    weightedAll += a * y;
-    areaAll += a;
-    if ((mesh.emission.row(static_cast<Eigen::Index>(i)).array() > 0).any()) continue;
-    weighted += a * y;
-    area += a;
-  }
-  if (area <= 0) weighted = weightedAll, area = areaAll;
-  const double threshold = options.gradientTolerance * (area > 0 ? weighted / area : 0.0);
+  // The scale of "a large jump": the mean radiosity of the reflecting elements.
+  const double threshold = options.gradientTolerance * meanReflectingLuminance(mesh, B);
   const auto neighbours = smoothNeighbours(scene, mesh, tVertices);
   std::vector<double> jump(n, 0.0);
   for (std::size_t i = 0; i < n; ++i)

@@ -71,6 +71,21 @@ double luminance(const Eigen::Ref<const Eigen::RowVector3d>& rgb) {
   return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
 }
 
+double meanReflectingLuminance(const Mesh& mesh, const RgbField& B) {
+  double weighted = 0, area = 0, weightedAll = 0, areaAll = 0;
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    const auto row = static_cast<Eigen::Index>(i);
+    const double a = mesh.elements[i].area, y = luminance(B.row(row));
+    weightedAll += a * y;
+    areaAll += a;
+    if ((mesh.emission.row(row).array() > 0).any()) continue;
+    weighted += a * y;
+    area += a;
+  }
+  if (area <= 0) weighted = weightedAll, area = areaAll;
+  return area > 0 ? weighted / area : 0.0;
+}
+
 double defaultInitialMaxEdge(const Scene& scene) {
   const Eigen::AlignedBox3d box = scene.bounds();
   // A fifth of the diagonal: about 190 mm in the Cornell box, which meshes it into ~140 elements.

@@ -147,4 +147,8 @@ double relativeRmsError(const RefinedSolution& solution, const RefinedSolution& 
 
 double luminance(const Eigen::Ref<const Eigen::RowVector3d>& rgb);
 
+// The area-weighted mean luminance of B over the elements that emit nothing (over all of them when every one
+// emits): the scale of adaptive subdivision's split threshold, tolerance x this.
+double meanReflectingLuminance(const Mesh& mesh, const RgbField& B);
+
 }  // namespace rt
