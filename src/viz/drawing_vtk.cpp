@@ -16,10 +16,15 @@
 #include <vtkTextProperty.h>
 
 #include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "viz/drawing.h"
+#include "viz/drawing_images.h"
 #include "viz/vtk_render.h"
 #include "viz/vtk_views.h"
 
@@ -100,19 +105,9 @@ class DrawingItem : public vtkContextItem {
   }
 
  private:
-  // Pixels as an RGB texture (VTK's rows run bottom-up), stretched over the shape's rectangle.
+  // Pixels as an RGB texture, stretched over the shape's rectangle.
   static void drawImage(vtkContext2D* painter, const Drawing::Shape& shape, const std::vector<float>& xy) {
-    auto image = vtkSmartPointer<vtkImageData>::New();
-    image->SetDimensions(shape.pixelsWide, shape.pixelsHigh, 1);
-    image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-    auto* out = static_cast<unsigned char*>(image->GetScalarPointer());
-    for (int y = 0; y < shape.pixelsHigh; ++y)
-      for (int x = 0; x < shape.pixelsWide; ++x) {
-        const Rgb8& c =
-            shape.pixels[static_cast<std::size_t>(shape.pixelsHigh - 1 - y) * shape.pixelsWide + x];
-        std::copy(c.begin(), c.end(), out + 3 * (static_cast<std::size_t>(y) * shape.pixelsWide + x));
-      }
-    painter->DrawImage(vtkRectf(xy[0], xy[1], xy[2] - xy[0], xy[3] - xy[1]), image);
+    painter->DrawImage(vtkRectf(xy[0], xy[1], xy[2] - xy[0], xy[3] - xy[1]), imageDataOf(shape));
   }
   static void strokePen(vtkContext2D* painter, const Drawing::Shape& shape) {
     painter->GetPen()->SetLineType(vtkPen::SOLID_LINE);
@@ -155,6 +150,16 @@ void writeDrawing(const Drawing& drawing, const std::string& path) {
     words += (words.empty() ? "" : " | ") + shape.text;
   }
   writeContextView(view, path, title, words);
+  if (figureFormatOf(path) != FigureFormat::Svg || drawing.count(Drawing::Kind::Image) == 0) return;
+  std::string svg;
+  {
+    std::ifstream in(path, std::ios::binary);
+    svg.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  embedDrawingImages(svg, drawing);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << svg;
+  if (!out) throw std::runtime_error(path + ": cannot write the file");
 }
 
 }  // namespace rt::viz

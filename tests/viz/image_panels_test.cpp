@@ -2,7 +2,11 @@
 // difference maps, and a PNG that shows the pictures.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+
 #include "support/test_paths.h"
+#include "support/vector_chart_check.h"
 #include "viz/image_panels.h"
 #include "viz_test_support.h"
 
@@ -66,6 +70,44 @@ TEST(ImagePanels, ThePngShowsThePictures) {
   EXPECT_EQ(stats.width, 600);
   EXPECT_GT(stats.stddev, 20) << "not a blank page";
   EXPECT_LT(stats.mean[1], 250) << "the pictures, not a white page";
+}
+
+// The book's figures are SVG: a picture in a panel must be in the file (no reference to a definition the
+// exporter left out), and an independent renderer must draw it there.
+TEST(ImagePanels, TheSvgShowsThePictures) {
+  if (const std::string missing = rt::test::missingVectorRenderers(); !missing.empty())
+    GTEST_SKIP() << missing;
+  const std::string path = rt::test::scratchDir("image-panels") + "/panels.svg";
+  ImagePanelsOptions o;
+  o.size = {600, 400, 96};
+  RgbImage red(8, 8), blue(8, 8);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) red.at(x, y) = Rgb(1, 0, 0), blue.at(x, y) = Rgb(0, 0, 1);
+  const Drawing drawing = imagePanelsDrawing({{"red", red}, {"blue", blue}}, o);
+  writeImagePanelsFigure({{"red", red}, {"blue", blue}}, o, path);
+  std::ifstream in(path);
+  const std::string svg{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  EXPECT_EQ(svg.find("#vtkEmbeddedImage"), std::string::npos) << "a reference to an image the file lacks";
+  EXPECT_NE(svg.find("data:image/png;base64,"), std::string::npos);
+
+  const rt::test::RenderedChart page = rt::test::renderChart(path);
+  ASSERT_TRUE(page.error.empty()) << page.error;
+  // The centre of each picture, in the page's points (y down), is its colour.
+  const std::array<int, 3> expected[2] = {{255, 0, 0}, {0, 0, 255}};
+  int panel = 0;
+  for (const Drawing::Shape& shape : drawing.shapes) {
+    if (shape.kind != Drawing::Kind::Image) continue;
+    const double cx = 0.5 * (shape.points[0].x() + shape.points[1].x());
+    const double cy = drawing.height - 0.5 * (shape.points[0].y() + shape.points[1].y());
+    const int px = static_cast<int>(cx * page.width / drawing.width);
+    const int py = static_cast<int>(cy * page.height / drawing.height);
+    const unsigned char* rgb = &page.rgb[3 * (static_cast<std::size_t>(py) * page.width + px)];
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(rgb[c], expected[panel][c], 60)
+          << "panel " << panel << " channel " << c << " at " << px << "," << py;
+    ++panel;
+  }
+  EXPECT_EQ(panel, 2);
 }
 
 }  // namespace
