@@ -239,6 +239,10 @@ void styleText(vtkTextProperty* text, int fontSize, bool bold) {
   text->SetItalic(false);
   text->SetShadow(false);
   text->SetColor(0.96, 0.96, 0.96);
+  // Light text on a dark translucent band: readable over a white furnace wall or a lit floor as well as over
+  // the dark background, without hiding the picture under it.
+  text->SetBackgroundColor(0.0, 0.0, 0.0);
+  text->SetBackgroundOpacity(0.55);
 }
 
 namespace {
