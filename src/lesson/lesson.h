@@ -38,6 +38,7 @@ enum class Stage {
   RayTrace,    // Whitted ray tracing: one pixel's ray tree, shadows, the epsilon, the cost, against radiosity
   Reflection,  // a BRDF's lobe, albedo and Phong's exponent; with a scene, Phong local light beside radiosity
   Sampling,    // plain Monte Carlo, control variate and quasi-Monte Carlo lines: error against rays
+  Elements,    // constant against linear elements: error against the mesh, fitted convergence orders
 };
 
 // The figures a step can ask for; the names match the viz layer's views.
@@ -78,6 +79,7 @@ enum class View {
   Albedo,         // the directional albedo against the angle of incidence
   PhongLocal,     // the scene lit by Phong local illumination plus ambient, beside its radiosity solution
   SamplingError,  // sampling stage: error against rays per variance reduction, log-log, with fitted slopes
+  BasisError,     // elements stage: error against elements per basis, log-log, with the fitted orders
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.
@@ -132,6 +134,7 @@ struct StepParameters {
   std::vector<int> subdivisions;    // compare: several subdivision levels
   std::vector<int> sweep;           // benchmark: resolutions (hemicube) or samples (rays) to try
   std::string solver = "gauss-seidel";
+  std::string basis = "constant";    // constant or linear (core/basis/linear_basis.h)
   std::vector<std::string> solvers;  // compare: several solvers
   std::optional<int> iterations;     // maximum iterations
   std::optional<double> tolerance;

@@ -54,8 +54,8 @@ class SolverContract : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SolverContract, ConvergesToDirectSolution) {
   const auto random30 = [] { return test::randomSystem(30, 7); };
-  for (const std::function<test::OwnedSystem()>& make :
-       std::vector<std::function<test::OwnedSystem()>>{test::colouredCube, test::openBox, random30}) {
+  for (const std::function<test::OwnedSystem()>& make : std::vector<std::function<test::OwnedSystem()>>{
+           test::colouredCube, test::openBox, random30, test::colouredCubeLinear}) {
     const test::OwnedSystem s = make();
     const RgbField reference = directSolution(s.system);
     auto solver = makeSolver(GetParam());
