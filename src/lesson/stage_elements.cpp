@@ -1,6 +1,7 @@
 // The linear basis in the lessons: a solve step with `basis: linear` solves the nodes' system (core/basis)
 // through the runner's pipeline, and the elements stage measures both bases against a fine reference on a
 // sweep of meshes, over the scene and over the highlighted surfaces, with the fitted convergence orders.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <memory>
@@ -60,14 +61,27 @@ void computeElements(StageContext& c) {
   const StepParameters& p = c.parameters;
   if (p.subdivisions.size() < 2) c.fail("subdivisions", "an elements step needs at least two `subdivisions`");
   if (!p.subdivide) c.fail("subdivide", "an elements step needs `subdivide`: the reference's mesh");
-  for (const int n : p.subdivisions)
-    if (n >= *p.subdivide)
+  std::vector<int> subdivisions = p.subdivisions;
+  int referenceSubdivide = *p.subdivide;
+  if (c.runner.options().quick) {
+    // Quick runs cap `subdivide`: the sweep keeps its length (the text names its entries) below it.
+    for (std::size_t k = 0; k < subdivisions.size(); ++k) subdivisions[k] = static_cast<int>(k) + 1;
+    referenceSubdivide = std::max(referenceSubdivide, static_cast<int>(subdivisions.size()) + 1);
+    if (referenceSubdivide != *p.subdivide) {
+      MeshOptions o;
+      o.mode = MeshOptions::Mode::Count;
+      o.count = referenceSubdivide;
+      r.mesh = buildMesh(r.scene, o);
+    }
+  }
+  for (const int n : subdivisions)
+    if (n >= referenceSubdivide)
       c.fail("subdivisions", "every subdivision must be coarser than the reference's `subdivide` (" +
-                                 std::to_string(*p.subdivide) + ")");
+                                 std::to_string(referenceSubdivide) + ")");
   auto data = std::make_shared<ElementsData>();
   for (const auto& h : c.step.highlights)
     if (!h.empty() && !std::isdigit(static_cast<unsigned char>(h[0]))) data->surfaces.push_back(h);
-  data->referenceSubdivide = *p.subdivide;
+  data->referenceSubdivide = referenceSubdivide;
   data->referenceElements = static_cast<long>(r.mesh.size());
 
   // The reference: the linear basis on the step's own (finest) mesh. The views show it.
@@ -84,7 +98,7 @@ void computeElements(StageContext& c) {
     series.basis = basis;
     std::vector<double> h, all;
     std::map<std::string, std::vector<double>> bySurface;
-    for (const int n : p.subdivisions) {
+    for (const int n : subdivisions) {
       if (c.progress.cancelled()) throw Cancelled();
       MeshOptions o;
       o.mode = MeshOptions::Mode::Count;
@@ -132,7 +146,9 @@ void computeElements(StageContext& c) {
   }
   r.values["elements.reference"] = static_cast<double>(r.mesh.size());
   r.values["nodes.reference"] = static_cast<double>(reference->basis.size());
-  r.values["subdivide.reference"] = *p.subdivide;
+  r.values["subdivide.reference"] = referenceSubdivide;
+  // The highlighted surfaces name the regions measured, not elements to mark in the figure.
+  r.highlighted.clear();
   r.elements = std::move(data);
 }
 

@@ -201,9 +201,10 @@ std::vector<StepKey> makeTable() {
        .tooltip =
            "What B is between the nodes: constant, one value per element (B_i = E_i + rho_i sum_j F_ij "
            "B_j); linear, one value per vertex of a patch, interpolated across each element and drawn "
-           "as it is (Galerkin, kernel integrals by quadrature; solvers that read a matrix).",
+           "as it is (collocation at the vertices, kernel integrals by quadrature; solvers direct, jacobi, "
+           "gauss-seidel, southwell, progressive, bounces).",
        .control = true,
-       .stages = solving,
+       .stages = {Stage::Solve},
        .slot = &P::basis});
   add({.name = "solvers",
        .type = KeyType::Choices,

@@ -76,19 +76,23 @@ TEST(LinearBasis, FurnaceGivesEOverOneMinusRhoAtEveryNode) {
   EXPECT_LT((out.corners.array() - expected).abs().maxCoeff(), 1e-10);
 }
 
-TEST(LinearBasis, KernelIsReciprocalInTheNodesWeights) {
+TEST(LinearBasis, EachRowSumsToWhatItsNodeSees) {
   const Scene scene = loadScene(test::sourcePath("scenes/perpendicular-squares.json"));
   const Mesh mesh = gridMesh(scene, 4);
   const auto kernel = computeLinearKernel(mesh, {}, noProgress());
-  const Eigen::VectorXd& A = kernel->basis.weights;
-  double worst = 0, largest = 0;
-  for (Eigen::Index v = 0; v < kernel->K.rows(); ++v)
-    for (Eigen::Index w = 0; w < kernel->K.cols(); ++w) {
-      worst = std::max(worst, std::abs(A[v] * kernel->K(v, w) - A[w] * kernel->K(w, v)));
-      largest = std::max(largest, A[v] * kernel->K(v, w));
-    }
-  ASSERT_GT(largest, 0);
-  EXPECT_LT(worst / largest, 2e-3);
+  const Polygon source{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  int checked = 0;
+  for (std::size_t v = 0; v < kernel->basis.size(); ++v) {
+    if (kernel->basis.nodePatch[v] != 1) continue;
+    const Vec3 x = mesh.vertices[static_cast<std::size_t>(kernel->basis.nodeVertex[v])];
+    // Off the shared edge by a hair, where Lambert's formula is defined (the kernel moves its nodes so too).
+    const Vec3 inside = x + 1e-7 * (Vec3(0.5, 0, 0.5) - x);
+    const double sees = pointToPolygonFormFactor(inside, Vec3(0, 1, 0), source);
+    EXPECT_NEAR(kernel->K.row(static_cast<Eigen::Index>(v)).sum(), sees, 1e-5) << "node at " << x.transpose();
+    EXPECT_GE(kernel->K.row(static_cast<Eigen::Index>(v)).minCoeff(), 0.0);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 25);
 }
 
 // Two unit squares facing each other at distance 1; the lower one emits 1 and reflects nothing, so the
@@ -145,8 +149,9 @@ TEST(LinearBasis, AgreesWithTheConstantBasisAsTheMeshRefines) {
   double c = 0, l = 0, coarse = 0, fine = 0;
   squares.errors(4, c, l, &coarse);
   squares.errors(16, c, l, &fine);
-  EXPECT_LT(fine, 0.5 * coarse);
-  EXPECT_LT(fine, 0.01);
+  // Four times finer, the two differ by about a quarter as much: both converge to the same function.
+  EXPECT_LT(fine, 0.35 * coarse);
+  EXPECT_LT(fine, 0.02);
 }
 
 TEST(LinearBasis, PipelineRefusesSolversThatTraceRaysAndOtherMethods) {
@@ -162,6 +167,7 @@ TEST(LinearBasis, PipelineRefusesSolversThatTraceRaysAndOtherMethods) {
   settings.method = "hemicube";
   EXPECT_THROW(pipeline.run(scene, settings), InputError);
   EXPECT_FALSE(linearBasisProblem("local-lines", "").empty());
+  EXPECT_FALSE(linearBasisProblem("stochastic-jacobi", "").empty());
   EXPECT_TRUE(linearBasisProblem("gauss-seidel", defaultFormFactorMethod()).empty());
 }
 

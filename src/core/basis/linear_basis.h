@@ -40,8 +40,8 @@ struct LinearBasis {
   std::vector<int> firstCorner;
   std::vector<int> cornerNode;
   std::vector<double> cornerWeight;  // the integral of the corner's shape function over its element
-  // Per node: the integral of its basis function (the lumped mass, the "area" of the node: the weights of
-  // the Galerkin equation and of reciprocity, A_v K_vw = A_w K_wv), its patch's reflectance and emission.
+  // Per node: the integral of its basis function (the "area" of the node, with which power is counted), its
+  // patch's reflectance and emission.
   Eigen::VectorXd weights;
   RgbField reflectance, emission;
 

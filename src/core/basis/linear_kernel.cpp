@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <mutex>
 #include <vector>
 
 #include "core/formfactor/analytic.h"
@@ -97,74 +96,50 @@ FormFactorMatrix linearKernelMatrix(const Mesh& mesh, const LinearBasis& basis,
   const auto m = static_cast<Eigen::Index>(basis.size());
   FormFactorMatrix K = zeroFormFactorMatrix(m);
   const auto visibility = std::make_unique<PairVisibility>(mesh);
-  std::vector<double> radius(mesh.size());
-  for (std::size_t e = 0; e < mesh.size(); ++e) radius[e] = radiusOf(mesh, static_cast<int>(e));
-  std::vector<std::mutex> rowLocks(basis.size());
+  // Per node: an element that uses it (its plane, its patch, the way into the patch).
+  std::vector<int> owner(basis.size(), -1);
+  for (std::size_t e = 0; e < mesh.size(); ++e)
+    for (int c = basis.firstCorner[e]; c < basis.firstCorner[e + 1]; ++c) {
+      const auto node = static_cast<std::size_t>(basis.cornerNode[static_cast<std::size_t>(c)]);
+      if (owner[node] < 0) owner[node] = static_cast<int>(e);
+    }
   stats.elements = mesh.size();
-  forEachRow(
-      mesh.size(), options, progress, "kernel integrals (linear basis)", stats,
-      [&](int e, RowCounters& counters) {
-        const ElementMap map(mesh, e);
-        const Element& receiver = mesh.elements[static_cast<std::size_t>(e)];
-        // This element's share of its corners' rows: corner a gathers from node w.
-        std::vector<double> rows(static_cast<std::size_t>(map.count * m), 0.0);
-        // One outer rule for every element the receiver sees, so that the shares of each point, which add up
-        // to what the point sees (1 in a closed scene), add up over the rule too: the rows sum exactly as the
-        // scene closes. Its order follows the nearest element seen.
-        std::vector<int> seen;
-        double nearest = 1e300;
-        for (int f = 0; f < static_cast<int>(mesh.size()); ++f) {
-          if (f == e || !elementsFaceEachOther(mesh, e, f)) {
-            ++counters.pairsSkippedFacing;
-            continue;
-          }
-          seen.push_back(f);
-          nearest = std::min(
-              nearest, (receiver.centroid - mesh.elements[static_cast<std::size_t>(f)].centroid).norm() /
-                           (radius[static_cast<std::size_t>(e)] + radius[static_cast<std::size_t>(f)]));
-        }
-        const int q = nearest > 4 ? 2 : nearest > 2 ? 3 : 5;
-        const QuadratureRule& rule = gaussLegendre(q);
-        for (const int f : seen) {
-          ++counters.pairsComputed;
-          const bool occluded = visibility->mayBeOccluded(e, f);
-          if (!occluded) ++counters.pairsUnoccluded;
-          const int* nodes =
-              &basis.cornerNode[static_cast<std::size_t>(basis.firstCorner[static_cast<std::size_t>(f)])];
-          for (int a = 0; a < q; ++a)
-            for (int b = 0; b < q; ++b) {
-              const double u = rule.nodes[static_cast<std::size_t>(a)];
-              const double v = rule.nodes[static_cast<std::size_t>(b)];
-              const Vec3 x = map.point(u, v);
-              std::function<bool(const Vec3&)> visible;
-              if (occluded)
-                visible = [&visibility, &x, e, f](const Vec3& y) {
-                  return visibility->rays().visible(x, y, e, f);
-                };
-              const WeightedFormFactor w =
-                  weightedPointFormFactor(x, receiver.normal, mesh, f, tolerance, visible);
-              ++counters.kernelEvaluations;
-              counters.raysCast += w.rays;
-              if (w.total <= 0) continue;
-              double phi[4];
-              map.shape(u, v, phi);
-              const double weight = rule.weights[static_cast<std::size_t>(a)] *
-                                    rule.weights[static_cast<std::size_t>(b)] * map.jacobian(u, v);
-              for (int c = 0; c < map.count; ++c)
-                for (int k = 0; k < w.count; ++k)
-                  rows[static_cast<std::size_t>(c * m + nodes[k])] += weight * phi[c] * w.shares[k];
-            }
-        }
-        const int first = basis.firstCorner[static_cast<std::size_t>(e)];
-        for (int c = 0; c < map.count; ++c) {
-          const int node = basis.cornerNode[static_cast<std::size_t>(first + c)];
-          const double scale = 1.0 / basis.weights[node];
-          std::lock_guard lock(rowLocks[static_cast<std::size_t>(node)]);
-          for (Eigen::Index w = 0; w < m; ++w)
-            K(node, w) += scale * rows[static_cast<std::size_t>(c * m + w)];
-        }
-      });
-  stats.notes = "linear basis, Galerkin with a lumped mass: " + std::to_string(m) + " nodes on " +
+  forEachRow(basis.size(), options, progress, "kernel integrals (linear basis)", stats,
+             [&](int v, RowCounters& counters) {
+               const auto node = static_cast<std::size_t>(v);
+               const Element& own = mesh.elements[static_cast<std::size_t>(owner[node])];
+               const Vec3 vertex = mesh.vertices[static_cast<std::size_t>(basis.nodeVertex[node])];
+               // A node on the edge of a neighbouring patch (the corner of a room) would sit on the polygon
+               // it integrates over, where Lambert's formula divides by zero: the point moves into its own
+               // patch by a millionth of the way to an element's centre, far below the tolerance.
+               const Vec3 x = vertex + 1e-6 * (own.centroid - vertex);
+               const Vec3& n = own.normal;
+               for (int f = 0; f < static_cast<int>(mesh.size()); ++f) {
+                 const Element& source = mesh.elements[static_cast<std::size_t>(f)];
+                 if (source.patch == own.patch) continue;  // coplanar: sees nothing of it
+                 // Nothing to do when the element is behind the point's plane or the point behind it.
+                 if (source.normal.dot(x - source.centroid) <= 0) {
+                   ++counters.pairsSkippedFacing;
+                   continue;
+                 }
+                 const bool occluded = visibility->shafts().mayBeOccluded(x, n, own.patch, f);
+                 if (!occluded) ++counters.pairsUnoccluded;
+                 std::function<bool(const Vec3&)> visible;
+                 if (occluded)
+                   visible = [&visibility, &x, e = owner[node], f](const Vec3& y) {
+                     return visibility->rays().visible(x, y, e, f);
+                   };
+                 const WeightedFormFactor w = weightedPointFormFactor(x, n, mesh, f, tolerance, visible);
+                 ++counters.kernelEvaluations;
+                 counters.raysCast += w.rays;
+                 if (w.total <= 0) continue;
+                 ++counters.pairsComputed;
+                 const int first = basis.firstCorner[static_cast<std::size_t>(f)];
+                 for (int k = 0; k < w.count; ++k)
+                   K(v, basis.cornerNode[static_cast<std::size_t>(first + k)]) += w.shares[k];
+               }
+             });
+  stats.notes = "linear basis, collocation at the nodes: " + std::to_string(m) + " nodes on " +
                 std::to_string(mesh.size()) + " elements; weighted point form factors to " +
                 std::to_string(tolerance) + " near the element";
   return K;

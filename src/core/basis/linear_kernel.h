@@ -1,19 +1,18 @@
-// The kernel integrals of the linear basis (linear_basis.h), by Galerkin's method with a lumped mass: node v
-// gathers from node w
+// The kernel integrals of the linear basis (linear_basis.h), by point collocation at the nodes: the residual
+// of the integral equation vanishes at every node v, which gathers from node w
 //
-//   K_vw = (1/A_v) int phi_v(x) int phi_w(y) cos(theta_x) cos(theta_y) V(x,y) / (pi r^2) dA_y dA_x,
-//   A_v  = int phi_v dA,
+//   K_vw = int phi_w(y) cos(theta_v) cos(theta_y) V(v,y) / (pi r^2) dA_y,
 //
-// so that b_v = E_v + rho_v sum_w K_vw b_w has the shape of the classic system: A_v K_vw = A_w K_wv, and
-// the rows sum to 1 in a closed scene (the shape functions add up to 1 everywhere), so every solver that
-// reads a matrix solves it.
+// so that b_v = E_v + rho_v sum_w K_vw b_w has the shape of the classic system: K >= 0, and each row sums to
+// the form factor from the node to the whole scene (the shape functions add up to 1 everywhere), 1 in a
+// closed scene, so every solver that reads a matrix solves it. The nodes' weights A_v = int phi_v dA stand
+// for the areas where power is counted.
 //
-// The inner integral, the point-to-element form factor weighted by the element's shape functions, takes its
-// total from Lambert's exact contour formula (analytic.h) and splits it among the shape functions by a
-// Gauss rule over the element whose order grows as the point nears the element; near the element the
-// order doubles until no share changes by more than the tolerance. The outer integral is a Gauss rule over
-// the receiving element, one for all it sees, of 2, 3 or 5 points a side as its nearest element seen nears.
-// Occluded pairs (the shaft test, shaft_culling.h) trace one ray per inner point.
+// The integral over one element, the point-to-element form factor weighted by the element's shape
+// functions, takes its total from Lambert's exact contour formula (analytic.h) and splits it among the shape
+// functions by a Gauss rule over the element whose order grows as the point nears the element; near the
+// element the order doubles until no share changes by more than the tolerance. Occluded pairs (the shaft
+// test, shaft_culling.h) trace one ray per rule point.
 #pragma once
 
 #include <functional>
@@ -41,8 +40,8 @@ WeightedFormFactor weightedPointFormFactor(const Vec3& point, const Vec3& normal
                                            int element, double tolerance,
                                            const std::function<bool(const Vec3&)>& visible = {});
 
-// K for the basis's nodes (m x m). options.tolerance is the inner integrals' tolerance (0: the default);
-// stats counts Lambert evaluations, rays and pairs. May throw Cancelled.
+// K for the basis's nodes (m x m). options.tolerance is the weighted form factors' tolerance (0: the
+// default); stats counts Lambert evaluations, rays and pairs. May throw Cancelled.
 FormFactorMatrix linearKernelMatrix(const Mesh& mesh, const LinearBasis& basis,
                                     const FormFactorOptions& options, Progress& progress,
                                     FormFactorStats& stats);

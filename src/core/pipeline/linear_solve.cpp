@@ -25,6 +25,12 @@ RadiositySystem linearSystem(const LinearKernel& kernel) {
   return s;
 }
 
+bool linearBasisSolves(const std::string& solver) {
+  for (const char* name : {"direct", "jacobi", "gauss-seidel", "southwell", "progressive", "bounces"})
+    if (solver == name) return true;
+  return false;
+}
+
 std::string linearBasisProblem(const std::string& solver, const std::string& method) {
   if (!method.empty() && method != defaultFormFactorMethod())
     return "the linear basis integrates its own kernel by quadrature (Lambert's formula weighted by the "
@@ -33,8 +39,12 @@ std::string linearBasisProblem(const std::string& solver, const std::string& met
   if (!solver.empty() && !solverNeedsMatrix(solver))
     return "solver '" + solver +
            "' traces rays through the elements and solves for one value per element: the linear basis "
-           "needs a solver that reads a matrix (direct, jacobi, gauss-seidel, southwell, progressive, "
-           "bounces, stochastic-jacobi, random-walk)";
+           "needs direct, jacobi, gauss-seidel, southwell, progressive or bounces";
+  if (!solver.empty() && !linearBasisSolves(solver))
+    return "solver '" + solver +
+           "' draws the entries of a row as the chances that power moves, which needs reciprocity (A_i F_ij "
+           "= A_j F_ji); the linear basis's collocation kernel has none: use direct, jacobi, gauss-seidel, "
+           "southwell, progressive or bounces";
   return {};
 }
 

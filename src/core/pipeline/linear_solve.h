@@ -26,9 +26,13 @@ std::shared_ptr<const LinearKernel> computeLinearKernel(const Mesh& mesh, const 
 // b = E + rho K b over the nodes: weights as areas, no mesh (nothing traces rays through nodes).
 RadiositySystem linearSystem(const LinearKernel& kernel);
 
+// Whether `solver` solves the nodes' system: those that read a matrix and use it as the equations say
+// (direct, jacobi, gauss-seidel, southwell, progressive, bounces). The stochastic ones that draw a row's
+// entries as the chances of power moving from i to j rely on reciprocity, A_i F_ij = A_j F_ji, which a
+// collocation kernel lacks; those that trace rays solve for one value per element.
+bool linearBasisSolves(const std::string& solver);
 // Why `solver` (empty: chosen by size) or `method` cannot be used with the linear basis; empty when they
-// can. Solvers that trace rays through the elements solve for one value per element; the kernel is
-// integrated by quadrature, whatever other method is named.
+// can. The kernel is integrated by quadrature, whatever other method is named.
 std::string linearBasisProblem(const std::string& solver, const std::string& method);
 
 // Solves the nodes' system (solveRadiosity) and returns B as element averages, with the linear function

@@ -15,8 +15,9 @@ namespace rt {
 
 struct PipelineSettings {
   MeshOptions mesh;
-  // Constant: one unknown per element, F. Linear: one per node, the kernel of basis/linear_kernel.h (the
-  // method must be the default, whose quadrature integrates it; the solver must read a matrix).
+  // Constant: one unknown per element, F. Linear: one per node, the collocation kernel of
+  // basis/linear_kernel.h (the method must be the default, whose quadrature integrates it; the solver must
+  // read a matrix).
   Basis basis = Basis::Constant;
   std::string method = defaultFormFactorMethod();
   FormFactorOptions formFactors;
