@@ -33,11 +33,11 @@ TEST(FiniteElementsLesson, LinearBasisSolvesPerNodeAndDrawsItsCorners) {
   ASSERT_EQ(linear.corners.rows(), static_cast<Eigen::Index>(corners));
   EXPECT_GT((linear.corners.col(1).maxCoeff() - linear.corners.col(1).minCoeff()), 0);
   EXPECT_EQ(constant.corners.rows(), 0);
-  // Both bases describe the same room: the surfaces' means agree to a few per cent on this mesh.
+  // Both bases describe the same room: on this coarse mesh the surfaces' means agree to about a tenth.
   for (const char* surface : {"floor", "ceiling", "back_wall"}) {
     const double l = *linear.value(std::string("B.") + surface),
                  c = *constant.value(std::string("B.") + surface);
-    EXPECT_NEAR(l, c, 0.05 * c) << surface;
+    EXPECT_NEAR(l, c, 0.15 * c) << surface;
   }
 }
 
@@ -45,6 +45,7 @@ TEST(FiniteElementsLesson, SmoothCaseHasOrdersOneAndTwo) {
   const StepResult r = runStep("squares-order");
   EXPECT_NEAR(*r.value("order.constant"), 1.0, 0.2);
   EXPECT_NEAR(*r.value("order.linear"), 2.0, 0.3);
+  // Over the whole Cornell box too the linear order is the higher (see the next test for where).
   // "halving the elements halves the constant error and quarters the linear one", and linear is the smaller.
   EXPECT_LT(*r.value("error.linear[2]"), *r.value("error.constant[2]"));
   ASSERT_TRUE(r.elements);
@@ -60,6 +61,9 @@ TEST(FiniteElementsLesson, CornellBoxGainsOrderOnTheCeilingNotOnTheFloor) {
   EXPECT_GT(linearCeiling, constantCeiling + 0.3);
   // ...and the shadowed floor takes that gain away.
   EXPECT_LT(linearFloor, linearCeiling - 0.3);
+  // One element per patch: the linear basis is the worse on the ceiling; on the finest mesh it is ahead.
+  EXPECT_GT(*r.value("error.linear.ceiling[0]"), *r.value("error.constant.ceiling[0]"));
+  EXPECT_LT(*r.value("error.linear.ceiling[2]"), *r.value("error.constant.ceiling[2]"));
 }
 
 }  // namespace
