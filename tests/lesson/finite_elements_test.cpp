@@ -45,7 +45,6 @@ TEST(FiniteElementsLesson, SmoothCaseHasOrdersOneAndTwo) {
   const StepResult r = runStep("squares-order");
   EXPECT_NEAR(*r.value("order.constant"), 1.0, 0.2);
   EXPECT_NEAR(*r.value("order.linear"), 2.0, 0.3);
-  // Over the whole Cornell box too the linear order is the higher (see the next test for where).
   // "halving the elements halves the constant error and quarters the linear one", and linear is the smaller.
   EXPECT_LT(*r.value("error.linear[2]"), *r.value("error.constant[2]"));
   ASSERT_TRUE(r.elements);
