@@ -45,12 +45,12 @@ struct ScalarLegend {
 // The data the colourings read; only what the chosen colouring needs has to be filled.
 struct SceneViewData {
   RgbField B;              // Radiosity, Error (n x 3, W/m^2)
-  // Radiosity of a linear basis: its values at every element corner (LinearBasis::cornerValues, the mesh's
-  // corner order), drawn as they are and never smoothed; B then holds the element averages.
-  RgbField corners;
   RgbField unshot;         // UnshotPower: unshot radiosity (n x 3)
   RgbField reference;      // Error: the reference radiosity
   Eigen::VectorXd scalar;  // Scalar: one value per element
+  // Radiosity of a linear basis: its values at every element corner (LinearBasis::cornerValues, the mesh's
+  // corner order), drawn as they are and never smoothed; B then holds the element averages.
+  RgbField corners;
 };
 
 struct SceneViewOptions {
