@@ -334,7 +334,8 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   // A step of text only has nothing to draw: its text takes the whole width instead of an empty view.
   viewsPane_->setVisible(r.mesh && r.mesh->size() > 0);
   primaryView_->setMaterialView(r.materials);
-  primaryView_->setScene(r.mesh.get(), r.B, r.camera, newStep);
+  primaryView_->setScene(r.mesh.get(), r.B, r.camera, newStep,
+                         stepResult && stepResult->B.rows() == r.B.rows() ? stepResult->corners : RgbField());
   if (newStep && pendingCamera_ && r.mesh) primaryView_->applyCamera(*pendingCamera_);
   if (newStep) pendingCamera_.reset();
   primaryView_->setCaption(QString::fromStdString(compare_               ? paneCaption(r, r.compared.get())

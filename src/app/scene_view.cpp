@@ -112,13 +112,16 @@ void SceneView::setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera
   requestRender();
 }
 
-void SceneView::setScene(const Mesh* mesh, const RgbField& B, const Camera& camera, bool resetCamera) {
+void SceneView::setScene(const Mesh* mesh, const RgbField& B, const Camera& camera, bool resetCamera,
+                         const RgbField& corners) {
   data_.B = B;
+  data_.corners = corners;
   setMesh(mesh, camera, resetCamera);
 }
 
 void SceneView::setRadiosity(const RgbField& B) {
   data_.B = B;
+  data_.corners.resize(0, 3);  // a replayed iteration holds element values
   if (!mesh_ || B.rows() != static_cast<Eigen::Index>(mesh_->size())) return;
   repaint3d();
   requestRender();

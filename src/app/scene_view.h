@@ -37,7 +37,10 @@ class SceneView : public VtkWidget {
   ~SceneView() override;
 
   // A new mesh and its radiosity at once (the previous mesh may already be gone).
-  void setScene(const Mesh* mesh, const RgbField& B, const Camera& camera, bool resetCamera);
+  // `corners`: a linear basis's values at every element corner (viz::SceneViewData::corners), drawn as they
+  // are; empty for a constant basis.
+  void setScene(const Mesh* mesh, const RgbField& B, const Camera& camera, bool resetCamera,
+                const RgbField& corners = RgbField());
   // A new mesh: rebuilds the geometry. `resetCamera` places the camera at `camera`.
   void setMesh(const Mesh* mesh, const Camera& camera, bool resetCamera);
   // New colours for the same mesh (an iteration of the replay, a re-solve).

@@ -58,7 +58,8 @@ void writeRadiosityCsv(const Scene& scene, const Mesh& mesh, const RgbField& B, 
   if (!out) throw InputError({path}, "error while writing the radiosity file");
 }
 
-void writeImage(const SolveArguments& a, const Scene& scene, const Mesh& mesh, const RgbField& B) {
+void writeImage(const SolveArguments& a, const Scene& scene, const Mesh& mesh, const RgbField& B,
+                const RgbField& corners = {}) {
 #ifdef RT_HAVE_VIZ
   viz::ImageOptions image;
   image.width = a.width;
@@ -67,7 +68,7 @@ void writeImage(const SolveArguments& a, const Scene& scene, const Mesh& mesh, c
   image.toneMap = viz::toneMapFromName(a.toneMap);
   image.smooth = a.smooth;
   image.showEdges = a.edges;
-  viz::renderRadiosityImage(mesh, B, scene.cameraOrDefault(), image, a.image);
+  viz::renderRadiosityImage(mesh, B, corners, scene.cameraOrDefault(), image, a.image);
   std::cerr << "image written to " << a.image << "\n";
 #else
   throw std::runtime_error("--image needs the visualisation library (configure with RT_BUILD_VIZ=ON)");
@@ -103,13 +104,16 @@ void runRefined(const SolveArguments& a, const Scene& scene) {
 }
 
 // The outputs of both ways of solving.
-void writeOutputs(const SolveArguments& a, const Scene& scene, const Mesh& mesh, const RgbField& B) {
+// `corners`: a linear basis's values at the element corners (empty for a constant basis): the image draws
+// them as they are; the CSV holds the element averages.
+void writeOutputs(const SolveArguments& a, const Scene& scene, const Mesh& mesh, const RgbField& B,
+                  const RgbField& corners = {}) {
   if (!a.ply.empty()) writePly(mesh, B, a.ply);
   if (!a.output.empty()) {
     writeRadiosityCsv(scene, mesh, B, a.output);
     std::cerr << "radiosity written to " << a.output << "\n";
   }
-  if (!a.image.empty()) writeImage(a, scene, mesh, B);
+  if (!a.image.empty()) writeImage(a, scene, mesh, B, corners);
 }
 
 // --no-matrix: the shooting solvers ask for the shooter's row of F when it shoots; nothing n x n is stored.
@@ -138,12 +142,17 @@ void run(const SolveArguments& a) {
   Scene scene = loadSceneReportingWarnings(a.scene);
   a.camera.applyTo(scene);
   requireLight(scene);
-  if (!a.refineMode.empty()) return runRefined(a, scene);
+  if (!a.refineMode.empty()) {
+    if (a.s.basis != "constant") throw CLI::ValidationError("--basis", "--mesh refines a constant basis");
+    return runRefined(a, scene);
+  }
   const std::string solverName = !a.s.solver.empty() ? a.s.solver
                                  : a.noMatrix        ? std::string("southwell")
                                                      : std::string();
   const std::string formFactors = a.noMatrix && !a.formFactorsGiven ? std::string("hemicube") : a.s.method;
   if (!solverName.empty()) makeSolver(solverName);  // an unknown name fails before the expensive part
+  if (a.noMatrix && a.s.basis != "constant")
+    throw CLI::ValidationError("--basis", "--no-matrix shoots rows of F: a constant basis only");
   if (a.noMatrix)
     if (const char* problem = noMatrixProblem(solverName, formFactors)) throw CLI::ValidationError(problem);
   const Mesh mesh = buildMesh(scene, a.s.mesh.optionsFor(scene));
@@ -182,7 +191,7 @@ void run(const SolveArguments& a) {
   settings.solver = solverName;
   settings.automatic = solverName.empty() && !a.formFactorsGiven;
   const SolveOutcome outcome = solveMesh(mesh, settings, pipeline);
-  writeOutputs(a, scene, mesh, outcome.B);
+  writeOutputs(a, scene, mesh, outcome.B, outcome.corners);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include "cli/setting_options.h"
 #include "core/formfactor/formfactor_method.h"
+#include "core/pipeline/linear_solve.h"
 
 namespace rt::cli {
 
@@ -12,6 +13,7 @@ void SolutionArguments::add(CLI::App& command) {
   if (method.empty()) method = defaultFormFactorMethod();
   addSettingOption(command, "method", method)->default_str(defaultFormFactorMethod());
   addSettingOption(command, "solver", solver)->default_str("direct for small scenes, gauss-seidel otherwise");
+  addSettingOption(command, "basis", basis);
   addSettingOption(command, "tolerance", tolerance);
   addSettingOption(command, "iterations", maxIterations);
   addSettingOption(command, "seed", seed);
@@ -82,11 +84,32 @@ std::function<void(const IterationRecord&)> observerFor(const SolutionArguments&
                    : std::function<void(const IterationRecord&)>();
 }
 
+// The linear basis: the nodes' kernel in place of F, a solver that reads a matrix.
+SolveOutcome solveLinear(const Mesh& mesh, const SolutionArguments& a, const std::string& method,
+                         Pipeline& pipeline) {
+  if (const std::string problem = linearBasisProblem(a.solver, method); !problem.empty())
+    throw CLI::ValidationError("--basis", problem);
+  ProgressLine progress(!a.verbose);
+  const auto kernel = pipeline.linearKernel(mesh, a.formFactorOptions(), progress);
+  progress.finish();
+  reportFormFactorStats(std::cerr, "quadrature, linear basis", kernel->stats);
+  SolveOutcome outcome =
+      solveLinearBasis(*kernel, a.solver, a.solverOptions(), false, progress, observerFor(a));
+  progress.finish();
+  std::cerr << "solve (" << outcome.solverName << ", linear basis, " << kernel->basis.size()
+            << " nodes): " << toString(outcome.status) << " after " << outcome.iterations << " "
+            << (outcome.iterations == 1 ? "iteration" : "iterations") << ", relative residual "
+            << outcome.residual << "\n";
+  checkOutcome(outcome, a);
+  return outcome;
+}
+
 }  // namespace
 
 SolveOutcome solveMesh(const Mesh& mesh, const SolutionArguments& a, Pipeline& pipeline,
                        std::shared_ptr<const CachedFormFactors>* formFactors) {
   const std::string method = a.method.empty() ? defaultFormFactorMethod() : a.method;
+  if (a.basis == "linear") return solveLinear(mesh, a, method, pipeline);
   const std::string name = solverFor(mesh, a);
   ProgressLine progress(!a.verbose);
   if (!solverNeedsMatrix(name)) {

@@ -16,6 +16,7 @@ namespace rt::cli {
 struct SolutionArguments {
   std::string solver;  // empty: chosen by size
   std::string method;  // form-factor method; empty: the table's default (one that handles occluders)
+  std::string basis = "constant";  // constant or linear (core/basis/linear_basis.h)
   double tolerance = 1e-6;
   int maxIterations = 0;  // automatic
   std::uint64_t seed = 1;

@@ -78,6 +78,9 @@ const std::vector<Topic>& topicTable() {
        "the direct part from a small lamp plus the indirect part gathered from the first pass, the radiosity "
        "and the radiance",
        "two-solutions,local-vs-global", generateTwoPass},
+      {"linear-element", "Evaluating a linear element",
+       "a rectangle's bilinear shape functions and radiosity at a point, its average and one corner's weight",
+       "finite-elements", generateLinearElement},
   };
   return table;
 }

@@ -28,5 +28,6 @@ std::optional<Exercise> generateReflectionEquation(Draw& draw);
 std::optional<Exercise> generateHierarchicalOracle(Draw& draw);
 std::optional<Exercise> generateRandomWalk(Draw& draw);
 std::optional<Exercise> generateTwoPass(Draw& draw);
+std::optional<Exercise> generateLinearElement(Draw& draw);
 
 }  // namespace rt::homework

@@ -8,8 +8,9 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 38> kViews{{
+constexpr std::array<std::pair<View, const char*>, 39> kViews{{
     {View::Scene, "scene"},
+    {View::BasisError, "basis-error"},
     {View::FormFactor, "formfactor"},
     {View::Hemicube, "hemicube"},
     {View::Nusselt, "nusselt"},
@@ -151,6 +152,13 @@ const std::vector<StageInfo>& stageTable() {
        "at each of `sweep` rays per iteration and four seeds from `seed`: RMS error against the reference, "
        "rays, time, and the log-log slope of error against rays",
        {V::Scene, V::SamplingError}},
+      {Stage::Elements,
+       "elements",
+       "the reference B with the linear `basis` on the step's mesh (`subdivide`); for each of "
+       "`subdivisions`, B with the constant and the linear basis (`solver`) and its relative L1 error "
+       "against the reference over the scene and over each `highlight`ed surface; the fitted orders of the "
+       "error in the element size",
+       {V::Scene, V::BasisError}},
   };
   return table;
 }

@@ -38,6 +38,7 @@ enum class Stage {
   RayTrace,    // Whitted ray tracing: one pixel's ray tree, shadows, the epsilon, the cost, against radiosity
   Reflection,  // a BRDF's lobe, albedo and Phong's exponent; with a scene, Phong local light beside radiosity
   Sampling,    // plain Monte Carlo, control variate and quasi-Monte Carlo lines: error against rays
+  Elements,    // constant against linear elements: error against the mesh, fitted convergence orders
 };
 
 // The figures a step can ask for; the names match the viz layer's views.
@@ -80,6 +81,7 @@ enum class View {
   SamplingError,  // sampling stage: error against rays per variance reduction, log-log, with fitted slopes
   Discontinuity,  // refine stage: the mesh with its critical lines, umbra/penumbra boundaries apart
   Glossy,         // raytrace stage: the mirrors ideal beside the same mirrors glossy (gloss, pixel-samples)
+  BasisError,     // elements stage: error against elements per basis, log-log, with the fitted orders
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.
@@ -134,6 +136,7 @@ struct StepParameters {
   std::vector<int> subdivisions;    // compare: several subdivision levels
   std::vector<int> sweep;           // benchmark: resolutions (hemicube) or samples (rays) to try
   std::string solver = "gauss-seidel";
+  std::string basis = "constant";    // constant or linear (core/basis/linear_basis.h)
   std::vector<std::string> solvers;  // compare: several solvers
   std::optional<int> iterations;     // maximum iterations
   std::optional<double> tolerance;

@@ -377,6 +377,10 @@ class Parser {
         step.camera.path.empty())
       fail(lineOf("views"),
            "the walkthrough view needs a 'camera-path' (two or more of the scene's cameras)");
+    if (p.basis != "constant" && step.stage != Stage::Solve)
+      fail(lineOf("basis"), "'basis: " + p.basis +
+                                "' is solved by solve steps only (an elements step compares both "
+                                "bases itself; the other stages solve one value per element)");
     if (step.stage == Stage::Compare && p.solvers.size() + p.methods.size() + p.subdivisions.size() < 2)
       fail(lineOf("stage"), "a compare step needs at least two 'solvers', 'methods' or 'subdivisions'");
     if (step.stage == Stage::Benchmark) {

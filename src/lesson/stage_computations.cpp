@@ -140,6 +140,7 @@ void computeMatrix(StageContext& c) {
 
 void computeSolve(StageContext& c) {
   StepResult& r = c.result;
+  if (c.parameters.basis == "linear") return computeSolveLinear(c);
   if (!solverNeedsMatrix(c.parameters.solver)) {
     // A solver that traces its own rays: no form factor is computed, the result holds no F.
     const RadiositySystem system = RadiositySystem::fromGeometry(r.mesh);

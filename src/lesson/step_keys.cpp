@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "core/basis/linear_basis.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/formfactor/line_sampling.h"
 #include "homework/topic_table.h"
@@ -49,10 +50,11 @@ std::vector<StepKey> makeTable() {
   const std::vector<Stage> computeF{Stage::FormFactors, Stage::Hemicube, Stage::Nusselt,    Stage::Rays,
                                     Stage::Exact,       Stage::Matrix,   Stage::Solve,      Stage::Compare,
                                     Stage::Bounces,     Stage::Local,    Stage::Benchmark,  Stage::PathTrace,
-                                    Stage::Scaling,     Stage::RayTrace, Stage::Reflection, Stage::Sampling};
+                                    Stage::Scaling,     Stage::RayTrace, Stage::Reflection, Stage::Sampling,
+                                    Stage::Elements};
   const std::vector<Stage> solving{Stage::Solve,      Stage::Compare,   Stage::Matrix,  Stage::Local,
                                    Stage::Exact,      Stage::PathTrace, Stage::Scaling, Stage::RayTrace,
-                                   Stage::Reflection, Stage::Sampling};
+                                   Stage::Reflection, Stage::Sampling,  Stage::Elements};
   const std::vector<Stage> seen{Stage::FormFactors, Stage::Hemicube, Stage::Nusselt, Stage::Rays,
                                 Stage::Exact};
   std::vector<StepKey> t;
@@ -169,7 +171,7 @@ std::vector<StepKey> makeTable() {
        .max = 64,
        .label = "Subdivisions",
        .tooltip = "Several subdivision levels to compare (scaling: the meshes whose cost is measured).",
-       .stages = {Stage::Compare, Stage::Scaling},
+       .stages = {Stage::Compare, Stage::Scaling, Stage::Elements},
        .slot = &P::subdivisions});
   add({.name = "sweep",
        .type = KeyType::Ints,
@@ -191,6 +193,19 @@ std::vector<StepKey> makeTable() {
        .control = true,
        .stages = solving,
        .slot = &P::solver});
+  add({.name = "basis",
+       .type = KeyType::Choice,
+       .choices = &basisNames,
+       .defaultText = "constant",
+       .label = "Basis",
+       .tooltip =
+           "What B is between the nodes: constant, one value per element (B_i = E_i + rho_i sum_j F_ij "
+           "B_j); linear, one value per vertex of a patch, interpolated across each element and drawn "
+           "as it is (collocation at the vertices, kernel integrals by quadrature; solvers direct, jacobi, "
+           "gauss-seidel, southwell, progressive, bounces).",
+       .control = true,
+       .stages = {Stage::Solve},
+       .slot = &P::basis});
   add({.name = "solvers",
        .type = KeyType::Choices,
        .choices = &knownSolvers,

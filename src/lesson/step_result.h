@@ -15,6 +15,7 @@
 #include "core/scene.h"
 #include "core/solvers/sampling_study.h"
 #include "homework/exercise.h"
+#include "lesson/elements_data.h"
 #include "lesson/radiometry_data.h"
 #include "lesson/raytrace_data.h"
 #include "lesson/reflection_data.h"
@@ -78,6 +79,12 @@ struct StepResult {
 
   // Pathtrace stage: the images, the noise sweep and the times.
   std::shared_ptr<const TracedPictures> pictures;
+
+  // A linear basis (`basis: linear`, the elements stage's reference): B at every element corner
+  // (LinearBasis::cornerValues), drawn as it is; B above holds the element averages.
+  RgbField corners;
+  // Elements stage: both bases' error against the reference on each mesh, and the fitted orders.
+  std::shared_ptr<const ElementsData> elements;
 
   // Scaling stage: the dense method's cost and the clustering and local-lines solvers' against n and rays.
   std::shared_ptr<const ScalingData> scaling;

@@ -234,6 +234,9 @@ StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& pro
     case Stage::Sampling:
       detail::computeSampling(c);
       break;
+    case Stage::Elements:
+      detail::computeElements(c);
+      break;
   }
   if (result.B.rows() == static_cast<Eigen::Index>(result.mesh.size()))
     detail::addSurfaceValues(result, "B", result.B);

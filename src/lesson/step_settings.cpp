@@ -68,6 +68,7 @@ PipelineSettings settingsFor(const StepParameters& p, const std::string& method)
   s.method = method;
   s.formFactors = formFactorOptionsFor(p, method);
   s.solver = p.solver;
+  s.basis = parseBasis(p.basis).value_or(Basis::Constant);
   s.solverOptions = solverOptionsFor(p);
   s.reflectance = p.reflectance;
   s.lightScale = p.lightScale;

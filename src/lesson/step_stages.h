@@ -75,7 +75,9 @@ Rgb classicAmbient(const Mesh& mesh, const RgbField& direct, double chosen);
 // Adds `polygon` to a scene a stage builds for itself, as a patch of surface `surface` (normal and area from
 // the polygon).
 void addScenePatch(Scene& scene, const Polygon& polygon, int surface);
-void computeSampling(StageContext& c);  // stage_sampling.cpp
+void computeSampling(StageContext& c);     // stage_sampling.cpp
+void computeSolveLinear(StageContext& c);  // stage_elements.cpp: a solve step with `basis: linear`
+void computeElements(StageContext& c);     // stage_elements.cpp
 // Rays stage with a `reference`: the `from` element's local lines per surface against the reference's F
 // (lines.<surface>, lines-se.<surface>, lines.<surface>.reference, lines-z.<surface>, lines-z.max, lines).
 void addLocalLineValues(StageContext& c);  // stage_rays.cpp

@@ -12,6 +12,7 @@
 #include "viz/exact_visibility.h"
 #include "viz/hemicube_view.h"
 #include "viz/hits_chart.h"
+#include "viz/lesson_elements_figures.h"
 #include "viz/lesson_radiometry_figures.h"
 #include "viz/lesson_raytrace_figures.h"
 #include "viz/lesson_reflection_figures.h"
@@ -87,11 +88,15 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
         o.caption = "Direct light + ambient term";
       } else if (r.B.rows() > 0) {
         data.B = r.B;
+        // A linear basis is drawn as it is, corner by corner.
+        if (step.stage != lesson::Stage::Bounces) data.corners = r.corners;
         if (step.stage == lesson::Stage::Bounces) {
           const std::size_t bounces = r.bounceTerms.size() - 1;
           o.caption = "Radiosity after " + std::to_string(bounces) + (bounces == 1 ? " bounce" : " bounces");
         } else if (step.stage == lesson::Stage::Refine)
           o.caption = "Radiosity on the " + step.parameters.refine + " mesh";
+        else if (r.corners.rows() > 0)
+          o.caption = "Radiosity, linear basis (" + std::to_string(r.mesh.size()) + " elements)";
         else
           o.caption = r.runs.empty() ? "Radiosity" : "Radiosity (" + r.runs.back().label + ")";
       } else {
@@ -369,6 +374,8 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
              " mesh with its critical lines: " + std::to_string(counts.extremal) +
              " umbra and penumbra boundaries, " + std::to_string(counts.interior) + " lines inside penumbrae";
     }
+    case View::BasisError:
+      return detail::renderBasisErrorView(r, s, path);
   }
   return "";
 }

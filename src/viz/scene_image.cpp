@@ -6,8 +6,14 @@ namespace rt::viz {
 
 void renderRadiosityImage(const Mesh& mesh, const RgbField& B, const Camera& camera,
                           const ImageOptions& options, const std::string& pngPath) {
+  renderRadiosityImage(mesh, B, RgbField(), camera, options, pngPath);
+}
+
+void renderRadiosityImage(const Mesh& mesh, const RgbField& B, const RgbField& corners, const Camera& camera,
+                          const ImageOptions& options, const std::string& pngPath) {
   SceneViewData data;
   data.B = B;
+  data.corners = corners;
   SceneViewOptions view;
   view.colouring = SceneColouring::Radiosity;
   view.image = options;

@@ -26,5 +26,8 @@ struct ImageOptions {
 // from the camera and writes a PNG. Throws std::runtime_error naming the path if it cannot be written.
 void renderRadiosityImage(const Mesh& mesh, const RgbField& B, const Camera& camera,
                           const ImageOptions& options, const std::string& pngPath);
+// The same for a linear basis: `corners` its values at every element corner (SceneViewData::corners).
+void renderRadiosityImage(const Mesh& mesh, const RgbField& B, const RgbField& corners, const Camera& camera,
+                          const ImageOptions& options, const std::string& pngPath);
 
 }  // namespace rt::viz

@@ -159,6 +159,16 @@ ScenePaint paintScene(const Mesh& mesh, const SceneViewData& data, const SceneVi
     case SceneColouring::Radiosity: {
       requireRows(data.B, mesh, "the radiosity");
       const DisplaySettings display = displaySettingsFor(options.image, data.B, &mesh.emission);
+      if (data.corners.rows() > 0) {
+        fromElements(data.B, [](const Rgb&) { return Rgb8{}; });  // the corner layout
+        if (data.corners.rows() != static_cast<Eigen::Index>(paint.colours.size()))
+          throw std::invalid_argument("the corner radiosity has " + std::to_string(data.corners.rows()) +
+                                      " rows for " + std::to_string(paint.colours.size()) + " corners");
+        for (Eigen::Index k = 0; k < data.corners.rows(); ++k)
+          paint.colours[static_cast<std::size_t>(k)] =
+              displayColour(Rgb(data.corners.row(k).transpose().array()), display);
+        return paint;
+      }
       fromCorners(data.B, smooth, [&](const Rgb& v) { return displayColour(v, display); });
       return paint;
     }

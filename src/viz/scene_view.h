@@ -48,6 +48,9 @@ struct SceneViewData {
   RgbField unshot;         // UnshotPower: unshot radiosity (n x 3)
   RgbField reference;      // Error: the reference radiosity
   Eigen::VectorXd scalar;  // Scalar: one value per element
+  // Radiosity of a linear basis: its values at every element corner (LinearBasis::cornerValues, the mesh's
+  // corner order), drawn as they are and never smoothed; B then holds the element averages.
+  RgbField corners;
 };
 
 struct SceneViewOptions {

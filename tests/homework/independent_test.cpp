@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "core/assembly.h"
+#include "core/basis/linear_basis.h"
 #include "core/brdf.h"
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/hemicube.h"
@@ -346,6 +347,32 @@ TEST(HomeworkIndependent, IrradianceAgreesWithTheExactSolidAngle) {
     EXPECT_AGREES(e, "I", intensity, 0.01);
     EXPECT_AGREES(e, "P", intensity * omega, 0.6);
     EXPECT_AGREES(e, "H", intensity * omega / (side * side), 0.6);
+  });
+}
+
+TEST(HomeworkIndependent, LinearElementAgreesWithTheCoresBasis) {
+  forEachVariant("linear-element", [](const Exercise& e) {
+    const double a = e.given.at("a"), b = e.given.at("b");
+    Mesh mesh;
+    mesh.vertices = {{0, 0, 0}, {a, 0, 0}, {a, b, 0}, {0, b, 0}};
+    Element element;
+    element.vertices = {0, 1, 2, 3};
+    element.patch = 0;
+    element.normal = Vec3(0, 0, 1);
+    element.centroid = Vec3(a / 2, b / 2, 0);
+    element.area = a * b;
+    mesh.elements.push_back(element);
+    const LinearBasis basis = buildLinearBasis(mesh);
+    RgbField nodal(4, 3);
+    for (int k = 0; k < 4; ++k) nodal.row(k).setConstant(e.given.at("b" + std::to_string(k + 1)));
+    const double u = e.given.at("x") / a, v = e.given.at("y") / b;
+    const int corner = static_cast<int>(e.given.at("asked")) - 1;
+    double phi[4];
+    ElementMap(mesh, 0).shape(u, v, phi);
+    EXPECT_AGREES(e, "phi", phi[corner], 0.01);
+    EXPECT_AGREES(e, "B", basis.valueAt(mesh, nodal, 0, u, v)[0], 0.01);
+    EXPECT_AGREES(e, "average", basis.elementAverages(nodal)(0, 0), 0.01);
+    EXPECT_AGREES(e, "weight", basis.cornerWeight[static_cast<std::size_t>(corner)], 0.01);
   });
 }
 

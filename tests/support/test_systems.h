@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/basis/linear_kernel.h"
 #include "core/mesh.h"
 #include "core/solvers/radiosity_system.h"
 #include "core/solvers/solver.h"
@@ -116,6 +117,25 @@ inline OwnedSystem colouredCube() {
 }
 
 // The coloured cube without its -y face: rows of the faces that saw it sum to 1 - F; light escapes.
+// The coloured cube with a linear basis (core/basis/linear_kernel.h): four nodes per face, 24 unknowns, the
+// nodes' kernel K in place of F and their weights as areas. No mesh: nothing traces rays through nodes.
+inline OwnedSystem colouredCubeLinear() {
+  const OwnedSystem cube = colouredCube();
+  const LinearBasis basis = buildLinearBasis(*cube.mesh);
+  FormFactorStats stats;
+  OwnedSystem s;
+  s.set(linearKernelMatrix(*cube.mesh, basis, {}, noProgress(), stats));
+  const auto m = static_cast<Eigen::Index>(basis.size());
+  s.system.areas = basis.weights;
+  s.system.reflectance.resize(m, 3);
+  s.system.emission.resize(m, 3);
+  for (Eigen::Index v = 0; v < m; ++v) {
+    s.system.reflectance.row(v) = cube.system.reflectance.row(basis.nodePatch[static_cast<std::size_t>(v)]);
+    s.system.emission.row(v) = cube.system.emission.row(basis.nodePatch[static_cast<std::size_t>(v)]);
+  }
+  return s;
+}
+
 inline OwnedSystem openBox() {
   OwnedSystem closed = colouredCube();
   const int keep[5] = {0, 1, 3, 4, 5};

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/io/scene_loader.h"
+#include "core/pipeline/linear_solve.h"
 #include "core/pipeline/scene_overrides.h"
 
 namespace rt {
@@ -16,6 +17,18 @@ std::shared_ptr<const CachedFormFactors> Pipeline::formFactors(const Mesh& mesh,
                                                                Progress& progress, bool* reused) {
   progress.report(0.0, "form factors (" + method + ")");
   return cache_.get(method, mesh, options, progress, reused);
+}
+
+std::shared_ptr<const LinearKernel> Pipeline::linearKernel(const Mesh& mesh, const FormFactorOptions& options,
+                                                           Progress& progress, bool* reused) {
+  const std::uint64_t key = mesh.geometryHash();
+  const bool same = linear_ && key == linearKey_ && options.tolerance == linearTolerance_;
+  if (reused) *reused = same;
+  if (same) return linear_;
+  linear_ = computeLinearKernel(mesh, options, progress);
+  linearKey_ = key;
+  linearTolerance_ = options.tolerance;
+  return linear_;
 }
 
 SolveOutcome solveRadiosity(const RadiositySystem& system, const std::string& requested,
@@ -76,6 +89,23 @@ PipelineOutput Pipeline::run(const Scene& input, const PipelineSettings& setting
   auto mesh = std::make_shared<Mesh>(buildMesh(*scene, settings.mesh));
   out.mesh = mesh;
   if (progress.cancelled()) throw Cancelled();
+  if (settings.basis == Basis::Linear) {
+    std::string problem;
+    try {
+      problem = linearBasisProblem(settings.solver, settings.method);
+    } catch (const std::invalid_argument& e) {
+      out.note = std::string(e.what()) + ": showing direct light plus an ambient estimate";
+      out.solve.B = ambientEstimate(*mesh);
+      return out;
+    }
+    if (!problem.empty()) throw InputError({}, problem);
+    out.linear = linearKernel(*mesh, settings.formFactors, progress, &out.formFactorsReused);
+    out.formFactorStats = out.linear->stats;
+    out.formFactorMethod = settings.method;
+    out.solve = solveLinearBasis(*out.linear, settings.solver, settings.solverOptions, settings.recordHistory,
+                                 progress);
+    return out;
+  }
   const std::string solverName = settings.solver.empty() ? chooseSolver(mesh->size()) : settings.solver;
   bool needsMatrix = true;
   try {

@@ -4,6 +4,7 @@
 // it; stages that need more (bounces, benchmarks, refinement) call its pieces.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -47,7 +48,12 @@ struct SolveOutcome {
   long links = 0;
   long nodes = 0;
   long long memoryBytes = 0;
+  // A linear basis: the solution per node and at every element corner (LinearBasis::cornerValues), the
+  // function itself, which views draw as it is; B above holds its element averages. Empty for constant.
+  RgbField nodal, corners;
 };
+
+struct LinearKernel;  // linear_solve.h
 
 struct PipelineOutput {
   std::shared_ptr<const Scene> scene;  // with the overrides applied
@@ -57,6 +63,7 @@ struct PipelineOutput {
   std::string formFactorMethod;  // the method that computed F (empty without F)
   FormFactorStats formFactorStats;
   bool formFactorsReused = false;
+  std::shared_ptr<const LinearKernel> linear;  // the linear basis's nodes and kernel; null for constant
   SolveOutcome solve;
   std::string note;  // why the result is an approximation, when it is one
 };
@@ -75,11 +82,19 @@ class Pipeline {
                                                        const FormFactorOptions& options, Progress& progress,
                                                        bool* reused = nullptr);
 
+  // The linear basis's kernel for this mesh, kept for the last geometry and options (a material change
+  // reuses it). Throws InputError for a mesh the basis cannot use, Cancelled.
+  std::shared_ptr<const LinearKernel> linearKernel(const Mesh& mesh, const FormFactorOptions& options,
+                                                   Progress& progress, bool* reused = nullptr);
+
   // How many times F was actually computed (the rest came from the cache).
   int formFactorComputations() const { return static_cast<int>(cache_.misses()); }
 
  private:
   FormFactorCache cache_;
+  std::shared_ptr<const LinearKernel> linear_;
+  std::uint64_t linearKey_ = 0;
+  double linearTolerance_ = -1;
 };
 
 // Solves the system by `solverName` (empty: chooseSolver(n)); `observer`, when given, sees every iteration

@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 
+#include "core/basis/linear_basis.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/mesh.h"
 #include "core/solvers/solver.h"
@@ -14,6 +15,10 @@ namespace rt {
 
 struct PipelineSettings {
   MeshOptions mesh;
+  // Constant: one unknown per element, F. Linear: one per node, the collocation kernel of
+  // basis/linear_kernel.h (the method must be the default, whose quadrature integrates it; the solver must
+  // read a matrix).
+  Basis basis = Basis::Constant;
   std::string method = defaultFormFactorMethod();
   FormFactorOptions formFactors;
   std::string solver;  // empty: chooseSolver(n)
