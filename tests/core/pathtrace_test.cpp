@@ -177,24 +177,31 @@ TEST(PathTracer, StandardErrorFallsLikeOneOverSqrtSamples) {
 
 // The benchmark scene is the published box closed by a front wall: from anywhere inside, every ray meets the
 // front of a polygon (nothing escapes, no back face shows through a gap).
+// The closed box and its variants with the light hung below an uncut ceiling (0.1 mm and 1 cm).
 TEST(PathTracer, ClosedCornellBoxLetsNoRayEscape) {
-  const Scene scene = loadScene(test::sourcePath("scenes/cornell-box-closed.json"));
-  const TracingScene tracing(scene);
-  PairRandom random(11, 0, 0);
-  int escaped = 0, backFaces = 0, rays = 0;
-  for (int k = 0; k < 20000; ++k) {
-    // Points in the air of the room, above the tall block so that none lies inside a block.
-    const Vec3 origin(20 + 510 * random.uniform(), 340 + 200 * random.uniform(), 20 + 520 * random.uniform());
-    const Vec3 direction = cosineDirection(Vec3::UnitY(), random.uniform(), random.uniform()) *
-                           (random.uniform() < 0.5 ? 1.0 : -1.0);
-    const RayHit hit = tracing.rays().firstHit(origin, direction.normalized(), -1);
-    ++rays;
-    escaped += hit.element < 0;
-    backFaces += hit.element >= 0 && !hit.frontSide;
+  for (const char* file : {"cornell-box-closed.json", "cornell-box-closed-light-0.1mm.json",
+                           "cornell-box-closed-light-1cm.json"}) {
+    SCOPED_TRACE(file);
+    const Scene scene = loadScene(test::sourcePath(std::string("scenes/") + file));
+    const TracingScene tracing(scene);
+    PairRandom random(11, 0, 0);
+    int escaped = 0, backFaces = 0, rays = 0;
+    for (int k = 0; k < 20000; ++k) {
+      // Points in the air of the room, above the tall block so that none lies inside a block, and below the
+      // lowest light, whose back only the ceiling sees.
+      const Vec3 origin(20 + 510 * random.uniform(), 340 + 190 * random.uniform(),
+                        20 + 520 * random.uniform());
+      const Vec3 direction = cosineDirection(Vec3::UnitY(), random.uniform(), random.uniform()) *
+                             (random.uniform() < 0.5 ? 1.0 : -1.0);
+      const RayHit hit = tracing.rays().firstHit(origin, direction.normalized(), -1);
+      ++rays;
+      escaped += hit.element < 0;
+      backFaces += hit.element >= 0 && !hit.frontSide;
+    }
+    EXPECT_EQ(escaped, 0);
+    EXPECT_EQ(backFaces, 0);
+    EXPECT_EQ(rays, 20000);
   }
-  EXPECT_EQ(escaped, 0);
-  EXPECT_EQ(backFaces, 0);
-  EXPECT_EQ(rays, 20000);
 }
 
 TEST(PathTracer, SameSeedSameAnswer) {
