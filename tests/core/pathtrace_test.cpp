@@ -41,6 +41,21 @@ TEST(PathTracer, FurnaceGivesEOverOneMinusRho) {
   }
 }
 
+// The furnace's H = 2 by bounces: every face emits 1 and the faces close the cube, so the direct light is 1,
+// the first bounce rho = 0.5 and the rest 0.5.
+TEST(PathTracer, FurnaceBreakdownByBounces) {
+  const Scene scene = loadScene(test::sourcePath("scenes/furnace-cube.json"));
+  const PathTracer tracer(scene);
+  PathTraceOptions options;
+  options.samples = 4096;
+  for (const PointEstimate& e : tracer.estimate(cubePoints(), options))
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_LE(std::abs(e.HDirect(c) - 1.0), 4 * e.HDirectError(c) + 1e-12);
+      EXPECT_LE(std::abs(e.HBounce(c) - 0.5), 4 * e.HBounceError(c));
+      EXPECT_LE(std::abs(e.H(c) - e.HDirect(c) - e.HBounce(c) - 0.5), 4 * e.HError(c));
+    }
+}
+
 TEST(PathTracer, FurnaceImageIsUniform) {
   const Scene scene = loadScene(test::sourcePath("scenes/furnace-cube.json"));
   const PathTracer tracer(scene);
