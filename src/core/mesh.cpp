@@ -335,7 +335,7 @@ std::vector<MeshCut> meshCuts(const Scene& scene, const MeshOptions& options) {
       auto it =
           std::find_if(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
                        [&](const MeshCut& c) { return c.surface == surface && c.overlap == s.overlap; });
-      if (it == out.end()) it = out.insert(out.end(), {static_cast<int>(p), surface, s.overlap, 0, 0});
+      if (it == out.end()) it = out.insert(out.end(), MeshCut{static_cast<int>(p), surface, s.overlap, 0, 0});
       it->gap = std::max(it->gap, s.gap);
       ++it->segments;
     }
