@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "cli/setting_options.h"
 #include "core/camera_path.h"
 #include "core/io/scene_loader.h"
 #include "core/time_left.h"
@@ -24,7 +25,8 @@ void MeshArguments::add(CLI::App& command) {
                        "With --max-edge or --subdivide: first cut every patch along the lines where other "
                        "surfaces stand on it, "
                        "as the default mesh does, so that no element straddles a block's footprint");
-  none->excludes(count)->excludes(edge)->excludes(contacts);
+  auto* gap = addSettingOption(command, "overlap-gap", overlapGap);
+  none->excludes(count)->excludes(edge)->excludes(contacts)->excludes(gap);
   count->excludes(edge);
 }
 
@@ -38,22 +40,35 @@ MeshOptions MeshArguments::options() const {
     o.maxEdge = maxEdge;
   }
   o.splitAtContacts = splitAtContacts && o.mode != MeshOptions::Mode::None;
+  o.overlapGap = overlapGap;
   return o;
 }
 
+namespace {
+
+// Which cuts the mesh makes, one line each on stderr, so that a reader sees which way a scene was meshed.
+MeshOptions reportingCuts(const Scene& scene, const MeshOptions& options) {
+  for (const std::string& line : describeMeshCuts(scene, meshCuts(scene, options)))
+    std::cerr << "mesh: cut " << line << "\n";
+  return options;
+}
+
+}  // namespace
+
 MeshOptions MeshArguments::optionsFor(const Scene& scene) const {
-  if (noSubdivide || subdivide > 0 || maxEdge > 0) return options();
-  const MeshOptions chosen = defaultMeshOptions(scene);
+  if (noSubdivide || subdivide > 0 || maxEdge > 0) return reportingCuts(scene, options());
+  MeshOptions chosen = defaultMeshOptions(scene);
+  chosen.overlapGap = overlapGap;
   if (chosen.mode != MeshOptions::Mode::MaxEdge) return chosen;
   char line[256];
   std::snprintf(
       line, sizeof line,
       "mesh: no mesh option given: --max-edge %g (%s) for about %.0f elements, cut where surfaces stand "
-      "on others "
+      "on others or lie just in front of them "
       "(--no-subdivide: one element per polygon; --max-edge or --subdivide: your own)",
       chosen.maxEdge, scene.unit.c_str(), estimatedElementCount(scene, chosen));
   std::cerr << line << "\n";
-  return chosen;
+  return reportingCuts(scene, chosen);
 }
 
 void CameraArgument::add(CLI::App& command) {

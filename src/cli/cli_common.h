@@ -31,11 +31,13 @@ struct MeshArguments {
   bool noSubdivide = false;
   int subdivide = 0;
   double maxEdge = 0.0;
-  bool splitAtContacts = false;  // with subdivide or maxEdge: cut along contact lines first
+  bool splitAtContacts = false;                  // with subdivide or maxEdge: cut along contact lines first
+  double overlapGap = MeshOptions{}.overlapGap;  // and under parallel patches this near (of the diagonal)
   void add(CLI::App& command);
   MeshOptions options() const;
   // options(), except that a scene given without any mesh option gets defaultMeshOptions, and stderr says
-  // which element size was chosen and how to choose another (solve: a solution needs a mesh).
+  // which element size was chosen and how to choose another (solve: a solution needs a mesh). Either way,
+  // stderr lists the cuts the mesh makes (contacts and overlaps, meshCuts).
   MeshOptions optionsFor(const Scene& scene) const;
 };
 

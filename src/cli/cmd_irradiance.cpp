@@ -24,8 +24,9 @@ struct IrradianceArguments {
   std::string output;
   SolutionArguments solution;
   TwoPassOptions twoPass;
-  int pathTrace = 0;      // paths per point; 0: the two-pass method
-  bool meshError = true;  // estimate the solution's mesh error from a second solve on a coarser mesh
+  int pathTrace = 0;       // paths per point; 0: the two-pass method
+  bool meshError = true;   // estimate the solution's mesh error from a second solve on a coarser mesh
+  bool breakdown = false;  // write H's parts: direct, first bounce, the rest
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -109,7 +110,7 @@ void run(const IrradianceArguments& a) {
               << " point(s) lie on no surface facing their normal (the first is point " << first + 1
               << ", line " << first + 2 << " of " << a.points
               << " if the file has no blank lines): their B is written as 0\n";
-  writePointEstimates(a.output, points, estimates, surfaces);
+  writePointEstimates(a.output, points, estimates, surfaces, a.breakdown);
   std::cerr << "irradiance written to " << a.output << " (" << secondsSince(start) << " s in all)\n";
 }
 
@@ -153,6 +154,12 @@ void addIrradianceCommand(CLI::App& app) {
       "!--no-mesh-error", a->meshError,
       "Skip the mesh-error estimate (by default the points are computed a second time on a mesh with "
       "elements twice the size, and the difference is written as H_r_mesh_error...)");
+  command->add_flag(
+      "--breakdown", a->breakdown,
+      "Also write H in parts by the bounces its light took: H_r_direct... (none), H_r_bounce... (one: for "
+      "the two-pass method the direct light at its gather's hits), H_r_rest... (the rest), with the standard "
+      "errors of the first two; against a path-traced reference with the same columns they show where an "
+      "error comes from");
   command
       ->add_option("--path-trace", a->pathTrace,
                    "Path-trace each point with this many paths instead (no mesh, no solve: the reference)")

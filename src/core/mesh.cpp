@@ -50,6 +50,14 @@ class VertexWelder {
   std::map<Key, std::vector<int>> cells_;
 };
 
+double sceneSize(const Scene& scene) {
+  return scene.bounds().isEmpty() ? 1.0 : scene.bounds().diagonal().norm();
+}
+
+bool cuts(const MeshOptions& options) {
+  return options.splitAtContacts && options.mode != MeshOptions::Mode::None;
+}
+
 // Divisions per edge, in double: an absurd request (a micrometre edge on a room) must be countable before it
 // is refused, not overflow an int.
 double divisionsFor(const Polygon& polygon, const MeshOptions& options) {
@@ -236,17 +244,16 @@ Mesh buildMesh(const Scene& scene, const MeshOptions& options) {
   checkMeshSize(scene, options);
 
   Mesh mesh;
-  const Eigen::AlignedBox3d box = scene.bounds();
-  const double size = box.isEmpty() ? 1.0 : std::max(box.diagonal().norm(), 1e-300);
+  const double size = std::max(sceneSize(scene), 1e-300);
   VertexWelder welder(mesh.vertices, weldTolerance(scene, options, size));
 
   std::vector<Polygon> pieces;
-  const bool cut = options.splitAtContacts && options.mode != MeshOptions::Mode::None;
   for (std::size_t p = 0; p < scene.patches.size(); ++p) {
     const Patch& patch = scene.patches[p];
     pieces.clear();
     const std::vector<Polygon> parts =
-        cut ? cutAtContacts(scene, static_cast<int>(p), 1e-7 * size) : std::vector<Polygon>{patch.vertices};
+        cuts(options) ? cutAtContacts(scene, static_cast<int>(p), 1e-7 * size, options.overlapGap * size)
+                      : std::vector<Polygon>{patch.vertices};
     for (const Polygon& part : parts) {
       const int n = static_cast<int>(divisionsFor(part, options));
       if (part.size() == 4) {
@@ -291,13 +298,14 @@ void refreshMaterials(Mesh& mesh, const Scene& scene) {
 
 namespace {
 
-// Each patch as the parts the mesh splits: the patch, or its pieces cut at contact lines.
-std::vector<std::vector<Polygon>> meshedParts(const Scene& scene, bool cut) {
-  const double size = scene.bounds().isEmpty() ? 1.0 : scene.bounds().diagonal().norm();
+// Each patch as the parts the mesh splits: the patch, or its pieces cut at contact lines and overlaps.
+std::vector<std::vector<Polygon>> meshedParts(const Scene& scene, const MeshOptions& options) {
+  const double size = sceneSize(scene);
   std::vector<std::vector<Polygon>> parts;
   parts.reserve(scene.patches.size());
   for (std::size_t p = 0; p < scene.patches.size(); ++p)
-    parts.push_back(cut ? cutAtContacts(scene, static_cast<int>(p), 1e-7 * size)
+    parts.push_back(cuts(options)
+                        ? cutAtContacts(scene, static_cast<int>(p), 1e-7 * size, options.overlapGap * size)
                         : std::vector<Polygon>{scene.patches[p].vertices});
   return parts;
 }
@@ -312,8 +320,43 @@ double countElements(const std::vector<std::vector<Polygon>>& parts, const MeshO
 }  // namespace
 
 double estimatedElementCount(const Scene& scene, const MeshOptions& options) {
-  return countElements(meshedParts(scene, options.splitAtContacts && options.mode != MeshOptions::Mode::None),
-                       options);
+  return countElements(meshedParts(scene, options), options);
+}
+
+std::vector<MeshCut> meshCuts(const Scene& scene, const MeshOptions& options) {
+  std::vector<MeshCut> out;
+  if (!cuts(options)) return out;
+  const double size = sceneSize(scene);
+  for (std::size_t p = 0; p < scene.patches.size(); ++p) {
+    const std::size_t first = out.size();
+    for (const CutSegment& s :
+         cutSegments(scene, static_cast<int>(p), 1e-7 * size, options.overlapGap * size)) {
+      const int surface = scene.patches[static_cast<std::size_t>(s.other)].surface;
+      auto it =
+          std::find_if(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
+                       [&](const MeshCut& c) { return c.surface == surface && c.overlap == s.overlap; });
+      if (it == out.end()) it = out.insert(out.end(), MeshCut{static_cast<int>(p), surface, s.overlap, 0, 0});
+      it->gap = std::max(it->gap, s.gap);
+      ++it->segments;
+    }
+  }
+  return out;
+}
+
+std::vector<std::string> describeMeshCuts(const Scene& scene, const std::vector<MeshCut>& cuts) {
+  std::vector<std::string> lines;
+  for (const MeshCut& c : cuts) {
+    const Patch& patch = scene.patches[static_cast<std::size_t>(c.patch)];
+    const std::string& cut = scene.surfaces[static_cast<std::size_t>(patch.surface)].name;
+    const std::string& by = scene.surfaces[static_cast<std::size_t>(c.surface)].name;
+    const std::string segments = std::to_string(c.segments) + (c.segments == 1 ? " segment" : " segments");
+    lines.push_back(cut + " (patch " + std::to_string(c.patch) + ") " +
+                    (c.overlap ? "along the outline of " + by + ", " + io_detail::formatNumber(c.gap, 3) +
+                                     " " + scene.unit + " in front of it (overlap): "
+                               : "where " + by + " stands on it (contact): ") +
+                    segments);
+  }
+  return lines;
 }
 
 MeshOptions defaultMeshOptions(const Scene& scene, double elements) {
@@ -323,7 +366,7 @@ MeshOptions defaultMeshOptions(const Scene& scene, double elements) {
   MeshOptions options;
   options.mode = MeshOptions::Mode::MaxEdge;
   options.splitAtContacts = true;
-  const auto parts = meshedParts(scene, true);
+  const auto parts = meshedParts(scene, options);
   // The count only grows as the edge shrinks: bisect on the edge (in log scale) for the largest edge that
   // still gives `elements`, then round it down to two significant digits, which a reader can retype.
   double coarse = longest, fine = longest / std::sqrt(elements) / 4;

@@ -128,13 +128,14 @@ struct StepParameters {
   std::optional<int> samples;                 // raycast / montecarlo samples
   std::optional<double> formFactorTolerance;  // quadrature / exact: the form factors' tolerance
   std::optional<std::uint64_t> seed;
-  std::string sampling = "random";  // montecarlo, local-lines solvers: random or Sobol lines
-  bool controlVariate = false;      // local-lines solvers: a constant control variate
-  std::optional<int> subdivide;     // N x N per patch
-  std::optional<double> maxEdge;    // or: split until no edge is longer than this
-  bool splitAtContacts = false;     // with subdivide or maxEdge: cut patches where other surfaces stand
-  std::vector<int> subdivisions;    // compare: several subdivision levels
-  std::vector<int> sweep;           // benchmark: resolutions (hemicube) or samples (rays) to try
+  std::string sampling = "random";   // montecarlo, local-lines solvers: random or Sobol lines
+  bool controlVariate = false;       // local-lines solvers: a constant control variate
+  std::optional<int> subdivide;      // N x N per patch
+  std::optional<double> maxEdge;     // or: split until no edge is longer than this
+  bool splitAtContacts = false;      // with subdivide or maxEdge: cut patches where other surfaces stand
+  std::optional<double> overlapGap;  // with the cuts: also under parallel patches this near (of the diagonal)
+  std::vector<int> subdivisions;     // compare: several subdivision levels
+  std::vector<int> sweep;            // benchmark: resolutions (hemicube) or samples (rays) to try
   std::string solver = "gauss-seidel";
   std::string basis = "constant";    // constant or linear (core/basis/linear_basis.h)
   std::vector<std::string> solvers;  // compare: several solvers

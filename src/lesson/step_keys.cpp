@@ -6,6 +6,8 @@
 #include "core/basis/linear_basis.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/formfactor/line_sampling.h"
+#include "core/io/scene_assembly.h"
+#include "core/mesh.h"
 #include "homework/topic_table.h"
 #include "lesson/lesson_parser.h"
 #include "lesson/step_keys_chapters.h"
@@ -165,6 +167,20 @@ std::vector<StepKey> makeTable() {
            "sends part of its light into the block, where it is lost).",
        .control = true,
        .slot = &P::splitAtContacts});
+  add({.name = "overlap-gap",
+       .type = KeyType::Double,
+       .min = 0,
+       .max = 1,
+       .defaultText = io_detail::formatNumber(MeshOptions{}.overlapGap),
+       .label = "Overlap gap",
+       .tooltip =
+           "With the cuts at contacts (and in the mesh chosen for a scene without mesh options): also "
+           "cut every patch along the outline of a parallel patch lying in front of it within this gap, "
+           "as a fraction of the scene's diagonal (a light hung just below a ceiling, a picture on a "
+           "wall), so that no element is partly covered; 0: no such cut.",
+       .decimals = 3,
+       .step = 0.005,
+       .slot = &P::overlapGap});
   add({.name = "subdivisions",
        .type = KeyType::Ints,
        .min = 1,

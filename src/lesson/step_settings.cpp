@@ -12,11 +12,13 @@ MeshOptions meshOptionsFor(const StepParameters& p) {
     o.maxEdge = *p.maxEdge;
   }
   o.splitAtContacts = p.splitAtContacts && o.mode != MeshOptions::Mode::None;
+  if (p.overlapGap) o.overlapGap = *p.overlapGap;
   return o;
 }
 
 void setMeshOptions(StepParameters& p, const MeshOptions& options) {
   p.splitAtContacts = options.splitAtContacts;
+  if (options.overlapGap != MeshOptions{}.overlapGap) p.overlapGap = options.overlapGap;
   switch (options.mode) {
     case MeshOptions::Mode::Count:
       p.subdivide = options.count;

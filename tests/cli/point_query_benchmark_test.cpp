@@ -4,6 +4,7 @@
 //   cli_tests --gtest_also_run_disabled_tests --gtest_filter='PointQueryBenchmark.*'
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -93,6 +94,68 @@ TEST(PointQueryBenchmark, DISABLED_ClosedCornellBoxFloor) {
     // Known answer, loosely: the two-pass method is within a few percent of the reference everywhere.
     EXPECT_LT(s.rms, 0.03);
     EXPECT_LT(s.largest, 0.1);
+  }
+}
+
+// The closed box with the light flush in a cut ceiling and hung 0.1 mm and 1 cm below an uncut one, at the 82
+// floor points: the two-pass defaults (best wall time of 3) against the path tracer at several path counts
+// (best of 3 each), and the path count and wall time the path tracer needs for the two-pass RMS.
+TEST(PointQueryBenchmark, DISABLED_NearCeilingLights) {
+  const std::string points = dataPath("pathtrace/cornell-closed-floor-points-82.csv");
+  const std::string out = scratchDir("point-query-benchmark-lights") + "/H.csv";
+  struct Case {
+    const char* scene;
+    const char* reference;
+  };
+  auto run = [&](const std::string& scene, const std::string& settings, const std::string& reference,
+                 double& seconds) {
+    seconds = 1e300;
+    Score s;
+    for (int k = 0; k < 3; ++k) {
+      std::string log;
+      const auto start = std::chrono::steady_clock::now();
+      EXPECT_EQ(runCommand(cliPath() + " irradiance " + sourcePath("scenes/" + scene) + " --points " +
+                               points + " --output " + out + " " + settings,
+                           &log),
+                0)
+          << log;
+      seconds =
+          std::min(seconds, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      s = score(dataPath("pathtrace/" + reference), out);
+    }
+    return s;
+  };
+  std::printf("| scene | settings | seconds (best of 3) | RMS | largest | mean |\n");
+  for (const Case& c :
+       {Case{"cornell-box-closed.json", "cornell-closed-floor-reference-82.csv"},
+        Case{"cornell-box-closed-light-0.1mm.json", "cornell-closed-light-0.1mm-floor-reference-82.csv"},
+        Case{"cornell-box-closed-light-1cm.json", "cornell-closed-light-1cm-floor-reference-82.csv"}}) {
+    double twoPassSeconds = 0;
+    const Score twoPass = run(c.scene, "--no-mesh-error", c.reference, twoPassSeconds);
+    std::printf("| `%s` | two-pass `--no-mesh-error` | %.2f | %.4f | %.4f | %+.4f |\n", c.scene,
+                twoPassSeconds, twoPass.rms, twoPass.largest, twoPass.mean);
+    // The path tracer's RMS and time at each count; the count for the two-pass RMS interpolated between the
+    // two counts around it (or extrapolated from the last two) as RMS ~ paths^-k, the time linearly in paths.
+    const std::vector<int> counts{4096, 16384, 65536};
+    std::vector<double> rms, seconds;
+    for (int paths : counts) {
+      double t = 0;
+      const Score traced = run(c.scene, "--path-trace " + std::to_string(paths), c.reference, t);
+      std::printf("| `%s` | `--path-trace %d` | %.2f | %.4f | %.4f | %+.4f |\n", c.scene, paths, t,
+                  traced.rms, traced.largest, traced.mean);
+      rms.push_back(traced.rms);
+      seconds.push_back(t);
+      std::fflush(stdout);
+    }
+    std::size_t k = 1;
+    while (k + 1 < counts.size() && rms[k] > twoPass.rms) ++k;
+    const double order = std::log(rms[k - 1] / rms[k]) / std::log(double(counts[k]) / counts[k - 1]);
+    const double paths = counts[k - 1] * std::pow(rms[k - 1] / twoPass.rms, 1 / order);
+    const double time = seconds[k - 1] +
+                        (seconds[k] - seconds[k - 1]) * (paths - counts[k - 1]) / (counts[k] - counts[k - 1]);
+    std::printf("| `%s` | path tracer at the two-pass RMS (interpolated) | %.2f | %.4f | | %.0f paths |\n",
+                c.scene, time, twoPass.rms, paths);
+    std::fflush(stdout);
   }
 }
 

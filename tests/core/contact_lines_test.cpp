@@ -7,17 +7,13 @@
 #include "core/io/scene_loader.h"
 #include "core/mesh.h"
 #include "core/polygon.h"
+#include "formfactor_scenes.h"
 #include "support/test_paths.h"
 
 namespace rt {
 namespace {
 
-int patchOf(const Scene& scene, const std::string& surface) {
-  for (std::size_t p = 0; p < scene.patches.size(); ++p)
-    if (scene.surfaces[static_cast<std::size_t>(scene.patches[p].surface)].name == surface)
-      return static_cast<int>(p);
-  return -1;
-}
+using test::patchOf;
 
 // The block's footprint on the floor: its top's corners dropped to y = 0, as (x, z).
 std::vector<Vec2> footprint(const Scene& scene, const std::string& block) {

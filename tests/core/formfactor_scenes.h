@@ -21,6 +21,14 @@ inline void addQuad(Scene& scene, const Vec3& a, const Vec3& b, const Vec3& c, c
   scene.patches.push_back(p);
 }
 
+// The first patch of the surface named `surface`, or -1.
+inline int patchOf(const Scene& scene, const std::string& surface) {
+  for (std::size_t p = 0; p < scene.patches.size(); ++p)
+    if (scene.surfaces[static_cast<std::size_t>(scene.patches[p].surface)].name == surface)
+      return static_cast<int>(p);
+  return -1;
+}
+
 inline Scene emptyScene() {
   Scene s;
   s.materials.push_back({"grey", Rgb(0.5, 0.5, 0.5), Rgb(0, 0, 0)});

@@ -41,6 +41,21 @@ TEST(PathTracer, FurnaceGivesEOverOneMinusRho) {
   }
 }
 
+// The furnace's H = 2 by bounces: every face emits 1 and the faces close the cube, so the direct light is 1,
+// the first bounce rho = 0.5 and the rest 0.5.
+TEST(PathTracer, FurnaceBreakdownByBounces) {
+  const Scene scene = loadScene(test::sourcePath("scenes/furnace-cube.json"));
+  const PathTracer tracer(scene);
+  PathTraceOptions options;
+  options.samples = 4096;
+  for (const PointEstimate& e : tracer.estimate(cubePoints(), options))
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_LE(std::abs(e.HDirect(c) - 1.0), 4 * e.HDirectError(c) + 1e-12);
+      EXPECT_LE(std::abs(e.HBounce(c) - 0.5), 4 * e.HBounceError(c));
+      EXPECT_LE(std::abs(e.H(c) - e.HDirect(c) - e.HBounce(c) - 0.5), 4 * e.HError(c));
+    }
+}
+
 TEST(PathTracer, FurnaceImageIsUniform) {
   const Scene scene = loadScene(test::sourcePath("scenes/furnace-cube.json"));
   const PathTracer tracer(scene);
@@ -177,24 +192,31 @@ TEST(PathTracer, StandardErrorFallsLikeOneOverSqrtSamples) {
 
 // The benchmark scene is the published box closed by a front wall: from anywhere inside, every ray meets the
 // front of a polygon (nothing escapes, no back face shows through a gap).
+// The closed box and its variants with the light hung below an uncut ceiling (0.1 mm and 1 cm).
 TEST(PathTracer, ClosedCornellBoxLetsNoRayEscape) {
-  const Scene scene = loadScene(test::sourcePath("scenes/cornell-box-closed.json"));
-  const TracingScene tracing(scene);
-  PairRandom random(11, 0, 0);
-  int escaped = 0, backFaces = 0, rays = 0;
-  for (int k = 0; k < 20000; ++k) {
-    // Points in the air of the room, above the tall block so that none lies inside a block.
-    const Vec3 origin(20 + 510 * random.uniform(), 340 + 200 * random.uniform(), 20 + 520 * random.uniform());
-    const Vec3 direction = cosineDirection(Vec3::UnitY(), random.uniform(), random.uniform()) *
-                           (random.uniform() < 0.5 ? 1.0 : -1.0);
-    const RayHit hit = tracing.rays().firstHit(origin, direction.normalized(), -1);
-    ++rays;
-    escaped += hit.element < 0;
-    backFaces += hit.element >= 0 && !hit.frontSide;
+  for (const char* file : {"cornell-box-closed.json", "cornell-box-closed-light-0.1mm.json",
+                           "cornell-box-closed-light-1cm.json"}) {
+    SCOPED_TRACE(file);
+    const Scene scene = loadScene(test::sourcePath(std::string("scenes/") + file));
+    const TracingScene tracing(scene);
+    PairRandom random(11, 0, 0);
+    int escaped = 0, backFaces = 0, rays = 0;
+    for (int k = 0; k < 20000; ++k) {
+      // Points in the air of the room, above the tall block so that none lies inside a block, and below the
+      // lowest light, whose back only the ceiling sees.
+      const Vec3 origin(20 + 510 * random.uniform(), 340 + 190 * random.uniform(),
+                        20 + 520 * random.uniform());
+      const Vec3 direction = cosineDirection(Vec3::UnitY(), random.uniform(), random.uniform()) *
+                             (random.uniform() < 0.5 ? 1.0 : -1.0);
+      const RayHit hit = tracing.rays().firstHit(origin, direction.normalized(), -1);
+      ++rays;
+      escaped += hit.element < 0;
+      backFaces += hit.element >= 0 && !hit.frontSide;
+    }
+    EXPECT_EQ(escaped, 0);
+    EXPECT_EQ(backFaces, 0);
+    EXPECT_EQ(rays, 20000);
   }
-  EXPECT_EQ(escaped, 0);
-  EXPECT_EQ(backFaces, 0);
-  EXPECT_EQ(rays, 20000);
 }
 
 TEST(PathTracer, SameSeedSameAnswer) {

@@ -8,10 +8,12 @@
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/sampling.h"
+#include "core/io/scene_loader.h"
 #include "core/pathtrace/path_tracer.h"
 #include "core/pathtrace/two_pass.h"
 #include "core/pipeline/pipeline.h"
 #include "formfactor_scenes.h"
+#include "support/test_paths.h"
 
 namespace rt {
 namespace {
@@ -40,6 +42,21 @@ TEST(TwoPass, DirectLightIsLambertsFormulaWhereNothingCanBlock) {
     const double F = pointToPolygonFormFactor(p, Vec3::UnitZ(), scene.patches[1].vertices);
     EXPECT_NEAR(H(0), F, 1e-14);
     EXPECT_EQ(error(0), 0.0);  // no ray was needed
+  }
+}
+
+// The furnace cube (every face emits 1 and reflects 0.5, H = 2) by bounces: the two-pass method's direct
+// light is exact, 1; its first bounce, the direct light taken at the gather's hits, 0.5; the rest, 0.5.
+TEST(TwoPass, FurnaceBreakdownByBounces) {
+  const Scene scene = loadScene(test::sourcePath("scenes/furnace-cube.json"));
+  const TracingScene tracing(scene);
+  const PipelineOutput solved = solve(scene, 2);
+  const TwoPass twoPass(tracing, *solved.mesh, solved.solve.B, solved.F.get());
+  const std::vector<SurfacePoint> points{{{0.5, 0, 0.5}, {0, 1, 0}}, {{0.03, 0.9, 0.2}, {1, 0, 0}}};
+  for (const PointEstimate& e : twoPass.estimate(points, TwoPassOptions{})) {
+    EXPECT_NEAR(e.HDirect(0), 1.0, 1e-12);
+    EXPECT_NEAR(e.HBounce(0), 0.5, 4 * e.HBounceError(0) + 1e-9);
+    EXPECT_NEAR(e.H(0) - e.HDirect(0) - e.HBounce(0), 0.5, 0.02);  // the solution's raycast form factors
   }
 }
 

@@ -63,6 +63,15 @@ double number(const std::vector<std::string>& cells, std::size_t column, const s
   return value;
 }
 
+// The breakdown's columns, in order: H's direct, first-bounce and remaining parts, then the standard errors
+// of the first two.
+std::vector<std::string> breakdownNames() {
+  std::vector<std::string> names;
+  for (const char* part : {"direct", "bounce", "rest", "direct_error", "bounce_error"})
+    for (const char* channel : {"r", "g", "b"}) names.push_back(std::string("H_") + channel + "_" + part);
+  return names;
+}
+
 }  // namespace
 
 std::vector<SurfacePoint> readSurfacePoints(const std::string& path) {
@@ -97,12 +106,15 @@ std::vector<SurfacePoint> readSurfacePoints(const std::string& path) {
 
 void writePointEstimates(const std::string& path, const std::vector<SurfacePoint>& points,
                          const std::vector<PointEstimate>& estimates,
-                         const std::vector<std::string>& surfaces) {
+                         const std::vector<std::string>& surfaces, bool breakdown) {
   std::ofstream out(path);
   if (!out) throw InputError({path}, "cannot write the output file");
   out << "x,y,z,nx,ny,nz,surface,H_r,H_g,H_b,B_r,B_g,B_b,H_r_error,H_g_error,H_b_error,B_r_error,B_g_error,"
          "B_b_error,H_r_mesh_error,H_g_mesh_error,H_b_mesh_error,B_r_mesh_error,B_g_mesh_error,B_b_mesh_"
-         "error\n";
+         "error";
+  if (breakdown)
+    for (const std::string& name : breakdownNames()) out << ',' << name;
+  out << '\n';
   char buffer[1024];
   for (std::size_t p = 0; p < points.size(); ++p) {
     const SurfacePoint& q = points[p];
@@ -110,12 +122,26 @@ void writePointEstimates(const std::string& path, const std::vector<SurfacePoint
     std::snprintf(
         buffer, sizeof buffer,
         "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.4g,%.4g,%.4g,%.4g,"
-        "%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g\n",
+        "%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g",
         q.position.x(), q.position.y(), q.position.z(), q.normal.x(), q.normal.y(), q.normal.z(),
         surfaces[p].c_str(), e.H(0), e.H(1), e.H(2), e.B(0), e.B(1), e.B(2), e.HError(0), e.HError(1),
         e.HError(2), e.BError(0), e.BError(1), e.BError(2), e.HMeshError(0), e.HMeshError(1), e.HMeshError(2),
         e.BMeshError(0), e.BMeshError(1), e.BMeshError(2));
     out << buffer;
+    if (breakdown) {
+      const Rgb rest = e.H - e.HDirect - e.HBounce;
+      for (const Rgb& part : {e.HDirect, e.HBounce, rest})
+        for (int c = 0; c < 3; ++c) {
+          std::snprintf(buffer, sizeof buffer, ",%.10g", part(c));
+          out << buffer;
+        }
+      for (const Rgb& part : {e.HDirectError, e.HBounceError})
+        for (int c = 0; c < 3; ++c) {
+          std::snprintf(buffer, sizeof buffer, ",%.4g", part(c));
+          out << buffer;
+        }
+    }
+    out << '\n';
   }
   if (!out) throw InputError({path}, "error while writing the output file");
 }
@@ -138,6 +164,11 @@ std::vector<PointEstimate> readPointEstimates(const std::string& path) {
   });
   const auto meshColumns =
       hasMeshErrors ? columnsOf(header, meshNames, {path, 1}) : std::vector<std::size_t>();
+  const std::vector<std::string> partNames = breakdownNames();
+  const bool hasParts = std::all_of(partNames.begin(), partNames.end(), [&](const std::string& n) {
+    return std::find(header.begin(), header.end(), n) != header.end();
+  });
+  const auto partColumns = hasParts ? columnsOf(header, partNames, {path, 1}) : std::vector<std::size_t>();
   std::vector<PointEstimate> out;
   for (int lineNumber = 2; std::getline(in, line); ++lineNumber) {
     if (blank(line)) continue;
@@ -152,6 +183,16 @@ std::vector<PointEstimate> readPointEstimates(const std::string& path) {
                            names[static_cast<std::size_t>(c + 6)], where);
       e.BError(c) = number(cells, columns[static_cast<std::size_t>(c + 9)],
                            names[static_cast<std::size_t>(c + 9)], where);
+      if (hasParts) {
+        auto part = [&](int k) {
+          const auto column = static_cast<std::size_t>(3 * k + c);
+          return number(cells, partColumns[column], partNames[column], where);
+        };
+        e.HDirect(c) = part(0);
+        e.HBounce(c) = part(1);
+        e.HDirectError(c) = part(3);
+        e.HBounceError(c) = part(4);
+      }
       if (!hasMeshErrors) continue;
       e.HMeshError(c) = number(cells, meshColumns[static_cast<std::size_t>(c)],
                                meshNames[static_cast<std::size_t>(c)], where);

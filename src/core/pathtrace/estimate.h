@@ -21,6 +21,14 @@ struct PointEstimate {
   // standard error: see meshErrorEstimate in cli/solution.h); zero for the path tracer, which has no mesh.
   Rgb HMeshError = Rgb::Zero();
   Rgb BMeshError = Rgb::Zero();
+  // H by the bounces its light took since leaving an emitter: none (the direct light) and one (the light the
+  // first surfaces reflect); the rest is H less both. The path tracer counts a path's bounces; the two-pass
+  // method's first bounce is the direct light taken at its gather hits, and its rest what the solution adds.
+  // A breakdown against a path-traced reference tells which part an error comes from.
+  Rgb HDirect = Rgb::Zero();
+  Rgb HDirectError = Rgb::Zero();
+  Rgb HBounce = Rgb::Zero();
+  Rgb HBounceError = Rgb::Zero();
   int element = -1;  // the surface the point lies on (-1: none, and B is 0)
 };
 

@@ -12,14 +12,17 @@ PathTracer::PathTracer(const Scene& scene) : tracing_(scene) {}
 
 Rgb PathTracer::irradiance(const Vec3& origin, const Vec3& normal, int element, PairRandom& random,
                            const Vec2& light, const Vec2& bounce, int rouletteDepth, int maxBounces,
-                           std::uint64_t& rays) const {
+                           std::uint64_t& rays, Rgb* parts) const {
   const Mesh& mesh = tracing_.mesh();
   const RayScene& scene = tracing_.rays();
   Rgb H = Rgb::Zero();
   Rgb throughput = Rgb::Ones();
   Vec3 x = origin, n = normal;
   int at = element;
+  if (parts) parts[0] = parts[1] = Rgb::Zero();
   for (int depth = 0;; ++depth) {
+    // What this step adds took `depth` bounces: light reaching the path's depth-th surface.
+    const Rgb before = H;
     // Next-event estimation: a point on an emitter, E cos cos / (pi r^2) V / density. Near an emitter's edge
     // (a lit wall meeting the ceiling) its variance is unbounded, so it is weighed against the bounce's own
     // chance of finding that point (power heuristic); the bounce below adds the other share.
@@ -47,7 +50,10 @@ Rgb PathTracer::irradiance(const Vec3& origin, const Vec3& normal, int element, 
     const Vec3 direction = cosineDirection(n, uv.x(), uv.y());
     ++rays;
     const RayHit hit = scene.firstHit(x, direction, at);
-    if (hit.element < 0 || !hit.frontSide) break;
+    if (hit.element < 0 || !hit.frontSide) {
+      if (parts && depth < 2) parts[depth] = H - before;
+      break;
+    }
     const auto row = static_cast<Eigen::Index>(hit.element);
     const double density = tracing_.lightDensity(hit.element);
     if (density > 0) {
@@ -57,6 +63,7 @@ Rgb PathTracer::irradiance(const Vec3& origin, const Vec3& normal, int element, 
       const double mis = bouncePdf * bouncePdf / (lightPdf * lightPdf + bouncePdf * bouncePdf);
       H += throughput * mesh.emission.row(row).transpose().array() * mis;
     }
+    if (parts && depth < 2) parts[depth] = H - before;
     if (maxBounces >= 0 && depth >= maxBounces) break;
     throughput *= mesh.reflectance.row(row).transpose().array();
     if (depth + 1 >= rouletteDepth) {
@@ -90,21 +97,30 @@ std::vector<PointEstimate> PathTracer::estimate(const std::vector<SurfacePoint>&
       // rays.
       const Vec3 origin =
           element >= 0 ? point.position : Vec3(point.position + 1e-6 * tracing_.rays().sceneSize() * normal);
-      RgbMean mean;
+      RgbMean mean, direct, bounce;
       for (int b = 0; b < batches; ++b) {
         PairRandom random(options.seed, p, static_cast<std::uint64_t>(b));
         // The light samples' strata are shuffled against the bounce directions' so they do not line up.
         shuffledStrata(perBatch, random, order);
-        Rgb sum = Rgb::Zero();
-        for (int k = 0; k < perBatch; ++k)
+        Rgb sum = Rgb::Zero(), parts[2], partSums[2] = {Rgb::Zero(), Rgb::Zero()};
+        for (int k = 0; k < perBatch; ++k) {
           sum += irradiance(origin, normal, element, random,
                             grid.sample(order[static_cast<std::size_t>(k)], random), grid.sample(k, random),
-                            options.rouletteDepth, options.maxBounces, rays);
+                            options.rouletteDepth, options.maxBounces, rays, parts);
+          partSums[0] += parts[0];
+          partSums[1] += parts[1];
+        }
         mean.add(sum / perBatch);
+        direct.add(partSums[0] / perBatch);
+        bounce.add(partSums[1] / perBatch);
       }
       PointEstimate& e = out[p];
       e.H = mean.mean();
       e.HError = mean.standardError();
+      e.HDirect = direct.mean();
+      e.HDirectError = direct.standardError();
+      e.HBounce = bounce.mean();
+      e.HBounceError = bounce.standardError();
       e.element = element;
       if (element >= 0) {
         const Rgb rho = tracing_.mesh().reflectance.row(element).transpose().array();

@@ -51,9 +51,11 @@ class PathTracer {
 
  private:
   // One path's estimate of H at `origin` (on element `element`, -1 for none), its first light sample and
-  // bounce direction drawn from the strata `light` and `bounce`.
+  // bounce direction drawn from the strata `light` and `bounce`. `parts` (when given) receives the share of
+  // H that took no bounce and one bounce.
   Rgb irradiance(const Vec3& origin, const Vec3& normal, int element, PairRandom& random, const Vec2& light,
-                 const Vec2& bounce, int rouletteDepth, int maxBounces, std::uint64_t& rays) const;
+                 const Vec2& bounce, int rouletteDepth, int maxBounces, std::uint64_t& rays,
+                 Rgb* parts = nullptr) const;
 
   TracingScene tracing_;
   mutable std::atomic<std::uint64_t> rays_{0};

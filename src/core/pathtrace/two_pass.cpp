@@ -157,7 +157,7 @@ Rgb TwoPass::direct(const SurfacePoint& point, int element, const TwoPassOptions
 }
 
 Rgb TwoPass::gather(const SurfacePoint& point, int element, const TwoPassOptions& options,
-                    std::uint64_t index, Rgb& error) const {
+                    std::uint64_t index, Rgb& error, Rgb* bounce, Rgb* bounceError) const {
   const int ignore = element >= 0 ? patchElement_[static_cast<std::size_t>(tracing_.patchOf(element))] : -1;
   // A point on no known surface starts a hair above its plane, so that its own surface cannot catch its rays.
   const Vec3 origin =
@@ -169,11 +169,11 @@ Rgb TwoPass::gather(const SurfacePoint& point, int element, const TwoPassOptions
   // too (padding), up to kPaddedRays secondary rays; they are most of the noise left at a few rays per hit.
   constexpr int kPaddedRays = 8;
   const int padded = 1 + 2 * std::min(options.nearRays, kPaddedRays);
-  RgbMean mean;
+  RgbMean mean, firstBounce;
   for (int b = 0; b < batches; ++b) {
     PairRandom random(options.seed, index, 0xffffff00u + static_cast<std::uint64_t>(b));
     const PaddedStrata strata(perBatch, padded, random);
-    Rgb sum = Rgb::Zero();
+    Rgb sum = Rgb::Zero(), bounceSum = Rgb::Zero();
     for (int k = 0; k < perBatch; ++k) {
       const Vec2 uv = grid.sample(k, random);
       const Vec3 direction = cosineDirection(point.normal, uv.x(), uv.y());
@@ -196,11 +196,16 @@ Rgb TwoPass::gather(const SurfacePoint& point, int element, const TwoPassOptions
       const Rgb indirect =
           near ? secondaryGather(y, hitElement.normal, hit.element, options.nearRays, strata, k, random)
                : Rgb(indirect_.row(row).transpose().array());
-      sum += solution_.reflectance.row(row).transpose().array() * (direct + indirect);
+      const Rgb rho = solution_.reflectance.row(row).transpose().array();
+      sum += rho * (direct + indirect);
+      bounceSum += rho * direct;
     }
     mean.add(sum / perBatch);
+    firstBounce.add(bounceSum / perBatch);
   }
   error = mean.standardError();
+  if (bounce) *bounce = firstBounce.mean();
+  if (bounceError) *bounceError = firstBounce.standardError();
   return mean.mean();
 }
 
@@ -245,12 +250,11 @@ std::vector<PointEstimate> TwoPass::estimate(const std::vector<SurfacePoint>& po
     for (std::size_t p = lo; p != hi; ++p) {
       const SurfacePoint point{points[p].position, points[p].normal.normalized()};
       const int element = elements[p];
-      Rgb directError, gatherError;
-      const Rgb H =
-          direct(point, element, options, p, directError) + gather(point, element, options, p, gatherError);
       PointEstimate& e = out[p];
-      e.H = H;
-      e.HError = (directError.square() + gatherError.square()).sqrt();
+      Rgb gatherError;
+      e.HDirect = direct(point, element, options, p, e.HDirectError);
+      e.H = e.HDirect + gather(point, element, options, p, gatherError, &e.HBounce, &e.HBounceError);
+      e.HError = (e.HDirectError.square() + gatherError.square()).sqrt();
       e.element = element;
       if (element >= 0) {
         const Rgb rho = tracing_.mesh().reflectance.row(element).transpose().array();

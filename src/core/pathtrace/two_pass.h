@@ -77,8 +77,10 @@ class TwoPass {
              Rgb& error) const;
 
  private:
+  // The gathered (indirect) irradiance and its standard error; `bounce` (when given) receives the part of it
+  // that is the direct light taken at the gather's hits, and its standard error.
   Rgb gather(const SurfacePoint& point, int element, const TwoPassOptions& options, std::uint64_t index,
-             Rgb& error) const;
+             Rgb& error, Rgb* bounce = nullptr, Rgb* bounceError = nullptr) const;
   // The indirect irradiance at a point of solution element `element`: cosine rays from the batch's padded
   // strata (those of path `path`) taking, where they hit, the direct light at the hit point and the element's
   // indirect light (B - E without form factors).

@@ -27,14 +27,20 @@ def inside(polygon, x, z, margin):
 
 def main():
     n = int(sys.argv[1]) if len(sys.argv) > 1 else 24
-    print("x,y,z,nx,ny,nz")
+    points = []
     for i in range(n):
         for j in range(n):
             x = 10 + (530 * i) / (n - 1)
             z = 10 + (539 * j) / (n - 1)
             if inside(SHORT, x, z, 2) or inside(TALL, x, z, 2):
                 continue
-            print(f"{x:.4f},0,{z:.4f},0,1,0")
+            points.append(f"{x:.4f},0,{z:.4f},0,1,0")
+    if len(sys.argv) > 2:
+        m = int(sys.argv[2])
+        points = [points[(i * len(points)) // m] for i in range(m)]
+    print("x,y,z,nx,ny,nz")
+    for point in points:
+        print(point)
 
 
 main()
