@@ -1,8 +1,16 @@
 // MainWindow: exports (the view, matrices, every figure of a lesson) and the progress strip they share with
 // the computations.
 #include <QApplication>
+#include <QBuffer>
+#include <QDir>
 #include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
 #include <QLabel>
+#include <QPageSize>
+#include <QPainter>
+#include <QPdfWriter>
 #include <QStatusBar>
 #include <QThread>
 
@@ -15,7 +23,62 @@
 #include "app/wording.h"
 #include "lesson/step_result.h"
 
+#include <algorithm>
+#include <stdexcept>
+
 namespace rt::app {
+
+namespace {
+
+// One pane as the exported figure draws it, at `size`.
+QImage paneImage(const SceneView& view, const Mesh& mesh, QSize size, const QString& scratch) {
+  viz::SceneViewOptions options = view.viewOptions();
+  options.image.width = size.width();
+  options.image.height = size.height();
+  exportSceneFigure(mesh, view.currentCamera(), view.viewData(), options, scratch.toStdString());
+  QImage image(scratch);
+  QFile::remove(scratch);
+  if (image.isNull()) throw std::runtime_error(scratch.toStdString() + ": the pane was not drawn");
+  return image;
+}
+
+// Both panes side by side, written as the path's extension says (a 3D view has no vector form: the SVG and
+// the PDF hold the picture).
+void writeSideBySide(const QImage& left, const QImage& right, const QString& path) {
+  QImage both(left.width() + right.width(), std::max(left.height(), right.height()), QImage::Format_RGB888);
+  both.fill(Qt::black);
+  QPainter painter(&both);
+  painter.drawImage(0, 0, left);
+  painter.drawImage(left.width(), 0, right);
+  painter.end();
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  if (suffix == "pdf") {
+    QPdfWriter pdf(path);
+    pdf.setResolution(96);
+    pdf.setPageSize(QPageSize(QSizeF(both.width(), both.height()) * 72.0 / 96.0, QPageSize::Point));
+    pdf.setPageMargins(QMarginsF());
+    QPainter page(&pdf);
+    page.drawImage(QRect(0, 0, both.width(), both.height()), both);
+  } else if (suffix == "svg") {
+    QByteArray png;
+    QBuffer buffer(&png);
+    buffer.open(QIODevice::WriteOnly);
+    both.save(&buffer, "PNG");
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+      throw std::runtime_error(path.toStdString() + ": cannot write the file");
+    file.write(QString(R"(<svg xmlns="http://www.w3.org/2000/svg" width="%1" height="%2">)"
+                       R"(<image width="%1" height="%2" href="data:image/png;base64,)")
+                   .arg(both.width())
+                   .arg(both.height())
+                   .toUtf8() +
+               png.toBase64() + "\"/></svg>\n");
+  } else if (!both.save(path)) {
+    throw std::runtime_error(path.toStdString() + ": cannot write the file");
+  }
+}
+
+}  // namespace
 
 bool MainWindow::exportView(const QString& path, QSize size) {
   if (!result_ || !result_->mesh) {
@@ -23,6 +86,22 @@ bool MainWindow::exportView(const QString& path, QSize size) {
     return false;
   }
   try {
+    const bool bothPanes = compare_ && secondaryView_ && secondaryView_->isVisible() && result_->compared &&
+                           result_->compared->mesh;
+    if (bothPanes) {
+      // Compare mode: the two panes as one figure, each half of the size asked for (or of both panes' size).
+      const QSize whole = size.isEmpty()
+                              ? QSize(std::max(primaryView_->width() + secondaryView_->width(), 1280),
+                                      std::max(primaryView_->height(), 480))
+                              : size;
+      const QSize half(whole.width() / 2, whole.height());
+      const QString scratch =
+          QDir::temp().filePath(QString("rt-pane-%1.png").arg(QCoreApplication::applicationPid()));
+      writeSideBySide(paneImage(*primaryView_, *result_->mesh, half, scratch),
+                      paneImage(*secondaryView_, *result_->compared->mesh, half, scratch), path);
+      statusLabel_->setText(tr("Both panes written to %1").arg(path));
+      return true;
+    }
     viz::SceneViewOptions options = primaryView_->viewOptions();
     options.image.width = size.isEmpty() ? std::max(primaryView_->width(), 640) : size.width();
     options.image.height = size.isEmpty() ? std::max(primaryView_->height(), 480) : size.height();

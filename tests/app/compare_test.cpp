@@ -8,6 +8,7 @@
 #include <QApplication>
 #include <QColor>
 #include <QComboBox>
+#include <QFileInfo>
 #include <QImage>
 
 #include "app/compare_choice.h"
@@ -16,6 +17,7 @@
 #include "app/scene_view.h"
 #include "app/screenshot.h"
 #include "app_test_support.h"
+#include "support/test_paths.h"
 #include "viz/vtk_render.h"
 
 using namespace rt::app;
@@ -163,4 +165,29 @@ TEST(CompareMode, NarrowPanesShowTheWholeRoom) {
   QApplication::processEvents();
   EXPECT_GT(window->primaryView()->width(), window->primaryView()->height());
   EXPECT_FALSE(window->primaryView()->renderer()->GetActiveCamera()->GetUseHorizontalViewAngle());
+}
+
+// Export in compare mode writes both panes as one figure, at the size asked for: the left pane's mesh at the
+// left, the finer one at the right (a coarse and a fine mesh of the same room differ in their pixels).
+TEST(CompareMode, ExportWritesBothPanesAsOneFigure) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->show();
+  ASSERT_TRUE(window->openScene(QString()));
+  window->setCompareChoice(CompareChoice{"", "", "finer"});
+  window->setCompareMode(true);
+  QApplication::processEvents();
+  ASSERT_NE(window->result()->compared, nullptr);
+  const std::string folder = rt::test::scratchDir("compare-export");
+  for (const char* name : {"both.png", "both.svg", "both.pdf"}) {
+    const QString path = QString::fromStdString(folder + "/" + name);
+    ASSERT_TRUE(window->exportView(path, QSize(1000, 400))) << window->lastError().toStdString();
+    EXPECT_GT(QFileInfo(path).size(), 1000) << name;
+  }
+  const QImage both(QString::fromStdString(folder + "/both.png"));
+  ASSERT_EQ(both.size(), QSize(1000, 400));
+  const QImage left = both.copy(0, 0, 500, 400), right = both.copy(500, 0, 500, 400);
+  EXPECT_GT(pixelStatistics(left).meanLuminance, 10) << "the left pane is drawn";
+  EXPECT_GT(pixelStatistics(right).meanLuminance, 10) << "the right pane is drawn";
+  EXPECT_NE(left, right) << "the two panes show their own meshes";
 }
