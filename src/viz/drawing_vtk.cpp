@@ -16,8 +16,6 @@
 #include <vtkTextProperty.h>
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -149,17 +147,9 @@ void writeDrawing(const Drawing& drawing, const std::string& path) {
     if (title.empty()) title = shape.text;
     words += (words.empty() ? "" : " | ") + shape.text;
   }
-  writeContextView(view, path, title, words);
-  if (figureFormatOf(path) != FigureFormat::Svg || drawing.count(Drawing::Kind::Image) == 0) return;
-  std::string svg;
-  {
-    std::ifstream in(path, std::ios::binary);
-    svg.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  }
-  embedDrawingImages(svg, drawing);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << svg;
-  if (!out) throw std::runtime_error(path + ": cannot write the file");
+  writeContextView(view, path, title, words, [&drawing](std::string& svg) {
+    if (drawing.count(Drawing::Kind::Image) > 0) embedDrawingImages(svg, drawing);
+  });
 }
 
 }  // namespace rt::viz

@@ -172,7 +172,8 @@ void writeRenderWindow(vtkRenderWindow* window, const std::string& path, double 
 namespace {
 
 // vtkSVGExporter writes "VTK Exported Scene" as both the <title> and the <desc>: put the figure's own there.
-void tidySvg(const std::string& path, const std::string& title, const std::string& description) {
+void tidySvg(const std::string& path, const std::string& title, const std::string& description,
+             const std::function<void(std::string& svg)>& amendSvg) {
   std::string svg;
   {
     std::ifstream in(path, std::ios::binary);
@@ -190,6 +191,7 @@ void tidySvg(const std::string& path, const std::string& title, const std::strin
     at += replacement.size();
   }
   repairVtkSvg(svg);
+  if (amendSvg) amendSvg(svg);
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << svg;
   if (!out) throw std::runtime_error(path + ": cannot write the file");
@@ -198,7 +200,7 @@ void tidySvg(const std::string& path, const std::string& title, const std::strin
 }  // namespace
 
 void writeContextView(vtkContextView* view, const std::string& path, const std::string& title,
-                      const std::string& description) {
+                      const std::string& description, const std::function<void(std::string& svg)>& amendSvg) {
   const FigureFormat format = figureFormatOf(path);
   vtkRenderWindow* window = view->GetRenderWindow();
   window->Render();
@@ -217,7 +219,7 @@ void writeContextView(vtkContextView* view, const std::string& path, const std::
     // Text as <text>, not as glyph outlines: a reader can search, select and edit the labels of a figure.
     exporter->SetTextAsPath(false);
     exporter->Write();
-    tidySvg(path, title, description);
+    tidySvg(path, title, description, amendSvg);
   } else {
     auto exporter = vtkSmartPointer<vtkPDFExporter>::New();
     exporter->SetRenderWindow(window);

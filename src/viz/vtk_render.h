@@ -5,6 +5,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -45,9 +46,10 @@ void writeRenderWindow(vtkRenderWindow* window, const std::string& path, double 
 // 2D views built from context items (charts, matrix, hemicube faces, Nusselt disk): PNG, or true vectors in
 // SVG/PDF. VTK draws SVG text as paths (viewers disagree on text sizes), so an SVG also gets `title` and
 // `description` (e.g. the words on the figure) as its <title> and <desc>: searchable and read by screen
-// readers.
+// readers. `amendSvg`, where given, edits the SVG's text before it is written (e.g. to embed pictures).
 void writeContextView(vtkContextView* view, const std::string& path, const std::string& title = {},
-                      const std::string& description = {});
+                      const std::string& description = {},
+                      const std::function<void(std::string& svg)>& amendSvg = {});
 
 // Font size in pixels that stays readable on a projector: a fraction of the figure height, scaled by dpi
 // / 96.
