@@ -119,6 +119,21 @@ Pseudocode parseBody(const std::vector<std::string>& body, int firstBodyLine, co
   return p;
 }
 
+// A file or function name in the narrow column of notes may break only where a reader would split it: after
+// an underscore and between the words of a camel-case name, never inside a word.
+std::string breakableName(const std::string& name) {
+  std::string html;
+  for (std::size_t k = 0; k < name.size(); ++k) {
+    const char c = name[k];
+    const bool wordStarts = k > 0 && std::isupper(static_cast<unsigned char>(c)) &&
+                            std::islower(static_cast<unsigned char>(name[k - 1]));
+    if (wordStarts) html += "<wbr>";
+    html += escapeHtml(std::string(1, c));
+    if (c == '_' || c == '/') html += "<wbr>";
+  }
+  return html;
+}
+
 }  // namespace
 
 std::vector<Pseudocode> findPseudocode(const std::string& markdown, int firstLine, const std::string& file) {
@@ -188,8 +203,8 @@ std::string pseudocodeHtml(const Pseudocode& listing, const std::string& number)
       const std::size_t colon = l.source.find(": ");
       const std::string path = l.source.substr(0, colon);
       const std::string name = path.substr(path.rfind('/') + 1);
-      html += "<span title=\"src/" + escapeHtml(l.source) + "\">" + escapeHtml(name);
-      if (colon != std::string::npos) html += "<br>" + escapeHtml(l.source.substr(colon + 2));
+      html += "<span title=\"src/" + escapeHtml(l.source) + "\">" + breakableName(name);
+      if (colon != std::string::npos) html += "<br>" + breakableName(l.source.substr(colon + 2));
       html += "</span>";
     }
     html += "</td></tr>\n";

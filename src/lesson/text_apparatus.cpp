@@ -71,8 +71,8 @@ table.algorithm-lines { border-collapse: collapse; margin: 0.2em 0 0; width: 100
 table.algorithm-lines td { border: none; padding: 0.05em 0.4em; vertical-align: baseline; }
 td.alg-number { width: 1.6em; text-align: right; color: #777; font-size: 0.8em; }
 td.alg-code { text-indent: -1em; }
-td.alg-source { width: 10em; text-align: right; color: #888; font-size: 0.68em; line-height: 1.2;
-                font-family: "DejaVu Sans Mono", monospace; overflow-wrap: anywhere; }
+td.alg-source { width: 13em; text-align: right; color: #888; font-size: 0.68em; line-height: 1.2;
+                font-family: "DejaVu Sans Mono", monospace; overflow-wrap: break-word; }
 @media (max-width: 30em) { td.alg-source { display: none; } }
 p.reference, p.glossary { padding-left: 1.5em; text-indent: -1.5em; margin: 0.35em 0; }
 )";
