@@ -55,7 +55,9 @@ void check(const LessonArguments& a, bool run) {
       if (run) {
         for (const auto& step : l.steps) {
           try {
-            lesson::resolvedText(l, step, runner.run(l, step));
+            const lesson::StepResult result = runner.run(l, step);
+            lesson::resolvedText(l, step, result);
+            lesson::resolvedCaption(l, step, result);
           } catch (const lesson::MethodUnavailable& e) {
             std::cerr << e.what() << " (not run)\n";  // an optional library, not a mistake in the lesson
           }

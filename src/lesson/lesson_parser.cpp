@@ -313,6 +313,10 @@ class Parser {
         fail(where.line,
              "a figure name uses a-z, 0-9 and '-' only (it becomes a file name), not '" + value + "'");
       step.figure = value;
+    } else if (key == "caption") {
+      if (value.empty()) fail(where.line, "a caption needs text");
+      step.caption = value;
+      step.captionLine = where.line;
     } else if (key == "controls") {
       for (const auto& c : parseList(value)) {
         const StepKey* control = findStepKey(c);
@@ -367,6 +371,8 @@ class Parser {
     if (!step.views.empty() && step.figure.empty())
       fail(lineOf("views"), "a step with views needs a 'figure' name");
     if (step.views.empty() && !step.figure.empty()) fail(lineOf("figure"), "a figure needs 'views' to show");
+    if (step.views.empty() && !step.caption.empty())
+      fail(lineOf("caption"), "a caption needs a figure to caption");
     if (p.subdivide && p.maxEdge) fail(lineOf("max-edge"), "give either 'subdivide' or 'max-edge', not both");
     for (View v : step.views) {
       if (!stageOffersView(step.stage, v))

@@ -527,6 +527,9 @@ std::vector<StepKey> makeTable() {
        "Surfaces or element numbers to outline."});
   add({"figure", KeyType::Text, 0, 0, nullptr, "", "Figure",
        "Base name of the step's figure files (a-z, 0-9, '-')."});
+  add({"caption", KeyType::Text, 0, 0, nullptr, "", "Caption",
+       "The caption of the step's first figure in the book and the figures tab: what the reader should see "
+       "in it, with {{placeholders}} for its numbers. Without it the view's own title is the caption."});
   add({"controls", KeyType::Text, 0, 0, nullptr, "", "Controls",
        "The keys of this table marked as controls that the app lets the reader change on this step."});
   return t;

@@ -249,4 +249,11 @@ std::string resolvedText(const Lesson& lesson, const Step& step, const StepResul
       result.valueNames());
 }
 
+std::string resolvedCaption(const Lesson& lesson, const Step& step, const StepResult& result) {
+  if (step.caption.empty()) return {};
+  return resolvePlaceholders(
+      step.caption, step.captionLine, lesson.file,
+      [&](const std::string& name) { return result.value(name); }, result.valueNames());
+}
+
 }  // namespace rt::lesson

@@ -75,4 +75,7 @@ class StepRunner {
 // when the step computes no such value).
 std::string resolvedText(const Lesson& lesson, const Step& step, const StepResult& result);
 
+// The step's `caption` with its placeholders filled in the same way; empty when the step gives none.
+std::string resolvedCaption(const Lesson& lesson, const Step& step, const StepResult& result);
+
 }  // namespace rt::lesson

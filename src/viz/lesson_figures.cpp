@@ -8,6 +8,7 @@
 #include "core/formfactor/hemicube.h"
 #include "core/formfactor/ray_scene.h"
 #include "core/solvers/solver.h"
+#include "lesson/step_runner.h"
 #include "viz/chart.h"
 #include "viz/exact_visibility.h"
 #include "viz/hemicube_view.h"
@@ -394,8 +395,10 @@ std::vector<lesson::RenderedFigure> renderStepFigures(const lesson::Lesson& less
   std::filesystem::create_directories(dir);
   for (std::size_t k = 0; k < files.size(); ++k) {
     const std::string path = (std::filesystem::path(dir) / files[k]).string();
-    const std::string caption = renderView(step.views[k], step, result, settings, path);
-    figures.push_back({lesson.id + "/" + files[k], caption});
+    // The picture keeps the view's short title; the book and the figures tab take the lesson's caption.
+    const std::string title = renderView(step.views[k], step, result, settings, path);
+    const std::string caption = k == 0 ? lesson::resolvedCaption(lesson, step, result) : std::string();
+    figures.push_back({lesson.id + "/" + files[k], caption.empty() ? title : caption});
   }
   return figures;
 }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "core/input_error.h"
+#include "lesson/step_runner.h"
 
 namespace rt::lesson {
 namespace {
@@ -121,6 +122,29 @@ TEST(LessonParser, ErrorsNameTheLine) {
   EXPECT_EQ(errorLine(goodWith("{{rowsum[0]:.2f}}", "{{rowsum[0]:fancy}}")), 37);
   EXPECT_EQ(errorLine(goodWith("{{rowsum[0]:.2f}}", "{{rowsum[0]")), 37);
   EXPECT_EQ(errorLine(goodWith("views: scene, formfactor", "views: scene, convergence")), 29);  // wrong stage
+}
+
+// A step's caption is its first figure's, with placeholders filled from the step's result; it needs a figure.
+TEST(LessonParser, ACaptionBelongsToTheFirstFigureAndTakesPlaceholders) {
+  const Lesson l = parseLesson(
+      goodWith("figure: squares-ff\n", "figure: squares-ff\ncaption: F is {{F:.3f}}\n"), "x", "x.md");
+  EXPECT_EQ(l.steps[1].caption, "F is {{F:.3f}}");
+  EXPECT_EQ(l.steps[1].captionLine, 32);
+  StepResult r;
+  r.values["F"] = 0.19982;
+  EXPECT_EQ(resolvedCaption(l, l.steps[1], r), "F is 0.200");
+  EXPECT_EQ(resolvedCaption(l, l.steps[0], r), "") << "no caption: the view's own title stays";
+  r.values.clear();
+  try {
+    resolvedCaption(l, l.steps[1], r);
+    ADD_FAILURE() << "an unknown placeholder in a caption is an error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.where().line, 32);
+  }
+  EXPECT_EQ(errorLine(goodWith("figure: squares-ff\n", "figure: squares-ff\ncaption:\n")), 32);
+  EXPECT_EQ(
+      errorLine(goodWith("stage: scene\nviews: scene\nfigure: squares\n", "stage: scene\ncaption: Two\n")),
+      15);
 }
 
 TEST(LessonParser, DuplicateFigureFilesAreRejected) {
