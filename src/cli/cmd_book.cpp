@@ -99,6 +99,10 @@ void book(BookOptions o) {
                                           QString::fromStdString((out / "book.pdf").string()));
   fs::remove(print);
   if (!printed.maths.errors.empty()) fail(printed.maths.errors, "formula(s) did not typeset in the PDF");
+  // Not an error: the page is still readable, but the equation wants a line break (aligned, or split).
+  for (const auto& wide : printed.tooWide)
+    std::cerr << (out / "book.pdf").string() << ", " << wide
+              << ": warning: the equation is wider than the text\n";
   std::cout << out.string() << "/book.pdf: " << printed.pages << " pages\n";
 }
 #endif

@@ -206,6 +206,7 @@ body.print { font-size: 11pt; }
 .print .page { width: 210mm; height: 296.8mm; position: relative; overflow: hidden; box-sizing: border-box;
                padding: 20mm 22mm 24mm; break-after: page; contain: strict; }
 .print .page-body { height: 100%; overflow: hidden; }
+.print .page-body > :first-child { margin-top: 0; }  /* a page's top edge is its first block's space */
 .print .page-number { position: absolute; bottom: 12mm; left: 0; right: 0; text-align: center;
                       font-family: "DejaVu Sans", sans-serif; font-size: 9pt; color: #333; }
 .print figure img { max-height: 110mm; max-width: 100%; }

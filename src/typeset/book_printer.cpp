@@ -17,10 +17,12 @@ namespace {
 // The blocks are measured in one layout (the flow set at the page's width) and grouped by their heights;
 // laying out after every block instead costs a layout of the whole document per block, minutes for a
 // document of 250 pages. A list or table taller than a page is split between its items or rows (a page clips
-// what overflows it). A check per page then moves what still overflows (margins count differently at a page
-// top) to a new page after it, so that no later page changes. Then numbers the pages (not a book's title
-// page; a document's first page is numbered), writes each contents line's page and turns each index link into
-// the page number of the use it points to, each page once per term. Returns the page count.
+// what overflows it). A check per page then moves what still overflows (the measures are of one long flow,
+// not of pages) to the top of the next page of the same chapter, or to a new page at a chapter's end; the
+// next page is checked in turn, so no page is left holding a stray line. Then numbers the pages (not a book's
+// title page; a document's first page is numbered), writes each contents line's page and turns each index
+// link into the page number of the use it points to, each page once per term. Returns, as JSON, the page
+// count and the displayed equations wider than the text.
 const char* kPaginate = R"JS((function () {
   var flow = document.getElementById('flow');
   var blocks = Array.prototype.slice.call(flow.children);
@@ -111,9 +113,12 @@ const char* kPaginate = R"JS((function () {
   for (var p = 0; p < pages.length; ++p) {
     var body = pages[p].firstChild;
     if (body.scrollHeight <= body.clientHeight + 1 || body.children.length < 2) continue;
-    var fresh = newPage(pages[p].nextSibling);
-    pages.splice(p + 1, 0, fresh);
-    var into = fresh.firstChild;
+    var next = pages[p + 1];
+    if (!next || !next.firstChild.firstElementChild || startsPage(next.firstChild.firstElementChild)) {
+      next = newPage(pages[p].nextSibling);
+      pages.splice(p + 1, 0, next);
+    }
+    var into = next.firstChild;
     while (body.scrollHeight > body.clientHeight + 1 && body.children.length > 1) {
       into.insertBefore(body.lastElementChild, into.firstChild);
       if (body.children.length > 1 && isHeading(body.lastElementChild))
@@ -152,7 +157,16 @@ const char* kPaginate = R"JS((function () {
       entry.appendChild(link);
     });
   });
-  return pages.length;
+  // Displayed equations wider than the text: print shows them cut, with a scroll bar.
+  var tooWide = [];
+  pages.forEach(function (page, i) {
+    page.querySelectorAll('.katex-display').forEach(function (display) {
+      if (display.scrollWidth <= display.clientWidth + 1) return;
+      var tex = display.querySelector('annotation');
+      tooWide.push('page ' + (i + 1) + ': ' + (tex ? tex.textContent.replace(/\s+/g, ' ').trim() : '?'));
+    });
+  });
+  return JSON.stringify({ pages: pages.length, tooWide: tooWide });
 })())JS";
 
 }  // namespace
@@ -171,7 +185,9 @@ PrintedBook printBook(const QString& htmlFile, const QString& pdfFile) {
   page.run("document.fonts.ready.then(function () { window.rtFontsReady = true; }); true");
   page.waitFor("window.rtFontsReady === true", 20000);
   page.waitFor("Array.prototype.every.call(document.images, function (i) { return i.complete; })", 20000);
-  book.pages = page.run(kPaginate).toInt();
+  const QJsonObject laidOut = QJsonDocument::fromJson(page.run(kPaginate).toString().toUtf8()).object();
+  book.pages = laidOut.value("pages").toInt();
+  for (const auto& e : laidOut.value("tooWide").toArray()) book.tooWide.push_back(e.toString().toStdString());
   if (!page.printToPdf(pdfFile)) throw std::runtime_error(pdfFile.toStdString() + ": cannot write the PDF");
   // WebEngine writes the PDF for its owner only; a book or a handout is for handing out.
   QFile::setPermissions(pdfFile,

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <QString>
+#include <string>
+#include <vector>
 
 #include "typeset/typesetter.h"
 
@@ -12,6 +14,7 @@ namespace rt::typeset {
 struct PrintedBook {
   int pages = 0;
   MathsReport maths;
+  std::vector<std::string> tooWide;  // displayed equations wider than the text: "page N: <TeX>"
 };
 
 // Also prints any document written by lesson::printDocumentHtml (handouts, answer keys). The PDF is readable

@@ -116,6 +116,8 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
   if (status != 0 && log.find("no typesetting") != std::string::npos)
     GTEST_SKIP() << "built without typesetting";
   ASSERT_EQ(status, 0) << log;
+  // Every displayed equation fits the printed page's text width (the printer names those that do not).
+  EXPECT_EQ(log.find("wider than the text"), std::string::npos) << log;
 
   // The site: an index and one page per lesson, everything typeset, no address outside the site.
   const auto titles = lessonTitles();
@@ -253,17 +255,25 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
   int page = 0, figures = 0;
   std::string previous;
   double previousTop = 0;
+  // Per page: its first word and how far down its text reaches (the page number at the foot aside).
+  std::vector<std::string> firstWords;
+  std::vector<double> textBottoms;
+  const double footer = 297 / 25.4 * 72 - 24 / 25.4 * 72;  // A4, 24 mm bottom margin, in points
   const std::regex tokens("<page [^>]*>|<word [^>]*>[^<]*</word>");
   for (std::sregex_iterator it(boxes.begin(), boxes.end(), tokens), end; it != end; ++it) {
     const std::string token = it->str();
     if (token.rfind("<page", 0) == 0) {
       ++page;
+      firstWords.emplace_back();
+      textBottoms.push_back(0);
       continue;
     }
     std::smatch w;
     if (!std::regex_match(token, w, word)) continue;
     const std::string text = w[5];
     const double top = std::stod(w[2]);
+    if (firstWords.back().empty()) firstWords.back() = text;
+    if (std::stod(w[4]) < footer) textBottoms.back() = std::max(textBottoms.back(), std::stod(w[4]));
     if (previous == "Figure" && std::regex_match(text, std::regex("\\d+\\.\\d+\\.")) &&
         std::abs(top - previousTop) < 1) {
       ++figures;
@@ -284,6 +294,18 @@ TEST(BookCommand, WritesATypesetSiteAndAPdfOfEveryLesson) {
     previousTop = top;
   }
   EXPECT_GT(figures, static_cast<int>(titles.size())) << "figure captions found in the PDF";
+
+  // No page inside a chapter is left nearly empty: a page the chapter goes on after is filled at least a
+  // third of the way down (a figure too tall for the rest of a page may leave up to about half empty).
+  const double bodyTop = 20 / 25.4 * 72;
+  bool inChapters = false;
+  for (std::size_t p = 0; p + 1 < textBottoms.size(); ++p) {
+    inChapters = inChapters || firstWords[p] == "Chapter";
+    if (!inChapters || firstWords[p + 1] == "Chapter" || firstWords[p + 1].empty()) continue;
+    EXPECT_GT((textBottoms[p] - bodyTop) / (footer - bodyTop), 1.0 / 3)
+        << "page " << p + 1 << " is nearly empty though its chapter goes on (its text ends at "
+        << textBottoms[p] << " pt)";
+  }
 }
 
 TEST(BookCommand, AFormulaThatCannotBeTypesetIsAnErrorAtItsLine) {
