@@ -8,7 +8,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 39> kViews{{
+constexpr std::array<std::pair<View, const char*>, 40> kViews{{
     {View::Scene, "scene"},
     {View::BasisError, "basis-error"},
     {View::FormFactor, "formfactor"},
@@ -48,6 +48,7 @@ constexpr std::array<std::pair<View, const char*>, 39> kViews{{
     {View::SamplingError, "sampling-error"},
     {View::Discontinuity, "discontinuity"},
     {View::Glossy, "glossy"},
+    {View::TVertices, "t-vertices"},
 }};
 
 }  // namespace
@@ -104,7 +105,7 @@ const std::vector<StageInfo>& stageTable() {
       {Stage::Refine,
        "refine",
        "an adaptive, discontinuity or hierarchical mesh and its B; with `discontinuity`, its critical lines",
-       {V::Scene, V::Discontinuity}},
+       {V::Scene, V::Discontinuity, V::TVertices}},
       {Stage::Exercise,
        "exercise",
        "a homework exercise of `topic` drawn with `seed`: questions, Check, hint, worked solution",

@@ -82,6 +82,7 @@ enum class View {
   Discontinuity,  // refine stage: the mesh with its critical lines, umbra/penumbra boundaries apart
   Glossy,         // raytrace stage: the mirrors ideal beside the same mirrors glossy (gloss, pixel-samples)
   BasisError,     // elements stage: error against elements per basis, log-log, with the fitted orders
+  TVertices,      // refine stage: the mesh with its T-vertices and the long edges they split
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.

@@ -375,6 +375,13 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
              " mesh with its critical lines: " + std::to_string(counts.extremal) +
              " umbra and penumbra boundaries, " + std::to_string(counts.interior) + " lines inside penumbrae";
     }
+    case View::TVertices: {
+      if (!r.refined) throw std::runtime_error(path + ": the step refined no mesh");
+      DiscontinuityViewOptions o;
+      o.size = {s.width, s.height, 96.0};
+      o.image = sceneOptions(step, r, s).image;
+      return writeTVertexFigure(*r.refined, r.camera, o, path);
+    }
     case View::BasisError:
       return detail::renderBasisErrorView(r, s, path);
   }

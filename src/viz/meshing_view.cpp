@@ -230,28 +230,49 @@ CriticalLineCounts countCriticalLines(const RefinedSolution& solution) {
   return counts;
 }
 
-void writeDiscontinuityFigure(const RefinedSolution& solution, const Camera& camera,
-                              const DiscontinuityViewOptions& options, const std::string& path) {
-  figureFormatOf(path);
-  const double scale = options.size.fontScale();
+namespace {
+
+// The refined mesh's radiosity with its element edges light and thin, in a window of the figure's size: the
+// lines or points drawn over it are what the meshing views are about.
+vtkSmartPointer<vtkRenderer> refinedMeshRenderer(const RefinedSolution& solution, const Camera& camera,
+                                                 const DiscontinuityViewOptions& options,
+                                                 vtkRenderWindow* window) {
   SceneViewOptions sceneOptions;
   sceneOptions.image = options.image;
   sceneOptions.image.width = options.size.width;
   sceneOptions.image.height = options.size.height;
   sceneOptions.image.showEdges = true;
-  // Element edges light and thin: the critical lines are what this view is about.
   sceneOptions.edgeColour = {0.55, 0.55, 0.58};
   sceneOptions.edgeWidth = 0.75;
   sceneOptions.dpi = options.size.dpi;
   SceneViewData data;
   data.B = solution.B;
   const ScenePaint paint = paintScene(solution.mesh, data, sceneOptions);
-
-  auto window = makeOffscreenWindow(options.size.width, options.size.height);
   const double full[4] = {0, 0, 1, 1};
   vtkSmartPointer<vtkRenderer> renderer =
       makeSceneRenderer(solution.mesh, camera, paint, sceneOptions, options.size.height, full);
   window->AddRenderer(renderer);
+  return renderer;
+}
+
+// A line of the key at the foot of a figure, in (a readable shade of) the colour of what it names.
+void addKeyLine(vtkRenderer* renderer, const std::string& text, const Colour& colour, int font, double x) {
+  auto key = makeCaption(text, font);
+  key->GetTextProperty()->SetColor(colour[0], colour[1], colour[2]);
+  key->GetTextProperty()->SetBackgroundColor(0.12, 0.12, 0.13);
+  key->GetTextProperty()->SetBackgroundOpacity(0.8);
+  key->GetPositionCoordinate()->SetValue(x, 0.06);
+  renderer->AddViewProp(key);
+}
+
+}  // namespace
+
+void writeDiscontinuityFigure(const RefinedSolution& solution, const Camera& camera,
+                              const DiscontinuityViewOptions& options, const std::string& path) {
+  figureFormatOf(path);
+  const double scale = options.size.fontScale();
+  auto window = makeOffscreenWindow(options.size.width, options.size.height);
+  vtkSmartPointer<vtkRenderer> renderer = refinedMeshRenderer(solution, camera, options, window);
 
   const double lift = 0.002 * sceneSize(solution.mesh);
   std::vector<Vec3> extremal, interior;
@@ -276,22 +297,44 @@ void writeDiscontinuityFigure(const RefinedSolution& solution, const Camera& cam
   renderer->AddViewProp(makeCaption(caption, font, options.size.width));
   // The key at the bottom, in the lines' own colours.
   const CriticalLineCounts counts = countCriticalLines(solution);
-  char line[160];
-  std::snprintf(line, sizeof line, "umbra / penumbra boundary (%zu)", counts.extremal);
-  auto key = makeCaption(line, static_cast<int>(0.85 * font));
-  key->GetTextProperty()->SetColor(vermillion[0] * 1.15, vermillion[1] * 1.15, vermillion[2]);
-  key->GetTextProperty()->SetBackgroundColor(0.12, 0.12, 0.13);
-  key->GetTextProperty()->SetBackgroundOpacity(0.8);
-  key->GetPositionCoordinate()->SetValue(0.3, 0.06);
-  renderer->AddViewProp(key);
-  std::snprintf(line, sizeof line, "inside the penumbra (%zu)", counts.interior);
-  auto key2 = makeCaption(line, static_cast<int>(0.85 * font));
-  key2->GetTextProperty()->SetColor(sky[0], sky[1], sky[2]);
-  key2->GetTextProperty()->SetBackgroundColor(0.12, 0.12, 0.13);
-  key2->GetTextProperty()->SetBackgroundOpacity(0.8);
-  key2->GetPositionCoordinate()->SetValue(0.75, 0.06);
-  renderer->AddViewProp(key2);
+  const int keyFont = static_cast<int>(0.85 * font);
+  addKeyLine(renderer, "umbra / penumbra boundary (" + std::to_string(counts.extremal) + ")",
+             {vermillion[0] * 1.15, vermillion[1] * 1.15, vermillion[2]}, keyFont, 0.3);
+  addKeyLine(renderer, "inside the penumbra (" + std::to_string(counts.interior) + ")", sky, keyFont, 0.75);
   writeRenderWindow(window, path, options.size.dpi);
+}
+
+std::string writeTVertexFigure(const RefinedSolution& solution, const Camera& camera,
+                               const DiscontinuityViewOptions& options, const std::string& path) {
+  figureFormatOf(path);
+  const double scale = options.size.fontScale();
+  auto window = makeOffscreenWindow(options.size.width, options.size.height);
+  vtkSmartPointer<vtkRenderer> renderer = refinedMeshRenderer(solution, camera, options, window);
+
+  // Each T-vertex as a dot, and the whole long edge it splits, which the large element alone interpolates.
+  const double size = sceneSize(solution.mesh);
+  std::vector<Vec3> edges, dots;
+  for (const TVertex& v : solution.tVertices) {
+    edges.push_back(towards(solution.mesh.vertices[v.edgeStart], camera, 0.002 * size));
+    edges.push_back(towards(solution.mesh.vertices[v.edgeEnd], camera, 0.002 * size));
+    dots.push_back(towards(solution.mesh.vertices[v.vertex], camera, 0.004 * size));
+  }
+  const Colour vermillion{0.835, 0.369, 0.0}, sky{0.337, 0.706, 0.914};
+  if (!edges.empty()) renderer->AddActor(linesActor(edges, sky, 2.5 * scale));
+  if (!dots.empty()) renderer->AddActor(pointsActor(dots, vermillion, 0.006 * size));
+  renderer->ResetCameraClippingRange();
+
+  const int font = readableFontSize(options.size.height, scale, 0.028);
+  const std::string caption = options.caption.empty()
+                                  ? std::to_string(solution.mesh.size()) + " elements, " +
+                                        std::to_string(solution.tVertices.size()) + " T-vertices"
+                                  : options.caption;
+  renderer->AddViewProp(makeCaption(caption, font, options.size.width));
+  const int keyFont = static_cast<int>(0.85 * font);
+  addKeyLine(renderer, "T-vertex", {vermillion[0] * 1.15, vermillion[1] * 1.15, vermillion[2]}, keyFont, 0.3);
+  addKeyLine(renderer, "the long edge it splits", sky, keyFont, 0.7);
+  writeRenderWindow(window, path, options.size.dpi);
+  return caption;
 }
 
 }  // namespace rt::viz

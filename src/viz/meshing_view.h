@@ -3,7 +3,8 @@
 //    the nodes that exchange light drawn as lines between the nodes' centres, coloured by the deeper end's
 //    level or by the link's form factor;
 //  - discontinuity: the refined mesh (radiosity, element edges) with the critical segments over it, umbra and
-//    outer penumbra boundaries (extremal lines) apart from the lines inside the penumbra.
+//    outer penumbra boundaries (extremal lines) apart from the lines inside the penumbra;
+//  - t-vertices: the refined mesh with its hanging vertices and the long edges they split.
 // The refined mesh alone is the scene view of the solution with edges (writeSceneFigure). Public header: no
 // VTK.
 #pragma once
@@ -57,5 +58,10 @@ CriticalLineCounts countCriticalLines(const RefinedSolution& solution);
 // file cannot be written. A solution without critical segments is drawn with a caption saying so.
 void writeDiscontinuityFigure(const RefinedSolution& solution, const Camera& camera,
                               const DiscontinuityViewOptions& options, const std::string& path);
+
+// The refined mesh with its T-vertices as dots and the long edges they split drawn over it (the radiosity as
+// `options.image` sets it, smooth or flat). Returns the caption drawn on it. Throws as the one above.
+std::string writeTVertexFigure(const RefinedSolution& solution, const Camera& camera,
+                               const DiscontinuityViewOptions& options, const std::string& path);
 
 }  // namespace rt::viz

@@ -1,10 +1,12 @@
-// The meshing views' data: which links a leaf gathers over, and the kinds of critical lines.
+// The meshing views' data: which links a leaf gathers over, the kinds of critical lines, and the T-vertices
+// the T-vertex view marks.
 #include <gtest/gtest.h>
 
 #include "core/io/scene_loader.h"
 #include "core/polygon.h"
 #include "support/test_paths.h"
 #include "viz/meshing_view.h"
+#include "viz/viz_test_support.h"
 
 namespace rt::viz {
 namespace {
@@ -50,6 +52,25 @@ TEST(DiscontinuityView, CountsBothKindsOfCriticalLines) {
   const CriticalLineCounts counts = countCriticalLines(s);
   EXPECT_EQ(counts.extremal + counts.interior, s.discontinuities.size());
   EXPECT_GT(counts.extremal, 0u);  // the blocks cast shadows with umbra and penumbra boundaries
+}
+
+// The T-vertex view draws every hanging vertex and its long edge over the mesh: without them the same
+// picture differs, and the caption counts them.
+TEST(TVertexView, MarksTheHangingVerticesOverTheMesh) {
+  const RefinedSolution s = cornellBox(RefineMode::Adaptive);
+  ASSERT_FALSE(s.tVertices.empty());
+  Camera camera;
+  camera.position = {278, 273, -800};
+  camera.target = {278, 273, 280};
+  DiscontinuityViewOptions options;
+  options.size = {480, 360, 96.0};
+  const std::string dir = test::scratchDir("t-vertices");
+  const std::string caption = writeTVertexFigure(s, camera, options, dir + "/marked.png");
+  EXPECT_NE(caption.find(std::to_string(s.tVertices.size()) + " T-vertices"), std::string::npos) << caption;
+  RefinedSolution unmarked = s;
+  unmarked.tVertices.clear();
+  writeTVertexFigure(unmarked, camera, options, dir + "/unmarked.png");
+  EXPECT_GT(vizt::pngDifference(dir + "/marked.png", dir + "/unmarked.png"), 0.5);
 }
 
 }  // namespace
