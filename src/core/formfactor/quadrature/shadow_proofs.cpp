@@ -5,12 +5,10 @@
 
 #include "core/formfactor/quadrature/shadow_clipper.h"
 #include "core/formfactor/quadrature/shadow_clipper_detail.h"
+#include "core/geometry/plane_clip.h"
+#include "core/geometry/segment_clip.h"
 
 namespace rt {
-
-using shadow_detail::centreOf;
-using shadow_detail::copyPolygon;
-using shadow_detail::splitAt;
 
 bool polygonCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
                              const Vec3* polygon, int count, const Vec3& normal, double offset, double eps) {
@@ -33,8 +31,8 @@ bool polygonCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, in
   return true;
 }
 
-double shadowEps(const SmallPolygon& source, const SmallPolygon& receiver) {
-  const Vec3 cs = centreOf(source), cr = centreOf(receiver);
+double shadowEps(const ConvexPolygon& source, const ConvexPolygon& receiver) {
+  const Vec3 cs = source.centre(), cr = receiver.centre();
   double size = (cs - cr).norm();
   for (int k = 0; k < source.count; ++k)
     size = std::max(size, (source.v[static_cast<std::size_t>(k)] - cr).norm());
@@ -56,17 +54,10 @@ bool segmentEntersSolid(const Vec3& p, const Vec3& q, const SolidPlanes& solid, 
   double t0 = 0, t1 = 1;
   const Vec3 d = q - p;
   for (const auto& [n, offset] : solid) {
-    const double start = n.dot(p) - offset + eps, rate = n.dot(d);  // inside where start + rate t < 0
-    if (rate == 0) {
-      if (start >= 0) return false;
-      continue;
-    }
-    const double t = -start / rate;
-    if (rate > 0)
-      t1 = std::min(t1, t);
-    else
-      t0 = std::max(t0, t);
-    if (t0 >= t1) return false;
+    // Inside where start + rate t < 0 (outward normals): the open half-space -start - rate t > 0, and a
+    // segment parallel to a face inside only strictly below it.
+    const double start = n.dot(p) - offset + eps, rate = n.dot(d);
+    if (!clipRange(-start, -rate, 0.0, Boundary::Open, t0, t1)) return false;
   }
   return true;
 }
@@ -77,7 +68,7 @@ bool solidOutsideHullOf(const Vec3* a, int na, const Vec3* b, int nb, const Vec3
   // All of the edge's polygon lies on its centre's side of each plane; the solid's corners are tested first,
   // as most planes have some on that side.
   auto separates = [&](const Vec3* edges, int ne, const Vec3* others, int no) {
-    const Vec3 centre = centreOf(edges, ne);
+    const Vec3 centre = cornerMean(edges, ne);
     return shadow_detail::forEachEdgeCornerPlane(
         edges, ne, others, no, eps, [&](const Vec3& p, Vec3 n, double margin2) {
           auto beyond = [&](double d) { return d > 0 && d * d > margin2; };
@@ -100,7 +91,7 @@ bool solidCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int 
   for (int p = 0; p < fromCount; ++p) fromCentre += from[p];
   for (int p = 0; p < toCount; ++p) toCentre += to[p];
   const Vec3 sight = (toCentre / toCount - fromCentre / fromCount).normalized();
-  SmallBuffer<double, SmallPolygon::kInline> heights;
+  SmallBuffer<double, ConvexPolygon::kInline> heights;
   heights.reserve(toCount);
   for (std::size_t plane = 0; plane <= solid.size(); ++plane) {
     const Vec3 normal = plane == 0 ? sight : solid[plane - 1].first;
@@ -155,7 +146,7 @@ double ShadowClipper::probeShadow(const SourcePanel& panel, const std::vector<in
                                   long& points) const {
   const Vec3& origin = panel.v[0];
   double best = 0;
-  SmallPolygon projected, clipped;
+  ConvexPolygon projected, clipped;
   // The panel's edge planes (through its edges along the source's normal, facing in), found once for all
   // probes.
   Vec3 edgeNormals[4];
@@ -172,22 +163,22 @@ double ShadowClipper::probeShadow(const SourcePanel& panel, const std::vector<in
   auto probe = [&]() {
     if (projected.count < 3) return;
     for (int k = 0; k < panel.count; ++k) {
-      const int side = splitAt(projected, panel.v[static_cast<std::size_t>(k)], edgeNormals[k], margins2[k],
-                               clipped, nullptr);
+      const int side = splitByPlane(projected, panel.v[static_cast<std::size_t>(k)], edgeNormals[k],
+                                    margins2[k], clipped, nullptr);
       if (side < 0) return;  // wholly outside the panel
       if (side == 0) {
         if (clipped.count < 3) return;
-        copyPolygon(clipped, projected);
+        projected.assign(clipped);
       }
     }
-    const Vec3 x = centreOf(projected);
+    const Vec3 x = projected.centre();
     for (int k = 0; k < probedCount; ++k)
       if ((probed[k] - x).cwiseAbs().maxCoeff() <= eps_) return;
     if (probedCount < 64) probed[probedCount++] = x;
     best = std::max(best, hidden(x, occluders));
     ++points;
   };
-  SmallBuffer<double, SmallPolygon::kInline> receiverHeight;
+  SmallBuffer<double, ConvexPolygon::kInline> receiverHeight;
   receiverHeight.reserve(receiver_.count);
   for (int r = 0; r < receiver_.count; ++r)
     receiverHeight[r] = sourceNormal_.dot(receiver_.v[static_cast<std::size_t>(r)] - origin);
@@ -205,10 +196,10 @@ double ShadowClipper::probeShadow(const SourcePanel& panel, const std::vector<in
   // shadows that the front faces' missed on the 612-wall grid room, 1.2e-5 off without them.)
   std::vector<Vec3>& probedCorners = probed_;
   probedCorners.clear();
-  SmallBuffer<double, SmallPolygon::kInline> heights;  // of an occluder's corners
+  SmallBuffer<double, ConvexPolygon::kInline> heights;  // of an occluder's corners
   for (int index : occluders) {
     const Occluder& occluder = prepared_[static_cast<std::size_t>(index)];
-    const SmallPolygon& o = occluder.polygon;
+    const ConvexPolygon& o = occluder.polygon;
     heights.reserve(o.count);
     for (int k = 0; k < o.count; ++k)
       heights[k] = sourceNormal_.dot(o.v[static_cast<std::size_t>(k)] - origin);
