@@ -43,7 +43,7 @@ TEST(GeometryPlaneClip, CornersWithinTheMarginCountAsOnThePlane) {
   EXPECT_EQ(splitByPlane(square(), Vec3(1 - 1e-12, 0, 0), kAlongX, eps * eps, front, &back), -1);
   // With no margin the same plane cuts a sliver off.
   EXPECT_EQ(splitByPlane(square(), Vec3(1e-12, 0, 0), kAlongX, 0.0, front, &back), 0);
-  EXPECT_NEAR(back.area(), 1e-12, 1e-24);
+  EXPECT_NEAR(back.area(), 1e-12, 1e-16);  // (Newell's sum at coordinates of 1: rounding of 1e-16)
 }
 
 // clipToFront(): eps in lengths, whatever the normal's length; whole when nothing is behind, empty when
@@ -77,11 +77,11 @@ TEST(GeometryPlaneClip, TheContactCutRepeatsACornerOnThePlane) {
   // x >= 0 through corners 0 and 2, corner 1 in front: nothing behind, both keep the triangle.
   EXPECT_EQ(clipToHalfspaceTwiceOnPlane(triangle, Vec3(0, 0, 0), kAlongX), triangle);
   // x <= 0: corners 0 and 2 on the plane, corner 1 behind. Common: the edge 0-2, no area, empty. Contact
-  // cut: corner 0, the crossing at corner 0 again... four corners of no area, which its caller drops only
-  // by their count.
+  // cut: each corner on the plane twice, itself and the crossing of its edge to corner 1; four corners of
+  // no area, which its caller keeps as a piece by their count.
   EXPECT_TRUE(clipToHalfspace(triangle, Vec3(0, 0, 0), -kAlongX).empty());
   const Polygon repeated = clipToHalfspaceTwiceOnPlane(triangle, Vec3(0, 0, 0), -kAlongX);
-  EXPECT_EQ(repeated, (Polygon{{0, 0, 0}, {0, 0, 0}, {0, 1, 0}}));
+  EXPECT_EQ(repeated, (Polygon{{0, 0, 0}, {0, 0, 0}, {0, 1, 0}, {0, 1, 0}}));
 }
 
 // The 2D cells of the mesher cut by the same routine: heights from a line, both parts.

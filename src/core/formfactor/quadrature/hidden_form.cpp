@@ -7,7 +7,6 @@
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/lambert_four.h"
 #include "core/formfactor/quadrature/shadow_clipper.h"
-#include "core/formfactor/quadrature/shadow_clipper_detail.h"
 #include "core/formfactor/quadrature/solid_silhouette.h"
 #include "core/geometry/plane_clip.h"
 

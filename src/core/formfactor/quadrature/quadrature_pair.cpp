@@ -7,7 +7,6 @@
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/quadrature/closed_solids.h"
 #include "core/formfactor/quadrature/hidden_integral.h"
-#include "core/formfactor/quadrature/shadow_clipper_detail.h"
 #include "core/formfactor/quadrature/unoccluded_integral.h"
 #include "core/geometry/plane_clip.h"
 

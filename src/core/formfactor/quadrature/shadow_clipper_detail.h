@@ -1,5 +1,5 @@
-// Small helpers shared by the shadow clipper's two files (shadow_clipper.cpp: clipping; shadow_proofs.cpp:
-// the proofs that a receiver is wholly hidden and the probes for shadows the samples miss).
+// The hull planes of two convex polygons, shared by the shadow clipper (shadow_clipper.cpp) and the proofs
+// about every segment between two polygons (segment_proofs.cpp).
 #pragma once
 
 #include <algorithm>

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <utility>
 
-#include "core/formfactor/quadrature/shadow_clipper_detail.h"
 #include "core/formfactor/quadrature/solid_silhouette.h"
 #include "core/geometry/plane_clip.h"
 #include "core/geometry/segment_clip.h"
