@@ -10,6 +10,16 @@
 // - An edge adds its crossing only where its ends lie strictly on opposite sides, at
 //   p + (q - p) (h_p / (h_p - h_q)), to both parts; an edge that only touches the plane adds nothing.
 // - A part of fewer than 3 corners is empty (count 0, or a cleared vector).
+//
+// The tolerances, each the caller's own and kept as it always was:
+//   splitByPlane (shadow clipper's cones, event cells, probes)  d^2 <= margin2, i.e. |d| <= eps |n|
+//   clipToFront (occluders, sources and receivers)               |d| <= eps |n|; nothing in front: empty
+//   clipPolygonToPlane (analytic.h, Lambert's horizon clip)      |d| <= 1e-12 of the corners' distance
+//                                                                from the origin, times |n|
+//   clipToHalfspace (exact reference)                            none; nothing behind: kept whole
+//   the hemicube's frustum, the mesher's 2D cells, a block's     none
+//   umbra (block_shadow_regions)
+//   clipToHalfspaceTwiceOnPlane (contact lines)                  none, and its own crossing rule (below)
 #pragma once
 
 #include <type_traits>

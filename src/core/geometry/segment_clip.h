@@ -12,6 +12,15 @@
 //   Closed one (a segment along the boundary is kept only by a Closed one).
 // - The range is empty once t0 >= t1: a range that narrows to one point is empty.
 // Callers that keep a margin put it into `start` (start - tolerance: inside by more than the tolerance).
+//
+// The callers, and the boundary each keeps as it always has:
+//   segmentEntersSolid (quadrature)     Open, margin eps, parallel: rate exactly 0
+//   segmentKeepsAPoint (quadrature)     Closed, margin in start, parallel: |rate| <= kTinyRate
+//   clipToInterior (contact lines)      Open, margin `tolerance`, parallel: |rate| < kTinyRate
+//   segmentCrossesCell (mesher)         Open, margin eps |edge|, parallel: |rate| < kTinyRate, then a
+//                                       range longer than 1e-9
+//   restrictRange (discontinuities)     Closed on both sides of a slab, parallel: |rate| < kTinyRate
+//   chord (exact reference)             Closed, no margin, a line (t unbounded), parallel: rate exactly 0
 #pragma once
 
 #include <algorithm>
@@ -36,7 +45,7 @@ inline bool clipRange(double start, double rate, double parallel, Boundary bound
 }
 
 // The callers' test for "parallel": rates below 1e-300 in size carry no direction (strictly below, as
-// `std::abs(rate) < 1e-300`, which is `<= kBelowTiny`).
+// `std::abs(rate) < 1e-300`, is `std::abs(rate) <= kBelowTinyRate`).
 inline constexpr double kTinyRate = 1e-300;
 inline const double kBelowTinyRate = std::nextafter(kTinyRate, 0.0);
 
