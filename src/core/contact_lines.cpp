@@ -4,21 +4,11 @@
 #include <cmath>
 #include <limits>
 
+#include "core/geometry/plane_clip.h"
+#include "core/geometry/segment_clip.h"
+
 namespace rt {
 namespace {
-
-// The part of the convex polygon where (x - origin) . side >= 0.
-Polygon keepSide(const Polygon& polygon, const Vec3& origin, const Vec3& side) {
-  Polygon out;
-  for (std::size_t k = 0; k < polygon.size(); ++k) {
-    const Vec3& a = polygon[k];
-    const Vec3& b = polygon[(k + 1) % polygon.size()];
-    const double fa = (a - origin).dot(side), fb = (b - origin).dot(side);
-    if (fa >= 0) out.push_back(a);
-    if ((fa < 0) != (fb < 0)) out.push_back(a + (fa / (fa - fb)) * (b - a));
-  }
-  return out;
-}
 
 // The segment a-b clipped to the convex polygon (CCW about normal); false when nothing is left or only a
 // part within `tolerance` of the boundary.
@@ -30,16 +20,7 @@ bool clipToInterior(Vec3& a, Vec3& b, const Polygon& polygon, const Vec3& normal
     const Vec3 inward = normal.cross(polygon[(k + 1) % polygon.size()] - e0).normalized();
     // Strictly inside, by more than the tolerance: a segment along an edge is no cut.
     const double fa = (a - e0).dot(inward) - tolerance, df = d.dot(inward);
-    if (std::abs(df) < 1e-300) {
-      if (fa <= 0) return false;
-      continue;
-    }
-    const double t = -fa / df;
-    if (df > 0)
-      t0 = std::max(t0, t);
-    else
-      t1 = std::min(t1, t);
-    if (t1 - t0 <= 0) return false;
+    if (!clipRange(fa, df, kBelowTinyRate, Boundary::Open, t0, t1)) return false;
   }
   const Vec3 start = a + t0 * d, end = a + t1 * d;
   a = start;
@@ -130,7 +111,7 @@ std::vector<Polygon> cutAtContacts(const Scene& scene, int index, double toleran
         continue;
       }
       for (const Vec3& s : {side, Vec3(-side)}) {
-        Polygon part = keepSide(piece, a, s);
+        Polygon part = clipToHalfspaceTwiceOnPlane(piece, a, s);
         if (part.size() >= 3) next.push_back(std::move(part));
       }
     }

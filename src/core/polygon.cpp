@@ -3,17 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/geometry/convex_polygon.h"
+
 namespace rt {
 
 Vec3 newellNormal(const Polygon& polygon) {
-  Vec3 n = Vec3::Zero();
-  const std::size_t count = polygon.size();
-  for (std::size_t i = 0; i < count; ++i) {
-    const Vec3& a = polygon[i];
-    const Vec3& b = polygon[(i + 1) % count];
-    n += a.cross(b);
-  }
-  return n;
+  return twiceAreaVector(polygon.data(), static_cast<int>(polygon.size()));
 }
 
 double polygonArea(const Polygon& polygon) {

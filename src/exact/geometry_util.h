@@ -1,17 +1,14 @@
-// Small double-precision helpers shared by the plain parts of the exact library (clipping, bounds, scales).
+// Small double-precision helpers shared by the plain parts of the exact library (bounds, scales).
 #pragma once
 
 #include <Eigen/Geometry>
 
+#include "core/geometry/plane_clip.h"
 #include "core/vec.h"
 
 namespace rt::exact {
 
-// Keeps the part of a convex polygon with normal . (p - point) >= 0 (Sutherland-Hodgman; points on the plane
-// kept).
-Polygon clipToHalfspace(const Polygon& polygon, const Vec3& point, const Vec3& normal);
-// The same into `out`, reusing its storage (the hot loops of the point evaluator allocate nothing).
-void clipToHalfspace(const Polygon& polygon, const Vec3& point, const Vec3& normal, Polygon& out);
+// (The half-space clip these parts use is core/geometry/plane_clip.h's clipToHalfspace.)
 
 // Lambert's contour sum -(1/2pi) sum_k beta_k n . gamma_k without a facing test (lambert.cpp): callers that
 // know the polygon faces x skip recomputing its normal.

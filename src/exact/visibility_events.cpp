@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 
+#include "core/geometry/segment_clip.h"
 #include "core/polygon.h"
 #include "exact/geometry_util.h"
 
@@ -120,16 +121,8 @@ bool chord(const Polygon& polygon, const Vec3& normal, const Vec3& p, const Vec3
     if (edge.squaredNorm() <= 1e-18 * size2) continue;
     Vec3 m = normal.cross(edge);
     if (m.dot(centre - c) < 0) m = -m;
-    const double f0 = m.dot(p - c), f1 = m.dot(d);  // inside: f0 + t f1 >= 0
-    if (f1 == 0) {
-      if (f0 < 0) return false;
-      continue;
-    }
-    const double t = -f0 / f1;
-    if (f1 > 0)
-      lo = std::max(lo, t);
-    else
-      hi = std::min(hi, t);
+    // Inside: f0 + t f1 >= 0 (a chord along an edge is kept).
+    if (!clipRange(m.dot(p - c), m.dot(d), 0.0, Boundary::Closed, lo, hi)) return false;
   }
   return lo < hi;
 }

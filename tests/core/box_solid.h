@@ -15,9 +15,9 @@
 
 namespace rt {
 
-// A SmallPolygon from its corners.
-inline SmallPolygon polygon(std::initializer_list<Vec3> corners) {
-  SmallPolygon p;
+// A ConvexPolygon from its corners.
+inline ConvexPolygon polygon(std::initializer_list<Vec3> corners) {
+  ConvexPolygon p;
   p.v.reserve(static_cast<int>(corners.size()));
   for (const Vec3& c : corners) p.v[static_cast<std::size_t>(p.count++)] = c;
   return p;
@@ -84,9 +84,9 @@ inline bool segmentMeetsBox(const Vec3& p, const Vec3& q, const Vec3& lo, const 
 
 // Whether some segment between grids of points (steps x steps each, bilinear over the corners 0..3) on two
 // quadrilaterals meets the box: what a proof that a block misses a pair is checked against.
-inline bool someSegmentMeetsBox(const SmallPolygon& a, const SmallPolygon& b, const Vec3& lo, const Vec3& hi,
-                                int steps) {
-  auto at = [](const SmallPolygon& q, double s, double t) {
+inline bool someSegmentMeetsBox(const ConvexPolygon& a, const ConvexPolygon& b, const Vec3& lo,
+                                const Vec3& hi, int steps) {
+  auto at = [](const ConvexPolygon& q, double s, double t) {
     return Vec3((1 - s) * ((1 - t) * q.v[0] + t * q.v[3]) + s * ((1 - t) * q.v[1] + t * q.v[2]));
   };
   for (int s = 0; s <= steps; ++s)

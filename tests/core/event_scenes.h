@@ -8,10 +8,10 @@
 
 namespace rt::event_scenes {
 
-inline const SmallPolygon kSource = polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});  // faces +z
-inline const SourcePanel kPanel{{kSource.v[0], kSource.v[1], kSource.v[2], kSource.v[3]}, 4};
+inline const ConvexPolygon kSource = polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});  // faces +z
+inline const SourcePanel kPanel{kSource.v[0], kSource.v[1], kSource.v[2], kSource.v[3]};
 inline const Vec3 kUp{0, 0, 1}, kDown{0, 0, -1};
-inline const SmallPolygon kReceiver =
+inline const ConvexPolygon kReceiver =
     polygon({{0.47, 0.37, 3}, {0.32, 0.52, 3}, {0.47, 0.67, 3}, {0.62, 0.52, 3}});  // faces -z
 // A slab whose edge sweeps across the receiver as x crosses the source (from one side nothing of the receiver
 // is hidden, from the other all of it), and a block whose corner's shadow crosses it as well; the planes of

@@ -13,6 +13,7 @@
 #include "core/formfactor/quadrature/quadrature_scene.h"
 #include "core/formfactor/quadrature/shadow_clipper.h"
 #include "core/formfactor/shaft_culling.h"
+#include "core/geometry/plane_clip.h"
 #include "occluder_room.h"
 
 namespace rt {
@@ -149,7 +150,7 @@ TEST(QuadraturePrismAndDiscRoom, SmallMeshMatchesTheReferenceOnEveryFloorElement
 // The clipper's own polygons keep every corner, however many: a 200-gon clipped by a plane through it.
 TEST(QuadratureClipCapacity, ClipKeepsEveryCornerPastTheInlineSize) {
   const Polygon disc = test::ngon(200, 0, 0, 1, 0);
-  SmallPolygon out;
+  ConvexPolygon out;
   EXPECT_TRUE(clipToFront(disc.data(), 200, Vec3(-2, 0, 0), Vec3(1, 0, 0), 1e-12, out));
   EXPECT_EQ(out.count, 200);
   clipToFront(disc.data(), 200, Vec3(0, 0, 0), Vec3(1, 0, 0), 1e-12, out);
@@ -161,8 +162,8 @@ TEST(QuadratureClipCapacity, ClipKeepsEveryCornerPastTheInlineSize) {
     area += 0.5 * (a.x() * b.y() - a.y() * b.x());
   }
   EXPECT_NEAR(area, 0.5 * 100 * std::sin(2 * std::numbers::pi / 200), 1e-12);
-  SmallPolygon copy = out;  // copies and moves keep the heap part
-  SmallPolygon moved = std::move(copy);
+  ConvexPolygon copy = out;  // copies and moves keep the heap part
+  ConvexPolygon moved = std::move(copy);
   EXPECT_EQ(moved.count, out.count);
   EXPECT_EQ(moved.v[100].x(), out.v[100].x());
 }

@@ -30,10 +30,10 @@ struct BlockPair {
   std::vector<SolidPlanes> solids;
   std::vector<Vec3> centres;
   ShadowClipper clipper;
-  std::vector<SmallPolygon> cells;
+  std::vector<ConvexPolygon> cells;
 };
 
-Vec3 centreOf(const SmallPolygon& cell) {
+Vec3 centreOf(const ConvexPolygon& cell) {
   Vec3 c = Vec3::Zero();
   for (int k = 0; k < cell.count; ++k) c += cell.v[static_cast<std::size_t>(k)];
   return c / cell.count;
@@ -45,7 +45,7 @@ TEST_P(HiddenForm, PlacesTheClippedOutlineThroughoutEachCell) {
   BlockPair s(*GetParam());
   ASSERT_GE(s.cells.size(), 3u);
   int placed = 0, partly = 0;
-  for (const SmallPolygon& cell : s.cells) {
+  for (const ConvexPolygon& cell : s.cells) {
     const Vec3 centre = centreOf(cell);
     ShadowClipper::HiddenForm form;
     double found = -1;  // what the clip that finds the form hides, where it hides part
@@ -82,7 +82,7 @@ TEST_P(HiddenForm, PlacesTheClippedOutlineThroughoutEachCell) {
 TEST_P(HiddenForm, IsRefusedWhereItFoldsOrOverruns) {
   BlockPair s(*GetParam());
   int refused = 0;
-  for (const SmallPolygon& cell : s.cells) {
+  for (const ConvexPolygon& cell : s.cells) {
     ShadowClipper::HiddenForm form;
     ASSERT_TRUE(s.clipper.formOf(centreOf(cell), s.clipper.occluders(), form));
     if (form.count < 3 || form.wholly) continue;
@@ -97,7 +97,7 @@ TEST_P(HiddenForm, IsRefusedWhereItFoldsOrOverruns) {
 
 TEST_P(HiddenForm, FourPointsAtOnceAsOneByOne) {
   BlockPair s(*GetParam());
-  for (const SmallPolygon& cell : s.cells) {
+  for (const ConvexPolygon& cell : s.cells) {
     const Vec3 centre = centreOf(cell);
     ShadowClipper::HiddenForm form;
     ASSERT_TRUE(s.clipper.formOf(centre, s.clipper.occluders(), form));

@@ -14,8 +14,8 @@
 namespace rt {
 namespace {
 
-SmallPolygon square(double x0, double y0, double size, double z, bool up) {
-  SmallPolygon p;
+ConvexPolygon square(double x0, double y0, double size, double z, bool up) {
+  ConvexPolygon p;
   const std::array<Vec3, 4> corners{
       Vec3{x0, y0, z}, {x0 + size, y0, z}, {x0 + size, y0 + size, z}, {x0, y0 + size, z}};
   for (int k = 0; k < 4; ++k)
@@ -29,7 +29,7 @@ TEST(PenumbraRegion, HoldsEveryShadedPointOfTheSourcesPlane) {
   const std::vector<SolidPlanes> planes{block.planes};
   const std::vector<Vec3> centres{block.centre};
   const std::vector<OccluderPolygon> occluders = block.occluders();
-  const SmallPolygon receiver = square(0.5, 0.5, 2.0, 3.0, false);  // the ceiling, facing down
+  const ConvexPolygon receiver = square(0.5, 0.5, 2.0, 3.0, false);  // the ceiling, facing down
   PenumbraRegion region;
   const SolidShape& shape = block.shapes[0];
   ASSERT_TRUE(region.build(shape.corners.data(), static_cast<int>(shape.corners.size()), receiver.v.data(),
@@ -38,7 +38,7 @@ TEST(PenumbraRegion, HoldsEveryShadedPointOfTheSourcesPlane) {
   int shaded = 0, clear = 0;
   for (double x0 = -3.0; x0 < 5.0; x0 += 0.5)
     for (double y0 = -3.0; y0 < 5.0; y0 += 0.5) {
-      const SmallPolygon source = square(x0, y0, 0.5, 0.0, true);
+      const ConvexPolygon source = square(x0, y0, 0.5, 0.0, true);
       const ShadowClipper clipper(source, Vec3::UnitZ(), receiver, -Vec3::UnitZ(), occluders, planes,
                                   &centres, &block.shapes);
       bool anyShade = false;
@@ -60,7 +60,7 @@ TEST(PenumbraRegion, NoRegionWhereTheBlockReachesTheReceiversHeight) {
   const Box block = box({1.0, 1.2, 0.0}, {1.6, 1.7, 2.0});
   // A wall element beside the block, lower than the block's top: seen from it, the block's top corners
   // project to infinity on the floor.
-  const SmallPolygon wall = polygon({{3, 0, 0.5}, {3, 3, 0.5}, {3, 3, 1.5}, {3, 0, 1.5}});
+  const ConvexPolygon wall = polygon({{3, 0, 0.5}, {3, 3, 0.5}, {3, 3, 1.5}, {3, 0, 1.5}});
   PenumbraRegion region;
   const SolidShape& shape = block.shapes[0];
   EXPECT_FALSE(region.build(shape.corners.data(), static_cast<int>(shape.corners.size()), wall.v.data(),

@@ -14,7 +14,7 @@
 namespace rt {
 namespace {
 
-const SmallPolygon kSource = polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});  // faces +z
+const ConvexPolygon kSource = polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});  // faces +z
 const Vec3 kUp{0, 0, 1}, kDown{0, 0, -1};
 
 void expectEveryPointHidden(const ShadowClipper& clipper) {
@@ -28,8 +28,8 @@ void expectEveryPointHidden(const ShadowClipper& clipper) {
 }
 
 TEST(ShadowClipper, AWideFaceBetweenParallelSquaresHidesAll) {
-  const SmallPolygon receiver = polygon({{0, 0, 2}, {0, 1, 2}, {1, 1, 2}, {1, 0, 2}});  // faces -z
-  const std::vector<Vec3> plate{{-1, -1, 1}, {-1, 2, 1}, {2, 2, 1}, {2, -1, 1}};        // faces -z
+  const ConvexPolygon receiver = polygon({{0, 0, 2}, {0, 1, 2}, {1, 1, 2}, {1, 0, 2}});  // faces -z
+  const std::vector<Vec3> plate{{-1, -1, 1}, {-1, 2, 1}, {2, 2, 1}, {2, -1, 1}};         // faces -z
   const std::vector<SolidPlanes> none;
   const ShadowClipper clipper(kSource, kUp, receiver, kDown, {{&plate, -1}}, none);
   ASSERT_EQ(clipper.occluders().size(), 1u);
@@ -38,7 +38,7 @@ TEST(ShadowClipper, AWideFaceBetweenParallelSquaresHidesAll) {
 }
 
 TEST(ShadowClipper, ASmallFaceHidesOnlyPart) {
-  const SmallPolygon receiver = polygon({{0, 0, 2}, {0, 1, 2}, {1, 1, 2}, {1, 0, 2}});
+  const ConvexPolygon receiver = polygon({{0, 0, 2}, {0, 1, 2}, {1, 1, 2}, {1, 0, 2}});
   const std::vector<Vec3> plate{{0.4, 0.4, 1}, {0.4, 0.6, 1}, {0.6, 0.6, 1}, {0.6, 0.4, 1}};
   const std::vector<SolidPlanes> none;
   const ShadowClipper clipper(kSource, kUp, receiver, kDown, {{&plate, -1}}, none);
@@ -54,7 +54,7 @@ TEST(ShadowClipper, ASmallFaceHidesOnlyPart) {
 // From the floor square to a ceiling square off to the side, the segments enter a block through its bottom
 // or its near side and leave through its far side or its top: no one face meets them all, the block does.
 TEST(ShadowClipper, ABlockHidesAllWhereNoOneOfItsFacesDoes) {
-  const SmallPolygon receiver = polygon({{3, 0, 3}, {3, 1, 3}, {4, 1, 3}, {4, 0, 3}});  // faces -z
+  const ConvexPolygon receiver = polygon({{3, 0, 3}, {3, 1, 3}, {4, 1, 3}, {4, 0, 3}});  // faces -z
   const Box block = box({1.2, -1, 0.5}, {2.8, 2, 2.5});
   std::vector<OccluderPolygon> faces;
   for (const auto& face : block.faces) faces.push_back({&face, 0});
@@ -103,7 +103,7 @@ TEST(SolidSilhouette, TheConeOverABoxHasItsOutlinesPlanes) {
 // Cut by its silhouette or face by face, a block between two squares hides the same part from every point of
 // the source, where it hides part of the receiver, all of it or nothing.
 TEST(SolidSilhouette, HidesWhatTheFacesHideOneByOne) {
-  const SmallPolygon receiver = polygon({{-1, -1, 3}, {-1, 2, 3}, {2, 2, 3}, {2, -1, 3}});  // faces -z
+  const ConvexPolygon receiver = polygon({{-1, -1, 3}, {-1, 2, 3}, {2, 2, 3}, {2, -1, 3}});  // faces -z
   const Box block = box({0.3, 0.2, 1.0}, {0.9, 0.7, 1.6});
   const std::vector<OccluderPolygon> faces = block.occluders();
   const std::vector<SolidPlanes> solids{block.planes};
@@ -122,7 +122,7 @@ TEST(SolidSilhouette, HidesWhatTheFacesHideOneByOne) {
 // Four points at once (their hidden pieces' Lambert sums taken together) as one by one: two blocks, so that
 // a point's receiver falls into several pieces, and points that see nothing, part or all of it hidden.
 TEST(ShadowClipper, FourPointsAtOnceAsOneByOne) {
-  const SmallPolygon receiver = polygon({{0.2, 0.2, 3}, {0.2, 0.8, 3}, {0.8, 0.8, 3}, {0.8, 0.2, 3}});
+  const ConvexPolygon receiver = polygon({{0.2, 0.2, 3}, {0.2, 0.8, 3}, {0.8, 0.8, 3}, {0.8, 0.2, 3}});
   const Box left = box({0.1, 0.1, 1.0}, {0.45, 0.9, 1.4}), right = box({0.55, 0.3, 1.8}, {0.8, 0.6, 2.2});
   std::vector<OccluderPolygon> faces = left.occluders();
   for (OccluderPolygon o : right.occluders()) faces.push_back({o.polygon, 1});
@@ -191,13 +191,13 @@ TEST(SolidMissesEverySegment, OnlyWhereNoSegmentMeetsTheBlock) {
   auto square = [](double x, double y, double z, double size) {
     return polygon({{x, y, z}, {x + size, y, z}, {x + size, y + size, z}, {x, y + size, z}});
   };
-  auto meetsAny = [&](const SmallPolygon& a, const SmallPolygon& b) {
+  auto meetsAny = [&](const ConvexPolygon& a, const ConvexPolygon& b) {
     return someSegmentMeetsBox(a, b, lo, hi, 5);
   };
   int misses = 0;
   for (double x = 0; x < 1; x += 0.1)
     for (double y : {0.0, 0.45, 0.8}) {
-      const SmallPolygon floor = square(x, y, 0, 0.1), ceiling = square(0.7, 0.45, 1, 0.1);
+      const ConvexPolygon floor = square(x, y, 0, 0.1), ceiling = square(0.7, 0.45, 1, 0.1);
       if (!solidMissesEverySegment(floor.v.data(), 4, ceiling.v.data(), 4, block.planes, 1e-12)) continue;
       ++misses;
       EXPECT_FALSE(meetsAny(floor, ceiling)) << x << ", " << y;
@@ -221,7 +221,7 @@ TEST(SolidOutsideHullOf, OnlyWhereNoSegmentMeetsTheBlock) {
   auto wallSquare = [](double y, double z) {  // on the wall x = 0, facing +x
     return polygon({{0, y, z}, {0, y + 0.1, z}, {0, y + 0.1, z + 0.1}, {0, y, z + 0.1}});
   };
-  auto meetsAny = [&](const SmallPolygon& a, const SmallPolygon& b) {
+  auto meetsAny = [&](const ConvexPolygon& a, const ConvexPolygon& b) {
     return someSegmentMeetsBox(a, b, lo, hi, 8);
   };
   int proven = 0, onlyByTheHull = 0, meeting = 0;
@@ -230,7 +230,7 @@ TEST(SolidOutsideHullOf, OnlyWhereNoSegmentMeetsTheBlock) {
       for (double wallY : {0.0, 0.45, 0.8})
         for (double wallZ : {0.1, 0.3, 0.7}) {
           if (x + 0.1 > lo.x() && x < hi.x() && y + 0.1 > lo.y() && y < hi.y()) continue;  // under the block
-          const SmallPolygon floor = floorSquare(x, y), wall = wallSquare(wallY, wallZ);
+          const ConvexPolygon floor = floorSquare(x, y), wall = wallSquare(wallY, wallZ);
           const bool outside = solidOutsideHullOf(floor.v.data(), 4, wall.v.data(), 4, corners.data(),
                                                   static_cast<int>(corners.size()), 1e-12);
           const bool meets = meetsAny(floor, wall);

@@ -12,9 +12,9 @@ namespace rt {
 namespace {
 
 // Whether some segment between grids of points on two quadrilaterals meets both boxes.
-bool someSegmentMeetsBoth(const SmallPolygon& a, const SmallPolygon& b, const Box& first, const Box& second,
+bool someSegmentMeetsBoth(const ConvexPolygon& a, const ConvexPolygon& b, const Box& first, const Box& second,
                           int steps) {
-  auto at = [](const SmallPolygon& q, double s, double t) {
+  auto at = [](const ConvexPolygon& q, double s, double t) {
     return Vec3((1 - s) * ((1 - t) * q.v[0] + t * q.v[3]) + s * ((1 - t) * q.v[1] + t * q.v[2]));
   };
   auto meets = [](const Vec3& p, const Vec3& q, const Box& box) {
@@ -33,8 +33,8 @@ bool someSegmentMeetsBoth(const SmallPolygon& a, const SmallPolygon& b, const Bo
   return false;
 }
 
-bool apart(const SmallPolygon& source, const SmallPolygon& receiver, const Box& a, const Box& b) {
-  const SmallPolygon* elements[2] = {&source, &receiver};
+bool apart(const ConvexPolygon& source, const ConvexPolygon& receiver, const Box& a, const Box& b) {
+  const ConvexPolygon* elements[2] = {&source, &receiver};
   const SolidShape* solids[2] = {&a.shapes[0], &b.shapes[0]};
   return shadowsApartBy([&](int e, int near, int other) {
     return solidOutsideHullOfSolidAndPolygon(*solids[other], *solids[near], elements[e]->v.data(),
@@ -46,7 +46,7 @@ TEST(ShadowsApart, OnlyWhereNoSegmentMeetsBothBlocks) {
   // Two blocks on the floor of a unit room, one tall and one low, apart along x; floor elements and
   // elements of the wall x = 0 (facing +x) and of the wall y = 1 (facing -y).
   const Box low = box({0.15, 0.4, 0}, {0.35, 0.6, 0.3}), tall = box({0.6, 0.3, 0}, {0.8, 0.5, 0.6});
-  std::vector<SmallPolygon> floor, walls;
+  std::vector<ConvexPolygon> floor, walls;
   for (double x = 0.05; x < 1; x += 0.2)
     for (double y = 0.05; y < 1; y += 0.2) {
       const bool underLow = x + 0.1 > 0.15 && x < 0.35 && y + 0.1 > 0.4 && y < 0.6;
@@ -60,8 +60,8 @@ TEST(ShadowsApart, OnlyWhereNoSegmentMeetsBothBlocks) {
       walls.push_back(polygon({{u, 1, z}, {u, 1, z + 0.1}, {u + 0.1, 1, z + 0.1}, {u + 0.1, 1, z}}));
     }
   int proven = 0, meeting = 0;
-  for (const SmallPolygon& f : floor)
-    for (const SmallPolygon& w : walls) {
+  for (const ConvexPolygon& f : floor)
+    for (const ConvexPolygon& w : walls) {
       const bool both = someSegmentMeetsBoth(f, w, low, tall, 4);
       meeting += both;
       EXPECT_EQ(apart(f, w, low, tall), apart(w, f, tall, low));  // the same proof either way round
@@ -76,8 +76,8 @@ TEST(ShadowsApart, OnlyWhereNoSegmentMeetsBothBlocks) {
 
 TEST(ShadowsApart, TouchingBlocksAreNeverProvenApart) {
   const Box a = box({0.2, 0.2, 0}, {0.5, 0.5, 0.5}), touching = box({0.5, 0.2, 0}, {0.8, 0.5, 0.3});
-  const SmallPolygon floor = polygon({{0, 0.8, 0}, {0.1, 0.8, 0}, {0.1, 0.9, 0}, {0, 0.9, 0}});
-  const SmallPolygon wall = polygon({{1, 0.3, 0.1}, {1, 0.3, 0.2}, {1, 0.4, 0.2}, {1, 0.4, 0.1}});
+  const ConvexPolygon floor = polygon({{0, 0.8, 0}, {0.1, 0.8, 0}, {0.1, 0.9, 0}, {0, 0.9, 0}});
+  const ConvexPolygon wall = polygon({{1, 0.3, 0.1}, {1, 0.3, 0.2}, {1, 0.4, 0.2}, {1, 0.4, 0.1}});
   EXPECT_FALSE(apart(floor, wall, a, touching));
 }
 

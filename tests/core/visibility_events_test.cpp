@@ -27,9 +27,9 @@ Seen hiddenAt(const ShadowClipper& clipper, const Vec3& x) {
   return wholly ? Seen::All : hidden > 0 ? Seen::Part : Seen::Nothing;
 }
 
-double rule(const ShadowClipper& clipper, const SmallPolygon& cell, int n) {
-  std::array<SourcePanel, SmallPolygon::kInline> panels;
-  const int count = panelsOf(cell.v.data(), cell.count, panels.data(), SmallPolygon::kInline);
+double rule(const ShadowClipper& clipper, const ConvexPolygon& cell, int n) {
+  std::array<SourcePanel, ConvexPolygon::kInline> panels;
+  const int count = panelsOf(cell.v.data(), cell.count, panels.data(), ConvexPolygon::kInline);
   double sum = 0;
   for (int p = 0; p < count; ++p)
     forEachGaussPoint(panels[static_cast<std::size_t>(p)], n,
@@ -40,7 +40,7 @@ double rule(const ShadowClipper& clipper, const SmallPolygon& cell, int n) {
 struct Cut {
   ShadowClipper clipper;
   std::vector<EventPlane> planes;
-  std::vector<SmallPolygon> cells;
+  std::vector<ConvexPolygon> cells;
   bool complete = false;
 };
 
@@ -61,7 +61,7 @@ TEST_P(VisibilityEvents, WhatIsHiddenIsTheSameThroughoutEachCell) {
   EXPECT_GE(c.planes.size(), 2u);
   ASSERT_GE(c.cells.size(), 3u);
   int seen[3] = {0, 0, 0};
-  for (const SmallPolygon& cell : c.cells) {
+  for (const ConvexPolygon& cell : c.cells) {
     Vec3 centre = Vec3::Zero();
     for (int k = 0; k < cell.count; ++k) centre += cell.v[static_cast<std::size_t>(k)];
     centre /= cell.count;
@@ -90,7 +90,7 @@ TEST_P(VisibilityEvents, RulesConvergeOnEachCellAsOnAnAnalyticIntegrand) {
   Cut c{ShadowClipper(kSource, kUp, kReceiver, kDown, kBlock.occluders(), solids, &centres, &kBlock.shapes)};
   cut(c);
   double cellsLow = 0, cellsHigh = 0;
-  for (const SmallPolygon& cell : c.cells) {
+  for (const ConvexPolygon& cell : c.cells) {
     const double low = rule(c.clipper, cell, 4), high = rule(c.clipper, cell, 10);
     EXPECT_NEAR(low, high, 1e-9) << "a cell of " << cell.count << " corners";
     cellsLow += low;
@@ -112,7 +112,7 @@ TEST(VisibilityEventPlanes, OnePolygonHasThemTwoOccludersDoNot) {
   cut(one);
   EXPECT_TRUE(one.complete);
   EXPECT_GE(one.cells.size(), 3u);
-  for (const SmallPolygon& cell : one.cells)
+  for (const ConvexPolygon& cell : one.cells)
     EXPECT_NEAR(rule(one.clipper, cell, 4), rule(one.clipper, cell, 10), 1e-9);
 
   const std::vector<Vec3> second{{0.2, 0.3, 2.2}, {0.9, 0.3, 2.2}, {0.9, 0.5, 2.2}, {0.2, 0.5, 2.2}};
@@ -178,13 +178,13 @@ TEST(VisibilityEventPlanes, ACellTheEventsSegmentMissesIsNotCut) {
   high.from = {0.5, 0.7, 0}, high.to = {0.5, 0.9, 0}, high.bounded = true;
   const EventPlane half{{0, 0.5, 0}, {0, 1, 0}};  // first the square into y < 0.5 and y > 0.5
   for (const auto& [second, expected] : {std::pair{across, 4u}, {low, 3u}, {high, 3u}}) {
-    std::vector<SmallPolygon> cells;
+    std::vector<ConvexPolygon> cells;
     ASSERT_TRUE(cutAlongEvents(kPanel, {half, second}, 1e-12, 64, cells));
     EXPECT_EQ(cells.size(), expected);
   }
   EventPlane beyond = across;  // a segment beyond the square: no cut at all
   beyond.from = {0.5, 1.5, 0}, beyond.to = {0.5, 2, 0}, beyond.bounded = true;
-  std::vector<SmallPolygon> cells;
+  std::vector<ConvexPolygon> cells;
   ASSERT_TRUE(cutAlongEvents(kPanel, {beyond}, 1e-12, 64, cells));
   EXPECT_EQ(cells.size(), 1u);
 }
@@ -196,7 +196,7 @@ TEST(VisibilityEventPlanes, CellsBeyondTheBoundAreRefused) {
                               &kSlab.shapes);
   std::vector<EventPlane> planes;
   ASSERT_TRUE(clipper.eventPlanes(kSource, clipper.occluders(), planes));
-  std::vector<SmallPolygon> cells(2);  // a caller's cells from before are kept
+  std::vector<ConvexPolygon> cells(2);  // a caller's cells from before are kept
   EXPECT_FALSE(cutAlongEvents(kPanel, planes, 1e-12, 2, cells));
   EXPECT_EQ(cells.size(), 2u);
 }

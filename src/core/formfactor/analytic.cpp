@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "core/formfactor/gauss_legendre.h"
+#include "core/geometry/plane_clip.h"
 #include "core/polygon.h"
 
 namespace rt {
@@ -143,16 +144,13 @@ double edgePairIntegral(const Segment& a, const Segment& b) {
 }
 
 Vec3 unitNormal(const Vec3* v, int n) {
-  Vec3 sum = Vec3::Zero();
-  for (int k = 0; k < n; ++k) sum += v[k].cross(v[(k + 1) % n]);
+  const Vec3 sum = twiceAreaVector(v, n);
   const double length = sum.norm();
   return length > 0 ? Vec3(sum / length) : Vec3::Zero();
 }
 
 double areaOf(const Vec3* v, int n) {
-  Vec3 sum = Vec3::Zero();
-  for (int k = 0; k < n; ++k) sum += v[k].cross(v[(k + 1) % n]);
-  return 0.5 * sum.norm();
+  return 0.5 * twiceAreaVector(v, n).norm();
 }
 
 // Sutherland-Hodgman against one plane into `out` (capacity n + 1). Returns the vertex count, 0 when nothing
@@ -184,12 +182,8 @@ int clipInto(const Vec3* v, int n, const Vec3& origin, const Vec3& normal, Vec3*
     for (int k = 0; k < n; ++k) out[count++] = v[k];
     return count;
   }
-  for (int k = 0; k < n; ++k) {
-    const int next = (k + 1) % n;
-    const double dp = side[k], dq = side[next];
-    if (dp >= 0) out[count++] = v[k];
-    if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0)) out[count++] = v[k] + (v[next] - v[k]) * (dp / (dp - dq));
-  }
+  cutByHeights(
+      v, side, n, [&](const Vec3& p) { out[count++] = p; }, [](const Vec3&) {});
   return count >= 3 ? count : 0;
 }
 
@@ -281,8 +275,7 @@ double lambertContourSum(const Vec3& point, const Vec3& normal, const Vec3* poly
 
 double pointToPolygonFormFactor(const Vec3& point, const Vec3& normal, const Vec3* polygon, int count) {
   if (count < 3) return 0;
-  Vec3 polygonNormal = Vec3::Zero();
-  for (int k = 0; k < count; ++k) polygonNormal += polygon[k].cross(polygon[(k + 1) % count]);
+  const Vec3 polygonNormal = twiceAreaVector(polygon, count);
   if (polygonNormal.dot(point - polygon[0]) <= 0) return 0;  // behind the polygon: one-sided
   ClipBuffer buffer;
   Vec3* visible = buffer.reserve(count);

@@ -46,7 +46,7 @@ class AnalyticMethod : public FormFactorMethod {
     FormFactorMatrix F =
         computeReciprocalMatrix(mesh, options, progress, stats, "form factors (analytic)", [&](int i, int j) {
           PairResult result;
-          const ElementPolygon a(mesh, i), b(mesh, j);
+          const ConvexPolygon a = elementPolygon(mesh, i), b = elementPolygon(mesh, j);
           result.value = polygonToPolygonFormFactor(a.v.data(), a.count, b.v.data(), b.count);
           if (result.value > 0 && shafts.mayBeOccluded(i, j)) {
             result.needsVisibility = true;

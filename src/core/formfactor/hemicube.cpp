@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/formfactor/analytic.h"
+#include "core/geometry/plane_clip.h"
 
 namespace rt {
 namespace {
@@ -198,14 +199,11 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
       // ~1e9 pixels, where edge functions lose all precision.
       int n = count;
       auto clipBy = [&](auto distance) {
+        std::array<double, 16> heights;
+        for (int k = 0; k < n; ++k) heights[k] = distance(in[k]);
         int m = 0;
-        for (int k = 0; k < n; ++k) {
-          const Vec3& p = in[k];
-          const Vec3& q = in[(k + 1) % n];
-          const double dp = distance(p), dq = distance(q);
-          if (dp >= 0) clipped[m++] = p;
-          if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0)) clipped[m++] = p + (q - p) * (dp / (dp - dq));
-        }
+        cutByHeights(
+            in.data(), heights.data(), n, [&](const Vec3& p) { clipped[m++] = p; }, [](const Vec3&) {});
         n = m;
         for (int k = 0; k < n; ++k) in[k] = clipped[k];
       };

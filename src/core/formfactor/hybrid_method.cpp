@@ -70,7 +70,7 @@ class HybridMethod : public FormFactorMethod {
       PairResult result;
       const Element& from = mesh.elements[i];
       const Element& to = mesh.elements[j];
-      const ElementPolygon a(mesh, i), b(mesh, j);
+      const ConvexPolygon a = elementPolygon(mesh, i), b = elementPolygon(mesh, j);
       const double distance = (to.centroid - from.centroid).norm();
       const double reach = radii[i] + radii[j];
       double unoccluded;

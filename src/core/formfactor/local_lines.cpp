@@ -12,7 +12,7 @@ std::vector<LocalLine> shootLocalLines(const Mesh& mesh, const RayScene& scene, 
   std::vector<LocalLine> lines;
   if (i < 0 || i >= static_cast<int>(mesh.size()) || count < 1) return lines;
   lines.reserve(static_cast<std::size_t>(count));
-  const ElementPolygon a(mesh, i);
+  const ConvexPolygon a = elementPolygon(mesh, i);
   const Vec3& normal = mesh.elements[static_cast<std::size_t>(i)].normal;
   PairRandom random(seed, static_cast<std::uint64_t>(i), 0x6d6f6e7465ull);
   // Off the element's plane by far less than any feature, so that the line cannot start behind it.

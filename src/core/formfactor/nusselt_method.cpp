@@ -40,7 +40,7 @@ class NusseltMethod : public FormFactorMethod {
                      ++counters.pairsSkippedFacing;
                      continue;
                    }
-                   const ElementPolygon b(mesh, static_cast<int>(j));
+                   const ConvexPolygon b = elementPolygon(mesh, static_cast<int>(j));
                    F(i, j) = nusseltFormFactor(self.centroid, self.normal, b.v.data(), b.count, segments);
                    ++counters.pairsComputed;
                  }

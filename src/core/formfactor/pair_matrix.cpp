@@ -53,13 +53,7 @@ void forEachRow(std::size_t rows, const FormFactorOptions& options, Progress& pr
       }
     }
     std::lock_guard lock(merge);
-    total.pairsComputed += local.pairsComputed;
-    total.pairsSkippedFacing += local.pairsSkippedFacing;
-    total.pairsByReciprocity += local.pairsByReciprocity;
-    total.pairsUnoccluded += local.pairsUnoccluded;
-    total.raysCast += local.raysCast;
-    total.kernelEvaluations += local.kernelEvaluations;
-    total.contourIntegrals += local.contourIntegrals;
+    addCounts(total, local);
     total.varianceSum += local.varianceSum;
   };
   // One row per task: rows differ in cost by orders of magnitude (the first rows own the most pairs, and the
@@ -68,13 +62,7 @@ void forEachRow(std::size_t rows, const FormFactorOptions& options, Progress& pr
   parallelForChunks(0, rows, {.grain = 1, .chunkPerTask = true, .threads = options.threads}, body);
   if (cancelled) throw Cancelled();
   progress.report(1.0, stage);
-  stats.pairsComputed += total.pairsComputed;
-  stats.pairsSkippedFacing += total.pairsSkippedFacing;
-  stats.pairsByReciprocity += total.pairsByReciprocity;
-  stats.pairsUnoccluded += total.pairsUnoccluded;
-  stats.raysCast += total.raysCast;
-  stats.kernelEvaluations += total.kernelEvaluations;
-  stats.contourIntegrals += total.contourIntegrals;
+  addCounts(stats, total);
   const std::size_t entries = rows * rows;
   if (total.varianceSum > 0 && entries > 0) stats.standardError = std::sqrt(total.varianceSum / entries);
   stats.elements = rows;

@@ -22,6 +22,19 @@ struct RowCounters {
   double varianceSum = 0;  // stochastic methods: sum over entries of the estimator variance
 };
 
+// The counts RowCounters and FormFactorStats share (all but the variance), as pairs of fields: the one list
+// of them, so that adding a counter to both cannot be forgotten in one of the merges.
+template <class To, class From>
+void addCounts(To& to, const From& from) {
+  to.pairsComputed += from.pairsComputed;
+  to.pairsSkippedFacing += from.pairsSkippedFacing;
+  to.pairsByReciprocity += from.pairsByReciprocity;
+  to.pairsUnoccluded += from.pairsUnoccluded;
+  to.raysCast += from.raysCast;
+  to.kernelEvaluations += from.kernelEvaluations;
+  to.contourIntegrals += from.contourIntegrals;
+}
+
 // Runs rowFunction(i, counters) for every row in parallel (TBB, options.threads), reports progress per chunk
 // of rows under `stage`, and throws Cancelled when progress.cancelled() (checked before each row).
 void forEachRow(std::size_t rows, const FormFactorOptions& options, Progress& progress,

@@ -12,7 +12,7 @@ namespace rt {
 PairResult estimateRaycastPair(const Mesh& mesh, const PairVisibility& visibility, int i, int j, int samples,
                                std::uint64_t seed) {
   PairResult result;
-  const ElementPolygon a(mesh, i), b(mesh, j);
+  const ConvexPolygon a = elementPolygon(mesh, i), b = elementPolygon(mesh, j);
   const Vec3& normalI = mesh.elements[i].normal;
   const Vec3& normalJ = mesh.elements[j].normal;
   const double areaJ = mesh.elements[j].area;

@@ -1,23 +1,24 @@
 #include "core/formfactor/visibility.h"
 
-#include <stdexcept>
 #include <vector>
 
 #include "core/formfactor/sampling.h"
 
 namespace rt {
 
-ElementPolygon::ElementPolygon(const Mesh& mesh, int element) {
-  const auto& vs = mesh.elements[element].vertices;
-  if (vs.size() > v.size()) throw std::invalid_argument("element with more than 8 vertices");
-  for (int index : vs) v[count++] = mesh.vertices[index];
+ConvexPolygon elementPolygon(const Mesh& mesh, int element) {
+  const auto& vs = mesh.elements[static_cast<std::size_t>(element)].vertices;
+  ConvexPolygon polygon;
+  polygon.reserve(static_cast<int>(vs.size()));
+  for (int index : vs) polygon.v[static_cast<std::size_t>(polygon.count++)] = mesh.vertices[index];
+  return polygon;
 }
 
 PairVisibility::PairVisibility(const Mesh& mesh)
     : mesh_(mesh), shafts_(mesh), rays_(std::make_unique<RayScene>(mesh)) {}
 
 double PairVisibility::fraction(int i, int j, int samples, std::uint64_t seed) const {
-  const ElementPolygon a(mesh_, i), b(mesh_, j);
+  const ConvexPolygon a = elementPolygon(mesh_, i), b = elementPolygon(mesh_, j);
   PairRandom random(seed ^ 0x5bd1e995ull, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(j));
   // Stratum k on i with a randomly permuted stratum on j: a fixed shift would make each y a translated copy
   // of its x, and the N rays together worth about one independent sample.

@@ -8,16 +8,12 @@
 
 #include "core/formfactor/ray_scene.h"
 #include "core/formfactor/shaft_culling.h"
+#include "core/geometry/convex_polygon.h"
 
 namespace rt {
 
-// An element's vertices copied into a fixed array (elements have 3 or 4; up to 8 are accepted).
-struct ElementPolygon {
-  std::array<Vec3, 8> v;
-  int count = 0;
-  ElementPolygon(const Mesh& mesh, int element);
-  Polygon toPolygon() const { return Polygon(v.begin(), v.begin() + count); }
-};
+// An element's corners as a convex polygon (elements have 3 or 4; more go on the polygon's heap).
+ConvexPolygon elementPolygon(const Mesh& mesh, int element);
 
 class PairVisibility {
  public:

@@ -6,6 +6,7 @@
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/quadrature/shadow_clipper.h"
 #include "core/formfactor/sampling.h"
+#include "core/geometry/plane_clip.h"
 #include "core/parallel.h"
 #include "core/pathtrace/path_tracer.h"
 
@@ -93,7 +94,7 @@ double TwoPass::hiddenExactly(const Vec3& point, const Vec3& normal, int emitter
   const Vec3& lightNormal = tracing_.mesh().elements[static_cast<std::size_t>(emitter)].normal;
   const double size = (light[0] - point).norm();
   // The light's part above the point's horizon; the point itself is the clipper's one-vertex "source".
-  SmallPolygon source, receiver;
+  ConvexPolygon source, receiver;
   source.v[0] = point;
   source.count = 1;
   clipToFront(light.data(), static_cast<int>(light.size()), point, normal, 1e-12 * size, receiver);

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <mutex>
 
+#include "core/geometry/plane_clip.h"
+#include "core/geometry/segment_clip.h"
+
 namespace rt {
 namespace {
 
@@ -36,18 +39,12 @@ bool splitCell(const std::vector<Vec2>& cell, const Vec2& p, const Vec2& d, doub
     anyRight |= s < -eps;
   }
   if (!anyLeft || !anyRight) return false;
-  for (std::size_t k = 0; k < n; ++k) {
-    const Vec2& a = cell[k];
-    const Vec2& b = cell[(k + 1) % n];
-    const double sa = cross(d, a - p), sb = cross(d, b - p);
-    if (sa >= 0) left.push_back(a);
-    if (sa <= 0) right.push_back(a);
-    if ((sa > 0 && sb < 0) || (sa < 0 && sb > 0)) {
-      const Vec2 x = a + (b - a) * (sa / (sa - sb));
-      left.push_back(x);
-      right.push_back(x);
-    }
-  }
+  // Cut with no tolerance (plane_clip.h): the margin only decided above that both sides have area.
+  std::vector<double> heights(n);
+  for (std::size_t k = 0; k < n; ++k) heights[k] = cross(d, cell[k] - p);
+  cutByHeights(
+      cell.data(), heights.data(), static_cast<int>(n), [&](const Vec2& x) { left.push_back(x); },
+      [&](const Vec2& x) { right.push_back(x); });
   return left.size() >= 3 && right.size() >= 3;
 }
 
@@ -59,16 +56,7 @@ bool segmentCrossesCell(const std::vector<Vec2>& cell, const Vec2& p, const Vec2
     const Vec2 e = cell[(k + 1) % cell.size()] - cell[k];
     // inside: cross(e, x - a) > eps
     const double f0 = cross(e, p - cell[k]) - eps * e.norm();
-    const double df = cross(e, d);
-    if (std::abs(df) < 1e-300) {
-      if (f0 <= 0) return false;
-      continue;
-    }
-    const double t = -f0 / df;
-    if (df > 0)
-      t0 = std::max(t0, t);
-    else
-      t1 = std::min(t1, t);
+    if (!clipRange(f0, cross(e, d), kBelowTinyRate, Boundary::Open, t0, t1)) return false;
   }
   return t1 - t0 > 1e-9;
 }

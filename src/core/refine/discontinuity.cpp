@@ -6,6 +6,7 @@
 #include <set>
 #include <tuple>
 
+#include "core/geometry/segment_clip.h"
 #include "core/polygon.h"
 
 namespace rt {
@@ -54,15 +55,11 @@ class Topology {
 };
 
 // Restricts the parameter range [t0, t1] of a + t (b - a) to where lo <= f(t) <= hi, f linear with f(0)=fa,
-// f(1)=fb.
+// f(1)=fb: two closed half-spaces (segment_clip.h), f - lo >= 0 and hi - f >= 0.
 bool restrictRange(double fa, double fb, double lo, double hi, double& t0, double& t1) {
   const double df = fb - fa;
-  if (std::abs(df) < 1e-300) return fa >= lo && fa <= hi && t0 < t1;
-  double tl = (lo - fa) / df, th = (hi - fa) / df;
-  if (tl > th) std::swap(tl, th);
-  t0 = std::max(t0, tl);
-  t1 = std::min(t1, th);
-  return t1 > t0;
+  return clipRange(fa - lo, df, kBelowTinyRate, Boundary::Closed, t0, t1) &&
+         clipRange(hi - fa, -df, kBelowTinyRate, Boundary::Closed, t0, t1);
 }
 
 bool onOneSide(const std::vector<Vec3>& points, const Vec3& origin, const Vec3& normal, double eps) {

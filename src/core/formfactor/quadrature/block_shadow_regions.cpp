@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/check.h"
+#include "core/geometry/plane_clip.h"
 
 namespace rt {
 namespace {
@@ -18,16 +19,16 @@ double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 std::vector<Eigen::Vector2d> intersect(std::vector<Eigen::Vector2d> subject, const Eigen::Vector2d* clip,
                                        int clipCount) {
   std::vector<Eigen::Vector2d> next;
+  std::vector<double> heights;
   for (int e = 0; e < clipCount && !subject.empty(); ++e) {
     const Eigen::Vector2d &a = clip[e], edge = clip[(e + 1) % clipCount] - clip[e];
     next.clear();
     const std::size_t n = subject.size();
-    for (std::size_t k = 0; k < n; ++k) {
-      const Eigen::Vector2d &p = subject[k], &q = subject[(k + 1) % n];
-      const double dp = cross2(edge, p - a), dq = cross2(edge, q - a);
-      if (dp >= 0) next.push_back(p);
-      if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0)) next.push_back(p + (q - p) * (dp / (dp - dq)));
-    }
+    heights.resize(n);
+    for (std::size_t k = 0; k < n; ++k) heights[k] = cross2(edge, subject[k] - a);
+    cutByHeights(
+        subject.data(), heights.data(), static_cast<int>(n),
+        [&](const Eigen::Vector2d& p) { next.push_back(p); }, [](const Eigen::Vector2d&) {});
     subject.swap(next);
     if (subject.size() < 3) subject.clear();
   }

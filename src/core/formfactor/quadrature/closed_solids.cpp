@@ -1,4 +1,6 @@
 #include "core/formfactor/quadrature/closed_solids.h"
+#include "core/geometry/plane_clip.h"
+#include "core/polygon.h"
 
 #include <algorithm>
 #include <cmath>
@@ -73,10 +75,7 @@ std::vector<int> closedConvexSolids(const std::vector<const std::vector<Vec3>*>&
     SolidPlanes faces;
     for (int k : members) {
       const auto& outline = *outlines[static_cast<std::size_t>(k)];
-      Vec3 n = Vec3::Zero();
-      for (std::size_t v = 0; v < outline.size(); ++v)
-        n += outline[v].cross(outline[(v + 1) % outline.size()]);
-      n.normalize();
+      const Vec3 n = newellNormal(outline).normalized();
       faces.push_back({n, n.dot(outline[0])});
     }
     // Every corner on or behind every face, and every face with a corner well behind it (some volume: faces
@@ -151,8 +150,7 @@ std::vector<std::vector<Vec3>> closingFaces(const std::vector<const std::vector<
     }
     if (corners.size() != loop.size() || at != loop.begin()->first) continue;
     // Planar: every corner on the plane of the loop's area vector.
-    Vec3 n = Vec3::Zero();
-    for (std::size_t v = 0; v < corners.size(); ++v) n += corners[v].cross(corners[(v + 1) % corners.size()]);
+    Vec3 n = newellNormal(corners);
     if (!(n.norm() > 0)) continue;
     n.normalize();
     bool planar = true;
@@ -168,8 +166,8 @@ namespace {
 
 // clipToFront, except that a polygon lying in the plane is kept whole by `behind` and dropped otherwise (the
 // floor under a block lies in the plane of the block's bottom).
-void clipSide(const SmallPolygon& in, const Vec3& n, double offset, double eps, bool behind,
-              SmallPolygon& out) {
+void clipSide(const ConvexPolygon& in, const Vec3& n, double offset, double eps, bool behind,
+              ConvexPolygon& out) {
   bool inPlane = true;
   for (int k = 0; k < in.count && inPlane; ++k)
     inPlane = std::abs(n.dot(in.v[static_cast<std::size_t>(k)]) - offset) <= eps;
@@ -183,8 +181,8 @@ void clipSide(const SmallPolygon& in, const Vec3& n, double offset, double eps, 
 
 }  // namespace
 
-double areaInside(const SmallPolygon& polygon, const SolidPlanes& solid, double eps) {
-  SmallPolygon inside = polygon, next;
+double areaInside(const ConvexPolygon& polygon, const SolidPlanes& solid, double eps) {
+  ConvexPolygon inside = polygon, next;
   for (const auto& [n, offset] : solid) {
     clipSide(inside, n, offset, eps, true, next);
     inside = next;
@@ -197,9 +195,9 @@ double areaInside(const SmallPolygon& polygon, const SolidPlanes& solid, double 
   return 0.5 * sum.norm();
 }
 
-void piecesOutside(const SmallPolygon& polygon, const SolidPlanes& solid, double eps,
-                   std::vector<SmallPolygon>& out) {
-  SmallPolygon inside = polygon, part;
+void piecesOutside(const ConvexPolygon& polygon, const SolidPlanes& solid, double eps,
+                   std::vector<ConvexPolygon>& out) {
+  ConvexPolygon inside = polygon, part;
   for (const auto& [n, offset] : solid) {
     clipSide(inside, n, offset, eps, false, part);
     if (part.count > 0) out.push_back(part);

@@ -45,10 +45,10 @@ std::vector<std::vector<Vec3>> closingFaces(const std::vector<const std::vector<
 
 // The area of the part of a convex polygon inside the solid (on or behind every face plane, within eps).
 // A floor element partly under a block: that part sees nothing at all.
-double areaInside(const SmallPolygon& polygon, const SolidPlanes& solid, double eps);
+double areaInside(const ConvexPolygon& polygon, const SolidPlanes& solid, double eps);
 
 // Appends to `out` the convex pieces of `polygon` outside the solid (in front of some face plane).
-void piecesOutside(const SmallPolygon& polygon, const SolidPlanes& solid, double eps,
-                   std::vector<SmallPolygon>& out);
+void piecesOutside(const ConvexPolygon& polygon, const SolidPlanes& solid, double eps,
+                   std::vector<ConvexPolygon>& out);
 
 }  // namespace rt

@@ -7,8 +7,8 @@
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/lambert_four.h"
 #include "core/formfactor/quadrature/shadow_clipper.h"
-#include "core/formfactor/quadrature/shadow_clipper_detail.h"
 #include "core/formfactor/quadrature/solid_silhouette.h"
+#include "core/geometry/plane_clip.h"
 
 namespace rt {
 namespace {
@@ -42,7 +42,7 @@ bool ShadowClipper::formOf(const Vec3& x, const std::vector<int>& occluders, Hid
   for (int k : occluders)
     if (prepared_[static_cast<std::size_t>(k)].solid != solid) return false;
   const SolidShape& shape = (*shapes_)[static_cast<std::size_t>(solid)];
-  constexpr int kInline = SmallPolygon::kInline;
+  constexpr int kInline = ConvexPolygon::kInline;
   SmallBuffer<SilhouetteEdge, kInline> edges;
   edges.reserve(static_cast<int>(shape.edges.size()));  // room for every edge: never -1 for want of it
   const int m = silhouetteEdges(shape, x, eps_, edges.data(), edges.capacity());
@@ -73,26 +73,30 @@ bool ShadowClipper::formOf(const Vec3& x, const std::vector<int>& occluders, Hid
     if (!anyFront) return true;  // nothing hidden
     cut = true;
     int made = 0;
+    bool ambiguous = false;   // two side planes of no common corner (an end-on edge between)
     out->reserve(2 * count);  // each corner adds itself and a cut at most
-    for (int k = 0; k < count; ++k) {
-      const int next = (k + 1) % count;
-      const double dp = side[static_cast<std::size_t>(k)], dq = side[static_cast<std::size_t>(next)];
-      const TaggedCorner& from = (*in)[k];
-      if (dp > 0) (*out)[made++] = from;
-      if ((dp > 0) == (dq > 0)) continue;
-      // The edge from `from` leaves the cone (dp > 0) or enters it here: the new corner is where its line
-      // meets the side plane, and the outline goes on along the plane, or along the old line.
-      TaggedCorner corner{from.p + ((*in)[next].p - from.p) * (dp / (dp - dq)), {}, 0};
-      if (from.line < n) {
-        corner.tag = {Form::EdgeCut, from.line, edge.a, edge.b};
-      } else {
-        const int shared = sharedCorner(edges[static_cast<std::size_t>(from.line - n)], edge);
-        if (shared < 0) return false;  // two side planes of no common corner (an end-on edge between)
-        corner.tag = {Form::SolidCorner, shared};
-      }
-      corner.line = dp > 0 ? n + p : from.line;
-      (*out)[made++] = corner;
-    }
+    // No corner lies on the plane (see above): the part in front is the corners of height > 0 and the cuts.
+    walkHeights(
+        side.data(), count,
+        [&](int k) {
+          if (side[static_cast<std::size_t>(k)] > 0) (*out)[made++] = (*in)[k];
+        },
+        [&](int k, int next, double t) {
+          // The edge from `from` leaves the cone (height > 0) or enters it here: the new corner is where its
+          // line meets the side plane, and the outline goes on along the plane, or along the old line.
+          const TaggedCorner& from = (*in)[k];
+          TaggedCorner corner{from.p + ((*in)[next].p - from.p) * t, {}, 0};
+          if (from.line < n) {
+            corner.tag = {Form::EdgeCut, from.line, edge.a, edge.b};
+          } else {
+            const int shared = sharedCorner(edges[static_cast<std::size_t>(from.line - n)], edge);
+            ambiguous |= shared < 0;
+            corner.tag = {Form::SolidCorner, shared};
+          }
+          corner.line = side[static_cast<std::size_t>(k)] > 0 ? n + p : from.line;
+          (*out)[made++] = corner;
+        });
+    if (ambiguous) return false;
     std::swap(in, out);
     count = made;
     if (count < 3) return true;
@@ -135,8 +139,8 @@ bool ShadowClipper::place(const Vec3& x, const HiddenForm& form, Vec3* v) const 
   // corner nears the next); a form taken beyond its cell (across an event the cut missed) folds over.
   double low = 0, high = 0;
   const int n = form.count;
-  double local[SmallPolygon::kInline];
-  double* turn = n <= SmallPolygon::kInline ? local : shadow_detail::spilledHeights<2>(n);
+  double local[ConvexPolygon::kInline];
+  double* turn = n <= ConvexPolygon::kInline ? local : plane_clip_detail::spilledHeights<2>(n);
   for (int k = 0; k < n; ++k) {
     const int k1 = k + 1 == n ? 0 : k + 1, k2 = k1 + 1 == n ? 0 : k1 + 1;  // (no modulo: a division each)
     const Vec3 a = v[k] - x, b = v[k1] - x, c = v[k2] - x;
@@ -162,7 +166,7 @@ bool ShadowClipper::hidden(const Vec3& x, const HiddenForm& form, double& value)
     value = 0;
     return true;
   }
-  SmallBuffer<Vec3, 4 * SmallPolygon::kInline>& v = placed_;
+  SmallBuffer<Vec3, 4 * ConvexPolygon::kInline>& v = placed_;
   v.reserve(form.count);
   if (!place(x, form, v.data())) return false;
   value = std::max(0.0, lambertContourSum(x, sourceNormal_, v.data(), form.count));
@@ -175,7 +179,7 @@ bool ShadowClipper::hidden4(const Vec3* x, const HiddenForm& form, double* value
     return true;
   }
   const int stride = form.count;
-  SmallBuffer<Vec3, 4 * SmallPolygon::kInline>& v = placed_;
+  SmallBuffer<Vec3, 4 * ConvexPolygon::kInline>& v = placed_;
   v.reserve(4 * stride);
   for (int p = 0; p < 4; ++p)
     if (!place(x[p], form, v.data() + p * stride)) return false;

@@ -141,7 +141,7 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
            // about the parent's error, and the children's together about a sixteenth of it. It replaces their
            // own one-point estimates (which fall only four times per split), shared out in their proportions.
            std::array<Smooth, 4> children;
-           const std::array<SourcePanel, 4> parts = worst.panel.split();
+           const std::array<SourcePanel, 4> parts = splitPanel(worst.panel);
            double sum = 0, own = 0;
            for (std::size_t c = 0; c < 4; ++c) {
              Smooth& child = children[c];
@@ -241,7 +241,7 @@ double HiddenIntegral::evaluate(const SourcePanel& panel, const std::vector<int>
 }
 
 void HiddenIntegral::push(std::vector<Item>& heap, Item item, double estimate, bool estimateAllHidden) {
-  const std::array<SourcePanel, 4> split = item.panel.split();
+  const std::array<SourcePanel, 4> split = splitPanel(item.panel);
   item.value = 0;
   bool mixed = false, allHidden = estimateAllHidden;
   for (std::size_t c = 0; c < 4; ++c) {

@@ -7,8 +7,8 @@
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/quadrature/closed_solids.h"
 #include "core/formfactor/quadrature/hidden_integral.h"
-#include "core/formfactor/quadrature/shadow_clipper_detail.h"
 #include "core/formfactor/quadrature/unoccluded_integral.h"
+#include "core/geometry/plane_clip.h"
 
 namespace rt {
 namespace {
@@ -25,12 +25,12 @@ QuadraturePair::QuadraturePair(const QuadratureScene& scene, double tolerance)
       clipper_(scene.solids, &scene.solidCentres, &scene.shapes),
       rowRegions_(scene.shapes, scene.regionEps) {}
 
-bool QuadraturePair::judgeBlocks(int i, int j, int row, const ElementPolygon& a, const ElementPolygon& b,
-                                 const SmallPolygon& source, const SmallPolygon& receiver,
+bool QuadraturePair::judgeBlocks(int i, int j, int row, const ConvexPolygon& a, const ConvexPolygon& b,
+                                 const ConvexPolygon& source, const ConvexPolygon& receiver,
                                  const Vec3& sourceCentre, const Vec3& receiverCentre) {
   const bool rowIsSource = row == i;
-  const ElementPolygon &rowPolygon = rowIsSource ? a : b, &otherFull = rowIsSource ? b : a;
-  const SmallPolygon& other = rowIsSource ? receiver : source;
+  const ConvexPolygon &rowPolygon = rowIsSource ? a : b, &otherFull = rowIsSource ? b : a;
+  const ConvexPolygon& other = rowIsSource ? receiver : source;
   const int otherElement = rowIsSource ? j : i;
   const Vec3& otherNormal = scene_.mesh.elements[static_cast<std::size_t>(otherElement)].normal;
   int last = -1;
@@ -68,7 +68,7 @@ bool QuadraturePair::judgeBlocks(int i, int j, int row, const ElementPolygon& a,
   return false;
 }
 
-bool QuadraturePair::hiddenSolidBySolid(int i, int j, const SmallPolygon& source, double eps,
+bool QuadraturePair::hiddenSolidBySolid(int i, int j, const ConvexPolygon& source, double eps,
                                         HiddenIntegral& hidden, double tolerance, double& sum) {
   solidsHere_.clear();
   for (int k : clipper_.occluders()) {
@@ -101,7 +101,7 @@ bool QuadraturePair::hiddenSolidBySolid(int i, int j, const SmallPolygon& source
   return true;
 }
 
-double QuadraturePair::gapOf(int i, const SmallPolygon& source, const ReceiverBound& receiver) const {
+double QuadraturePair::gapOf(int i, const ConvexPolygon& source, const ReceiverBound& receiver) const {
   const ReceiverBound& own = scene_.measures[static_cast<std::size_t>(i)].bound;
   double height = INFINITY;
   for (int k = 0; k < source.count; ++k)
@@ -150,14 +150,14 @@ QuadratureRoute QuadraturePair::integrate(int i, int j, int row, PairResult& res
     ++counts_.hiddenPairs;
     return QuadratureRoute::Enclosed;
   }
-  const ElementPolygon a(mesh, i), b(mesh, j);
+  const ConvexPolygon a = elementPolygon(mesh, i), b = elementPolygon(mesh, j);
   const Vec3 &ni = mesh.elements[static_cast<std::size_t>(i)].normal,
              &nj = mesh.elements[static_cast<std::size_t>(j)].normal;
   const double areaI = mesh.elements[static_cast<std::size_t>(i)].area;
   const double scale = (mesh.elements[static_cast<std::size_t>(i)].centroid -
                         mesh.elements[static_cast<std::size_t>(j)].centroid)
                            .norm();
-  SmallPolygon source, receiver;
+  ConvexPolygon source, receiver;
   const bool receiverWhole = clipToFront(b.v.data(), b.count, a.v[0], ni, 1e-12 * scale, receiver);
   const bool sourceWhole = clipToFront(a.v.data(), a.count, b.v[0], nj, 1e-12 * scale, source);
   if (source.count < 3 || receiver.count < 3) return QuadratureRoute::Behind;
@@ -169,8 +169,8 @@ QuadratureRoute QuadraturePair::integrate(int i, int j, int row, PairResult& res
   // pairs with candidates need it.
   Vec3 sourceCentre = Vec3::Zero(), receiverCentre = Vec3::Zero();
   if (!candidates_.empty()) {
-    sourceCentre = shadow_detail::centreOf(source);
-    receiverCentre = shadow_detail::centreOf(receiver);
+    sourceCentre = source.centre();
+    receiverCentre = receiver.centre();
   }
   // Nothing between them, both whole, a triangle or quadrilateral for source and not near: the source is one
   // panel, integrated as the general path below would (one point on each side for most such pairs), before
@@ -182,8 +182,7 @@ QuadratureRoute QuadraturePair::integrate(int i, int j, int row, PairResult& res
     const double gap = gapOf(i, source, mj.bound);
     if (!(gap < kNearSizes * mi.longest)) {
       SourcePanel panel;
-      panel.count = source.count;
-      std::copy_n(source.v.begin(), source.count, panel.v.begin());
+      panel.assign(source);
       const OnePoint far = onePointOf(mj), own = onePointOf(mi);
       result.value = integrateUnoccluded(panel, mj.bound, receiver, ni, tolerance_, 0, work, gap, mi.longest,
                                          &far, &own) /
@@ -236,7 +235,7 @@ QuadratureRoute QuadraturePair::integrate(int i, int j, int row, PairResult& res
     pieces_.assign(1, source);
     for (int s : reached) {
       next_.clear();
-      for (const SmallPolygon& piece : pieces_)
+      for (const ConvexPolygon& piece : pieces_)
         piecesOutside(piece, solids[static_cast<std::size_t>(s)], 1e-12 * scale, next_);
       pieces_.swap(next_);
     }
@@ -297,7 +296,7 @@ QuadratureRoute QuadraturePair::integrate(int i, int j, int row, PairResult& res
     if (reached.empty()) {
       unoccluded = polygonToPolygonFormFactor(a.v.data(), a.count, b.v.data(), b.count);
     } else {
-      for (const SmallPolygon& piece : pieces_) {
+      for (const ConvexPolygon& piece : pieces_) {
         Vec3 twicePiece = Vec3::Zero();
         for (int k = 0; k < piece.count; ++k)
           twicePiece += piece.v[static_cast<std::size_t>(k)].cross(

@@ -94,8 +94,8 @@ class QuadraturePair {
 
   // Drops the blocks that miss the pair from candidates_; true when one hides all of it. `sourceCentre` and
   // `receiverCentre` are the clipped polygons' centres.
-  bool judgeBlocks(int i, int j, int row, const ElementPolygon& a, const ElementPolygon& b,
-                   const SmallPolygon& source, const SmallPolygon& receiver, const Vec3& sourceCentre,
+  bool judgeBlocks(int i, int j, int row, const ConvexPolygon& a, const ConvexPolygon& b,
+                   const ConvexPolygon& source, const ConvexPolygon& receiver, const Vec3& sourceCentre,
                    const Vec3& receiverCentre);
 
   // H solid by solid, where every occluder left bounds a convex solid, there are several, and no segment
@@ -104,12 +104,12 @@ class QuadraturePair {
   // leaves several occluders out: their shadows' crossings are events that are not planes, but apart they
   // never cross). False (`sum` unset) where that does not hold or the cells would be too many; the adaptive
   // rules take the pair then. `eps`: shadowEps() of the pair.
-  bool hiddenSolidBySolid(int i, int j, const SmallPolygon& source, double eps, HiddenIntegral& hidden,
+  bool hiddenSolidBySolid(int i, int j, const ConvexPolygon& source, double eps, HiddenIntegral& hidden,
                           double tolerance, double& sum);
 
   // The gap between element i, whole (`source` its corners), and the receiver: the distance between their
   // bounding spheres, or the source's height over the receiver's plane where that is more.
-  double gapOf(int i, const SmallPolygon& source, const ReceiverBound& receiver) const;
+  double gapOf(int i, const ConvexPolygon& source, const ReceiverBound& receiver) const;
   // Whether a region said `solid` shades part of the pair, and so does not hide all of it (judgeBlocks()).
   bool shades(int solid) const {
     return std::find(shading_.begin(), shading_.end(), solid) != shading_.end();
@@ -122,11 +122,11 @@ class QuadraturePair {
   Counts counts_;
   std::vector<int> candidates_;
   std::vector<int> shading_;  // solids a region says shade the pair
-  std::vector<SmallPolygon> pieces_, next_;
+  std::vector<ConvexPolygon> pieces_, next_;
   std::vector<SourcePanel> panels_;
   std::vector<OccluderPolygon> occluders_;
   std::vector<EventPlane> events_;
-  std::vector<SmallPolygon> cells_;
+  std::vector<ConvexPolygon> cells_;
   std::vector<SourcePanel> cellPanels_;
   std::vector<ShadowClipper::HiddenForm> forms_;
   std::vector<int> solidsHere_, solidOccluders_;

@@ -6,10 +6,11 @@
 #include "core/formfactor/quadrature/closed_solids.h"
 #include "core/formfactor/quadrature/shadow_overlap.h"
 #include "core/formfactor/visibility.h"
+#include "core/polygon.h"
 
 namespace rt {
 
-ReceiverBound boundOf(const SmallPolygon& receiver, const Vec3& normal) {
+ReceiverBound boundOf(const ConvexPolygon& receiver, const Vec3& normal) {
   ReceiverBound bound{receiver.v[0], normal, Vec3::Zero(), 0, 0};
   Vec3 twice = Vec3::Zero();
   for (int k = 0; k < receiver.count; ++k) {
@@ -37,10 +38,7 @@ QuadratureScene::QuadratureScene(const Mesh& mesh_, const ShaftCulling& shafts_)
   elementPolygons.resize(mesh.size());
   for (std::size_t k = 0; k < patches; ++k) {
     const std::vector<Vec3>& outline = shafts.outline(static_cast<int>(k));
-    Vec3 sum = Vec3::Zero();
-    for (std::size_t v = 0; v < outline.size(); ++v)
-      sum += outline[v].cross(outline[(v + 1) % outline.size()]);
-    convex[k] = std::abs(0.5 * sum.norm() - patchArea[k]) <= 1e-9 * patchArea[k];
+    convex[k] = std::abs(polygonArea(outline) - patchArea[k]) <= 1e-9 * patchArea[k];
     if (!convex[k])
       for (int e : patchElements[k]) elementPolygons[static_cast<std::size_t>(e)] = mesh.polygon(e);
   }
@@ -62,11 +60,8 @@ QuadratureScene::QuadratureScene(const Mesh& mesh_, const ShaftCulling& shafts_)
   std::vector<std::vector<Vec3>> polygons;
   std::vector<Vec3> normals;
   for (std::size_t e = 0; e < mesh.size(); ++e) {
-    const ElementPolygon polygon(mesh, static_cast<int>(e));
-    SmallPolygon small;
-    small.count = polygon.count;
-    std::copy(polygon.v.begin(), polygon.v.begin() + polygon.count, small.v.begin());
-    measures[e].bound = boundOf(small, mesh.elements[e].normal);
+    const ConvexPolygon polygon = elementPolygon(mesh, static_cast<int>(e));
+    measures[e].bound = boundOf(polygon, mesh.elements[e].normal);
     for (int k = 0; k < polygon.count; ++k)
       measures[e].longest =
           std::max(measures[e].longest, (polygon.v[static_cast<std::size_t>((k + 1) % polygon.count)] -
@@ -74,8 +69,7 @@ QuadratureScene::QuadratureScene(const Mesh& mesh_, const ShaftCulling& shafts_)
                                             .norm());
     if (polygon.count <= 4) {
       SourcePanel panel;
-      panel.count = polygon.count;
-      std::copy(polygon.v.begin(), polygon.v.begin() + polygon.count, panel.v.begin());
+      panel.assign(polygon);
       forEachGaussPoint(panel, 1,
                         [&](const Vec3& x, double w) { measures[e].node = x, measures[e].weight = w; });
       measures[e].corners = polygon.count;
@@ -85,7 +79,7 @@ QuadratureScene::QuadratureScene(const Mesh& mesh_, const ShaftCulling& shafts_)
     const int own = solidOf[static_cast<std::size_t>(mesh.elements[e].patch)];
     for (std::size_t s = 0; s < solids.size(); ++s) {
       if (static_cast<int>(s) == own) continue;
-      const double inside = areaInside(small, solids[s], eps);
+      const double inside = areaInside(polygon, solids[s], eps);
       if (inside > 1e-9 * mesh.elements[e].area) elementSolids[e].push_back(static_cast<int>(s));
       if (inside >= (1 - 1e-9) * mesh.elements[e].area) enclosed[e] = 1;
     }
@@ -110,7 +104,7 @@ bool QuadratureScene::outsideHull(int element, int near, int other) const {
                    static_cast<std::size_t>(other)];
   signed char answer = known.load(std::memory_order_relaxed);
   if (answer == 0) {
-    const ElementPolygon polygon(mesh, element);
+    const ConvexPolygon polygon = elementPolygon(mesh, element);
     answer = solidOutsideHullOfSolidAndPolygon(shapes[static_cast<std::size_t>(other)],
                                                shapes[static_cast<std::size_t>(near)], polygon.v.data(),
                                                polygon.count, regionEps)

@@ -70,6 +70,6 @@ struct QuadratureScene {
 };
 
 // The receiver as the a-priori order sees it.
-ReceiverBound boundOf(const SmallPolygon& receiver, const Vec3& normal);
+ReceiverBound boundOf(const ConvexPolygon& receiver, const Vec3& normal);
 
 }  // namespace rt

@@ -8,56 +8,16 @@
 #include "core/formfactor/quadrature/penumbra_region.h"
 #include "core/formfactor/quadrature/shadow_clipper_detail.h"
 #include "core/formfactor/quadrature/solid_silhouette.h"
+#include "core/geometry/plane_clip.h"
 
 namespace rt {
-
-using shadow_detail::centreOf;
-using shadow_detail::copyPolygon;
-using shadow_detail::splitAt;
-
-bool clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& normal, double eps,
-                 SmallPolygon& out) {
-  out.count = 0;
-  const double length2 = normal.squaredNorm();
-  if (count < 3 || !(length2 > 0)) return false;
-  // Heights times the normal's length: within eps of the plane where d^2 <= eps^2 |normal|^2 (no root
-  // or division per corner; the cut points depend only on the heights' ratios).
-  const double margin2 = eps * eps * length2;
-  double local[SmallPolygon::kInline];
-  double* side = count <= SmallPolygon::kInline ? local : shadow_detail::spilledHeights<1>(count);
-  bool anyBehind = false, anyFront = false;
-  for (int k = 0; k < count; ++k) {
-    double d = normal.dot(in[k] - origin);
-    if (d * d <= margin2) d = 0;
-    side[k] = d;
-    anyBehind |= d < 0;
-    anyFront |= d > 0;
-  }
-  if (!anyFront) return false;
-  if (!anyBehind) {
-    out.v.reserve(count);
-    for (int k = 0; k < count; ++k) out.v[static_cast<std::size_t>(k)] = in[k];
-    out.count = count;
-    return true;
-  }
-  out.v.reserve(2 * count);  // each corner adds itself and a cut at most, whatever rounding says
-  for (int k = 0; k < count; ++k) {
-    const int next = (k + 1) % count;
-    const double dp = side[k], dq = side[next];
-    if (dp >= 0) out.v[static_cast<std::size_t>(out.count++)] = in[k];
-    if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0))
-      out.v[static_cast<std::size_t>(out.count++)] = in[k] + (in[next] - in[k]) * (dp / (dp - dq));
-  }
-  if (out.count < 3) out.count = 0;
-  return false;
-}
 
 ShadowClipper::ShadowClipper(const std::vector<SolidPlanes>& solids, const std::vector<Vec3>* solidCentres,
                              const std::vector<SolidShape>* shapes)
     : solids_(solids), solidCentres_(solidCentres), shapes_(shapes) {}
 
-ShadowClipper::ShadowClipper(const SmallPolygon& source, const Vec3& sourceNormal,
-                             const SmallPolygon& receiver, const Vec3& receiverNormal,
+ShadowClipper::ShadowClipper(const ConvexPolygon& source, const Vec3& sourceNormal,
+                             const ConvexPolygon& receiver, const Vec3& receiverNormal,
                              const std::vector<OccluderPolygon>& occluders,
                              const std::vector<SolidPlanes>& solids, const std::vector<Vec3>* solidCentres,
                              const std::vector<SolidShape>* shapes)
@@ -65,10 +25,10 @@ ShadowClipper::ShadowClipper(const SmallPolygon& source, const Vec3& sourceNorma
   prepare(source, sourceNormal, receiver, receiverNormal, occluders);
 }
 
-void ShadowClipper::prepare(const SmallPolygon& source, const Vec3& sourceNormal,
-                            const SmallPolygon& receiver, const Vec3& receiverNormal,
+void ShadowClipper::prepare(const ConvexPolygon& source, const Vec3& sourceNormal,
+                            const ConvexPolygon& receiver, const Vec3& receiverNormal,
                             const std::vector<OccluderPolygon>& occluders) {
-  copyPolygon(receiver, receiver_);
+  receiver_.assign(receiver);
   sourceOrigin_ = source.v[0];
   sourceNormal_ = sourceNormal;
   prepared_.clear();
@@ -93,7 +53,7 @@ void ShadowClipper::prepare(const SmallPolygon& source, const Vec3& sourceNormal
     }
     return whole == 1;
   };
-  SmallPolygon front;
+  ConvexPolygon front;
   bool planesMade = false;
   int lastSolid = -1;  // the solid whose region was tested last, and what it said
   bool lastOutside = false;
@@ -103,24 +63,19 @@ void ShadowClipper::prepare(const SmallPolygon& source, const Vec3& sourceNormal
     if (count < 3) continue;
     Occluder& o = prepared_.emplace_back();
     if (wholeSolid(occluder.solid)) {
-      o.polygon.v.reserve(count);
-      o.polygon.count = count;
-      std::copy(polygon->begin(), polygon->end(), o.polygon.v.begin());
+      o.polygon.assign(polygon->data(), count);
     } else {
       clipToFront(polygon->data(), count, source.v[0], sourceNormal, eps_, front);
       clipToFront(front.v.data(), front.count, receiver.v[0], receiverNormal, eps_, o.polygon);
     }
-    Vec3 twice = Vec3::Zero();
-    for (int k = 0; k < o.polygon.count; ++k)
-      twice += o.polygon.v[static_cast<std::size_t>(k)].cross(
-          o.polygon.v[static_cast<std::size_t>((k + 1) % o.polygon.count)]);
+    const Vec3 twice = twiceAreaVector(o.polygon.data(), o.polygon.count);
     const double twiceArea = twice.norm();
     if (o.polygon.count < 3 || 0.5 * twiceArea <= 1e-20 * size * size) {
       prepared_.pop_back();
       continue;
     }
     o.normal = twice / twiceArea;
-    o.centre = centreOf(o.polygon);
+    o.centre = o.polygon.centre();
     o.solid = occluder.solid;
     // As cull() has it: a whole solid by the region it can shade (once for all its faces), the rest by the
     // hull of the two; nothing when the caller knows it shades the pair.
@@ -170,8 +125,8 @@ void ShadowClipper::hullPlanes(const Vec3* a, int na, const Vec3* b, int nb) con
           return false;
         });
   };
-  tryEdges(a, na, shadow_detail::centreOf(a, na), b, nb);
-  tryEdges(b, nb, shadow_detail::centreOf(b, nb), a, na);
+  tryEdges(a, na, cornerMean(a, na), b, nb);
+  tryEdges(b, nb, cornerMean(b, nb), a, na);
 }
 
 bool ShadowClipper::outsideHull(const Occluder& o) const {
@@ -233,25 +188,25 @@ double ShadowClipper::unoccluded(const Vec3& x) const {
 }
 
 bool ShadowClipper::cutCone(const Vec3& x, const Vec3* cone, int m, bool last, double& sum) const {
-  // (eps |n|)^2: splitAt's margin, with no square root. On the stack for a cone of up to kInline planes.
-  double local[SmallPolygon::kInline];
+  // (eps |n|)^2: splitByPlane's margin, with no square root. On the stack for a cone of up to kInline planes.
+  double local[ConvexPolygon::kInline];
   double* margin2 = local;
-  if (m > SmallPolygon::kInline) {
+  if (m > ConvexPolygon::kInline) {
     margin2_.reserve(m);
     margin2 = margin2_.data();
   }
   for (int k = 0; k < m; ++k) margin2[k] = eps_ * eps_ * cone[k].squaredNorm();
   // next_ is a pool: its first nextCount slots are the pieces kept. Slots are added only when it grows, as
-  // a new SmallPolygon is zeroed whole (768 bytes).
+  // a new ConvexPolygon is zeroed whole (768 bytes).
   int nextCount = 0;
-  auto slot = [&]() -> SmallPolygon& {
+  auto slot = [&]() -> ConvexPolygon& {
     if (nextCount == static_cast<int>(next_.size())) next_.emplace_back();
     return next_[static_cast<std::size_t>(nextCount)];
   };
-  SmallPolygon* buffers = split_;
+  ConvexPolygon* buffers = split_;
   bool anyLeft = false;  // of the receiver, some part outside this cone and every one before
   for (int p = 0; p < pieceCount_; ++p) {
-    const SmallPolygon& piece = pieces_[static_cast<std::size_t>(p)];
+    const ConvexPolygon& piece = pieces_[static_cast<std::size_t>(p)];
     // Wholly outside one side plane: untouched by this shadow (checked first so that it is not cut into
     // pieces by the planes before it, which the occluders after this one would each have to cut again).
     bool clear = false;
@@ -264,22 +219,22 @@ bool ShadowClipper::cutCone(const Vec3& x, const Vec3* cone, int m, bool last, d
       clear = !anyInside;
     }
     if (clear) {
-      copyPolygon(piece, slot());
+      slot().assign(piece);
       ++nextCount;
       anyLeft = true;
       continue;
     }
-    const SmallPolygon* inside = &piece;
+    const ConvexPolygon* inside = &piece;
     int which = 0;  // the buffer the next split writes: never the one `inside` is in
     for (int k = 0; k < m && inside; ++k) {
-      SmallPolygon& part = buffers[which];
-      SmallPolygon* outside = last ? nullptr : &slot();
-      const int side = splitAt(*inside, x, cone[k], margin2[k], part, outside);
+      ConvexPolygon& part = buffers[which];
+      ConvexPolygon* outside = last ? nullptr : &slot();
+      const int side = splitByPlane(*inside, x, cone[k], margin2[k], part, outside);
       if (side > 0) continue;
       anyLeft = true;
       if (side < 0) {
         if (outside) {
-          copyPolygon(*inside, *outside);
+          outside->assign(*inside);
           ++nextCount;
         }
         inside = nullptr;
@@ -298,9 +253,9 @@ bool ShadowClipper::cutCone(const Vec3& x, const Vec3* cone, int m, bool last, d
   return pieceCount_ > 0;
 }
 
-void ShadowClipper::addHidden(const Vec3& x, const SmallPolygon& piece, double& sum) const {
+void ShadowClipper::addHidden(const Vec3& x, const ConvexPolygon& piece, double& sum) const {
   Pending& pending = pending_[static_cast<std::size_t>(pendingCount_++)];
-  copyPolygon(piece, pending.piece);
+  pending.piece.assign(piece);
   pending.x = x;
   pending.sum = &sum;
   if (pendingCount_ == static_cast<int>(pending_.size())) flushHidden();
@@ -348,9 +303,9 @@ void ShadowClipper::clipHidden(const Vec3& x, const std::vector<int>& occluders,
                                bool* whollyHidden) const {
   if (whollyHidden) *whollyHidden = false;
   if (pieces_.empty()) pieces_.emplace_back();
-  copyPolygon(receiver_, pieces_[0]);
+  pieces_[0].assign(receiver_);
   pieceCount_ = 1;
-  SmallBuffer<Vec3, SmallPolygon::kInline>& cone = cone_;
+  SmallBuffer<Vec3, ConvexPolygon::kInline>& cone = cone_;
   outside_.assign(solids_.size(), -1);
   if (shapes_) cut_.assign(whole_.size(), 0);
   // From `tail` on, every occluder bounds one solid wholly in front: cut by its silhouette there, it is the

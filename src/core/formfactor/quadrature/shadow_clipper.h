@@ -19,64 +19,17 @@
 #include <vector>
 
 #include "core/formfactor/quadrature/penumbra_region.h"
-#include "core/formfactor/quadrature/small_buffer.h"
+#include "core/formfactor/quadrature/segment_proofs.h"
 #include "core/formfactor/quadrature/source_panels.h"
+#include "core/geometry/convex_polygon.h"
+#include "core/geometry/small_buffer.h"
 #include "core/vec.h"
 
 namespace rt {
 
-// A convex polygon, its corners inline up to kInline (each clip by a plane adds at most one) and on the heap
-// past that: an occluder or a clipped piece of any corner count keeps them all. Writers reserve first.
-struct SmallPolygon {
-  static constexpr int kInline = 32;
-  SmallBuffer<Vec3, kInline> v;
-  int count = 0;
-};
-
-// The part of `in` with normal . (p - origin) >= 0, vertices within `eps` (a length) of the plane counting
-// as on it; normal need not be unit. Empty (count 0) when less than a triangle is left. Returns whether
-// `in` was kept whole (nothing of it behind), `out` then a copy.
-bool clipToFront(const Vec3* in, int count, const Vec3& origin, const Vec3& normal, double eps,
-                 SmallPolygon& out);
-
-// True when the convex polygon (counter-clockwise about its unit `normal`, its plane normal . p = offset)
-// cuts every segment from the convex polygon `from` to the convex polygon `to` with a margin `eps` (a
-// length): the two lie strictly on opposite sides of its plane and every corner-to-corner segment crosses it
-// strictly inside. Every segment crosses the plane at a point of the convex hull of those crossings, so that
-// is enough.
-bool polygonCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
-                             const Vec3* polygon, int count, const Vec3& normal, double offset, double eps);
-
-// A closed convex solid (a block with its bottom): the outward planes of its faces (unit normal, offset).
-using SolidPlanes = std::vector<std::pair<Vec3, double>>;
-
-// True when the closed convex solid (`centre` inside it) cuts every segment from the convex polygon `from`
-// to the convex polygon `to` with a margin `eps`: the crossings of the corner-to-corner segments with one of
-// its cross-sections through the centre (across the line of sight, or parallel to a face) all lie inside it.
-// Every such segment crosses that plane in the hull of those crossings.
-bool solidCutsEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
-                           const SolidPlanes& solid, const Vec3& centre, double eps);
-
-// True when one face plane of the closed convex solid has both polygons strictly in front of it (by more
-// than `eps`): every segment from one to the other stays in front of it too, so the solid hides nothing.
-bool solidMissesEverySegment(const Vec3* from, int fromCount, const Vec3* to, int toCount,
-                             const SolidPlanes& solid, double eps);
-
-// Whether the segment pq passes through the closed convex solid's inside by more than `eps` (each face's
-// plane): a pair whose centres' segment does cannot be proven missed, and the proofs are not tried.
-bool segmentEntersSolid(const Vec3& p, const Vec3& q, const SolidPlanes& solid, double eps);
-
-// True when a plane through an edge of one polygon and a corner of the other has both polygons on or behind
-// it and every corner of the solid strictly in front (by more than `eps`): such a plane is a face of the
-// polygons' convex hull, which holds every segment from one to the other, so the solid (the convex hull of
-// `corners`) meets none of them. With solidMissesEverySegment() (the solid's own faces) it settles most
-// pairs whose blocks have no shadow region (block_shadow_regions.h) before the clipper is prepared.
-bool solidOutsideHullOf(const Vec3* a, int na, const Vec3* b, int nb, const Vec3* corners, int cornerCount,
-                        double eps);
-
 // The margin (a length) the shadow clipper's tests use between a source and a receiver: 1e-10 of the pair's
 // size.
-double shadowEps(const SmallPolygon& source, const SmallPolygon& receiver);
+double shadowEps(const ConvexPolygon& source, const ConvexPolygon& receiver);
 
 // An occluder: a convex polygon, counter-clockwise seen from its front, and the closed convex solid it
 // bounds (or -1). A segment from a point outside such a solid that crosses it enters through a face the
@@ -97,7 +50,7 @@ class ShadowClipper {
   // `solidCentres`, a point inside each solid, lets hidesAll() use the solids' cross-sections. `shapes`, the
   // solids' faces and edges, lets hidden() cut a solid wholly in front of both planes by the one cone of its
   // silhouette instead of face by face.
-  ShadowClipper(const SmallPolygon& source, const Vec3& sourceNormal, const SmallPolygon& receiver,
+  ShadowClipper(const ConvexPolygon& source, const Vec3& sourceNormal, const ConvexPolygon& receiver,
                 const Vec3& receiverNormal, const std::vector<OccluderPolygon>& occluders,
                 const std::vector<SolidPlanes>& solids, const std::vector<Vec3>* solidCentres = nullptr,
                 const std::vector<SolidShape>* shapes = nullptr);
@@ -107,7 +60,7 @@ class ShadowClipper {
                          const std::vector<Vec3>* solidCentres = nullptr,
                          const std::vector<SolidShape>* shapes = nullptr);
   // What the first constructor does, for a new pair.
-  void prepare(const SmallPolygon& source, const Vec3& sourceNormal, const SmallPolygon& receiver,
+  void prepare(const ConvexPolygon& source, const Vec3& sourceNormal, const ConvexPolygon& receiver,
                const Vec3& receiverNormal, const std::vector<OccluderPolygon>& occluders);
 
   // Indices of the occluders kept (all of them may block).
@@ -159,7 +112,7 @@ class ShadowClipper {
       int a = 0;         // the receiver's or the solid's corner; for EdgeCut, the receiver edge from corner a
       int b = 0, c = 0;  // EdgeCut: the silhouette edge's corners
     };
-    SmallBuffer<Corner, SmallPolygon::kInline> corners;
+    SmallBuffer<Corner, ConvexPolygon::kInline> corners;
     int count = 0;        // 0: nothing hidden
     bool wholly = false;  // the whole receiver hidden
     int solid = -1;
@@ -178,12 +131,12 @@ class ShadowClipper {
   bool hidden4(const Vec3* x, const HiddenForm& form, double* values) const;
   // The planes along which the hidden part's form changes over the source (visibility_events.h), into
   // `out`. False when `occluders` are not one solid or one polygon: then the events are not all planes.
-  bool eventPlanes(const SmallPolygon& source, const std::vector<int>& occluders,
+  bool eventPlanes(const ConvexPolygon& source, const std::vector<int>& occluders,
                    std::vector<EventPlane>& out) const;
 
  private:
   struct Occluder {
-    SmallPolygon polygon;  // clipped to the front of the source's and the receiver's planes
+    ConvexPolygon polygon;  // clipped to the front of the source's and the receiver's planes
     Vec3 centre;
     Vec3 normal;  // unit
     int solid = -1;
@@ -199,7 +152,7 @@ class ShadowClipper {
   void clipHidden(const Vec3& x, const std::vector<int>& occluders, double& sum, bool* whollyHidden) const;
   // Hidden pieces wait in pending_ to have their Lambert sums taken four at a time, each added to the sum
   // of its point when four are waiting or at flushHidden().
-  void addHidden(const Vec3& x, const SmallPolygon& piece, double& sum) const;
+  void addHidden(const Vec3& x, const ConvexPolygon& piece, double& sum) const;
   void flushHidden() const;
   // The corners of a hidden form's outline from x, into `v`; false where the form does not fit x.
   bool place(const Vec3& x, const HiddenForm& form, Vec3* v) const;
@@ -207,7 +160,7 @@ class ShadowClipper {
   // The region of the source's plane a whole solid can shade (null when unbounded or not a whole solid).
   const PenumbraRegion* penumbra(int solid) const;
 
-  SmallPolygon receiver_;
+  ConvexPolygon receiver_;
   Vec3 sourceOrigin_;
   Vec3 sourceNormal_;
   double eps_ = 0;  // a length: 1e-10 of the pair's size
@@ -219,19 +172,19 @@ class ShadowClipper {
   std::vector<Occluder> prepared_;
   std::vector<int> all_;
   mutable std::vector<std::pair<Vec3, double>> planes_;
-  mutable std::vector<SmallPolygon> pieces_, next_;  // pools: the first pieceCount_ of pieces_ are in use
+  mutable std::vector<ConvexPolygon> pieces_, next_;  // pools: the first pieceCount_ of pieces_ are in use
   mutable int pieceCount_ = 0;
   struct Pending {
-    SmallPolygon piece;
+    ConvexPolygon piece;
     Vec3 x;
     double* sum = nullptr;
   };
   mutable std::array<Pending, 4> pending_;
   // clipHidden()'s cone and cutCone()'s margins: kept, so that an occluder of many corners allocates once.
-  mutable SmallBuffer<Vec3, SmallPolygon::kInline> cone_;
-  mutable SmallBuffer<double, SmallPolygon::kInline> margin2_;
-  mutable SmallPolygon split_[2];                                // cutCone()'s parts inside the cone
-  mutable SmallBuffer<Vec3, 4 * SmallPolygon::kInline> placed_;  // hidden forms' outlines, four at a time
+  mutable SmallBuffer<Vec3, ConvexPolygon::kInline> cone_;
+  mutable SmallBuffer<double, ConvexPolygon::kInline> margin2_;
+  mutable ConvexPolygon split_[2];                                // cutCone()'s parts inside the cone
+  mutable SmallBuffer<Vec3, 4 * ConvexPolygon::kInline> placed_;  // hidden forms' outlines, four at a time
   mutable int pendingCount_ = 0;
   mutable std::vector<signed char> outside_;       // per solid, for the current point: -1 not yet known
   mutable std::vector<PenumbraRegion> penumbrae_;  // per solid, made on first use

@@ -6,7 +6,7 @@
 #include <tuple>
 
 #include "core/formfactor/quadrature/closed_solids.h"
-#include "core/formfactor/quadrature/small_buffer.h"
+#include "core/geometry/small_buffer.h"
 
 namespace rt {
 namespace {

@@ -16,49 +16,23 @@ constexpr double kSafety = 8;
 
 }  // namespace
 
-double SourcePanel::area() const {
-  Vec3 sum = Vec3::Zero();
-  for (int k = 0; k < count; ++k)
-    sum += v[static_cast<std::size_t>(k)].cross(v[static_cast<std::size_t>((k + 1) % count)]);
-  return 0.5 * sum.norm();
-}
-
-Vec3 SourcePanel::centre() const {
-  Vec3 c = Vec3::Zero();
-  for (int k = 0; k < count; ++k) c += v[static_cast<std::size_t>(k)];
-  return c / count;
-}
-
-double SourcePanel::radius() const {
-  const Vec3 c = centre();
-  double r = 0;
-  for (int k = 0; k < count; ++k) r = std::max(r, (v[static_cast<std::size_t>(k)] - c).norm());
-  return r;
-}
-
-double SourcePanel::longestEdge() const {
-  double h = 0;
-  for (int k = 0; k < count; ++k)
-    h = std::max(h, (v[static_cast<std::size_t>((k + 1) % count)] - v[static_cast<std::size_t>(k)]).norm());
-  return h;
-}
-
-std::array<SourcePanel, 4> SourcePanel::split() const {
+std::array<SourcePanel, 4> splitPanel(const SourcePanel& panel) {
+  const auto& v = panel.v;
   std::array<SourcePanel, 4> out;
-  if (count == 4) {
+  if (panel.count == 4) {
     const Vec3 m01 = 0.5 * (v[0] + v[1]), m12 = 0.5 * (v[1] + v[2]), m23 = 0.5 * (v[2] + v[3]),
-               m30 = 0.5 * (v[3] + v[0]), c = centre();
-    out[0] = {{v[0], m01, c, m30}, 4};
-    out[1] = {{m01, v[1], m12, c}, 4};
-    out[2] = {{c, m12, v[2], m23}, 4};
-    out[3] = {{m30, c, m23, v[3]}, 4};
+               m30 = 0.5 * (v[3] + v[0]), c = panel.centre();
+    out[0] = {v[0], m01, c, m30};
+    out[1] = {m01, v[1], m12, c};
+    out[2] = {c, m12, v[2], m23};
+    out[3] = {m30, c, m23, v[3]};
     return out;
   }
   const Vec3 m01 = 0.5 * (v[0] + v[1]), m12 = 0.5 * (v[1] + v[2]), m20 = 0.5 * (v[2] + v[0]);
-  out[0] = {{v[0], m01, m20, Vec3::Zero()}, 3};
-  out[1] = {{m01, v[1], m12, Vec3::Zero()}, 3};
-  out[2] = {{m20, m12, v[2], Vec3::Zero()}, 3};
-  out[3] = {{m01, m12, m20, Vec3::Zero()}, 3};
+  out[0] = {v[0], m01, m20};
+  out[1] = {m01, v[1], m12};
+  out[2] = {m20, m12, v[2]};
+  out[3] = {m01, m12, m20};
   return out;
 }
 
@@ -117,9 +91,8 @@ int panelsOf(const Vec3* polygon, int count, SourcePanel* out, int capacity) {
   int made = 0;
   int t = 1;
   for (; t + 2 < count && made < capacity; t += 2)
-    out[made++] = {{polygon[0], polygon[t], polygon[t + 1], polygon[t + 2]}, 4};
-  if (t + 1 < count && made < capacity)
-    out[made++] = {{polygon[0], polygon[t], polygon[t + 1], Vec3::Zero()}, 3};
+    out[made++] = {polygon[0], polygon[t], polygon[t + 1], polygon[t + 2]};
+  if (t + 1 < count && made < capacity) out[made++] = {polygon[0], polygon[t], polygon[t + 1]};
   return made;
 }
 

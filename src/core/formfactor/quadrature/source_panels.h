@@ -16,20 +16,16 @@
 
 #include <array>
 
+#include "core/geometry/convex_polygon.h"
 #include "core/vec.h"
 
 namespace rt {
 
-struct SourcePanel {
-  std::array<Vec3, 4> v;
-  int count = 0;  // 3 or 4
-  double area() const;
-  Vec3 centre() const;    // vertex average
-  double radius() const;  // largest distance from centre() to a vertex
-  double longestEdge() const;
-  // Four children covering the panel: by edge midpoints (and the centre, for a quadrilateral).
-  std::array<SourcePanel, 4> split() const;
-};
+// A panel: a convex polygon of 3 or 4 corners (area(), centre() the corner mean, radius(), longestEdge()).
+using SourcePanel = FixedConvexPolygon<4>;
+
+// Four children covering the panel: by edge midpoints (and the centre, for a quadrilateral).
+std::array<SourcePanel, 4> splitPanel(const SourcePanel& panel);
 
 // Calls visit(x, weight) for the n x n points of the panel's rule; the weights sum to the panel's area.
 template <class Visit>

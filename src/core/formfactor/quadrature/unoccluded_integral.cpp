@@ -45,9 +45,10 @@ OnePoint onePointOf(const QuadratureScene::Measure& m) {
   return OnePoint{m.node, m.weight, m.longest, m.corners};
 }
 
-double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound, const SmallPolygon& receiver,
-                           const Vec3& normal, double tolerance, int depth, PairWork& work, double gap,
-                           double edge, const OnePoint* far, const OnePoint* own) {
+double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound,
+                           const ConvexPolygon& receiver, const Vec3& normal, double tolerance, int depth,
+                           PairWork& work, double gap, double edge, const OnePoint* far,
+                           const OnePoint* own) {
   if (far && far->corners > 0) {
     double sum = 0;
     if (farFieldPair(own ? *own : onePointOf(panel), *far, bound, normal,
@@ -60,7 +61,7 @@ double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound,
                    : gaussOrderFor(panel, bound, tolerance);
   if (n == 0 && depth < kMaxUnoccludedDepth) {
     double sum = 0;
-    for (const SourcePanel& child : panel.split())
+    for (const SourcePanel& child : splitPanel(panel))
       sum += integrateUnoccluded(child, bound, receiver, normal, tolerance, depth + 1, work);
     return sum;
   }
@@ -87,7 +88,7 @@ double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound,
 
 // A convex polygon as panels (panelsOf()), appended to `out`: room for exactly the panels its fan makes
 // (one, or (count - 1) / 2), so whatever its corner count all of it is kept and little is zeroed.
-void appendPanels(const SmallPolygon& polygon, std::vector<SourcePanel>& out) {
+void appendPanels(const ConvexPolygon& polygon, std::vector<SourcePanel>& out) {
   const std::size_t first = out.size();
   out.resize(first + static_cast<std::size_t>(std::max(1, (polygon.count - 1) / 2)));
   const int made =
@@ -95,9 +96,9 @@ void appendPanels(const SmallPolygon& polygon, std::vector<SourcePanel>& out) {
   out.resize(first + static_cast<std::size_t>(made));
 }
 
-void appendPanels(const std::vector<SmallPolygon>& polygons, std::vector<SourcePanel>& out) {
+void appendPanels(const std::vector<ConvexPolygon>& polygons, std::vector<SourcePanel>& out) {
   out.clear();
-  for (const SmallPolygon& polygon : polygons) appendPanels(polygon, out);
+  for (const ConvexPolygon& polygon : polygons) appendPanels(polygon, out);
 }
 
 }  // namespace rt

@@ -26,12 +26,13 @@ OnePoint onePointOf(const QuadratureScene::Measure& m);
 // int over `panel` of F(dA_x -> receiver) dA_x to `tolerance`. `gap` and `edge`, where known (>= 0), are
 // panelGap() and the longest edge of the panel. `far`, where given, is the receiver's one-point rule, and
 // `own` the panel's where known (the element whole).
-double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound, const SmallPolygon& receiver,
-                           const Vec3& normal, double tolerance, int depth, PairWork& work, double gap = -1,
-                           double edge = -1, const OnePoint* far = nullptr, const OnePoint* own = nullptr);
+double integrateUnoccluded(const SourcePanel& panel, const ReceiverBound& bound,
+                           const ConvexPolygon& receiver, const Vec3& normal, double tolerance, int depth,
+                           PairWork& work, double gap = -1, double edge = -1, const OnePoint* far = nullptr,
+                           const OnePoint* own = nullptr);
 
 // A convex polygon as panels (panelsOf()), appended to `out`; convex polygons as panels, into `out`.
-void appendPanels(const SmallPolygon& polygon, std::vector<SourcePanel>& out);
-void appendPanels(const std::vector<SmallPolygon>& polygons, std::vector<SourcePanel>& out);
+void appendPanels(const ConvexPolygon& polygon, std::vector<SourcePanel>& out);
+void appendPanels(const std::vector<ConvexPolygon>& polygons, std::vector<SourcePanel>& out);
 
 }  // namespace rt

@@ -4,35 +4,23 @@
 #include <cmath>
 #include <utility>
 
-#include "core/formfactor/quadrature/shadow_clipper_detail.h"
 #include "core/formfactor/quadrature/solid_silhouette.h"
+#include "core/geometry/plane_clip.h"
+#include "core/geometry/segment_clip.h"
 
 namespace rt {
-
-using shadow_detail::centreOf;
-using shadow_detail::copyPolygon;
-using shadow_detail::splitAt;
 
 namespace {
 
 // Whether some point p + t d, t in [0, 1], lies in each of `count` half-planes, the k-th given by
 // `halfPlane(k)` as its height at p and the height's change along d (inside where the height is >= 0): the
-// segment clipped to a convex region, Liang and Barsky's way.
+// segment clipped to a convex region (segment_clip.h; a parallel segment on a boundary is in).
 template <class HalfPlane>
 bool segmentKeepsAPoint(int count, HalfPlane&& halfPlane) {
   double t0 = 0, t1 = 1;
   for (int k = 0; k < count; ++k) {
     const auto [start, rate] = halfPlane(k);
-    if (std::abs(rate) <= 1e-300) {
-      if (start < 0) return false;
-      continue;
-    }
-    const double t = -start / rate;
-    if (rate > 0)
-      t0 = std::max(t0, t);
-    else
-      t1 = std::min(t1, t);
-    if (t0 >= t1) return false;
+    if (!clipRange(start, rate, kTinyRate, Boundary::Closed, t0, t1)) return false;
   }
   return true;
 }
@@ -40,7 +28,7 @@ bool segmentKeepsAPoint(int count, HalfPlane&& halfPlane) {
 // The source as the events see it: its plane and its edges' inward normals within that plane.
 class SourceRegion {
  public:
-  SourceRegion(const SmallPolygon& source, const Vec3& normal, double eps)
+  SourceRegion(const ConvexPolygon& source, const Vec3& normal, double eps)
       : source_(source), normal_(normal), eps_(eps) {}
 
   double height(const Vec3& p) const { return normal_.dot(p - source_.v[0]); }
@@ -85,12 +73,12 @@ class SourceRegion {
   }
 
  private:
-  const SmallPolygon& source_;
+  const ConvexPolygon& source_;
   Vec3 normal_;
   double eps_;
   // The edges' unit inward normals, made on the first segment's test (most pairs have none).
   void makeInward() const {
-    const Vec3 centre = centreOf(source_);
+    const Vec3 centre = source_.centre();
     inward_.reserve(source_.count);
     for (int k = 0; k < source_.count; ++k) {
       const Vec3& p = source_.v[static_cast<std::size_t>(k)];
@@ -101,14 +89,14 @@ class SourceRegion {
     }
     inwardMade_ = true;
   }
-  mutable SmallBuffer<Vec3, SmallPolygon::kInline> inward_;
+  mutable SmallBuffer<Vec3, ConvexPolygon::kInline> inward_;
   mutable bool inwardMade_ = false;
 };
 
 // Whether the segment pq of the cell's plane comes within `eps` of the convex cell (`normal` the plane's).
 // `normal` is one the cell turns counter-clockwise about, so that normal x edge points inward, and `margin`
 // bounds eps times the length of any such product (|normal| times the cell's longest edge).
-bool segmentMeetsCell(const SmallPolygon& cell, const Vec3& normal, const Vec3& p, const Vec3& q,
+bool segmentMeetsCell(const ConvexPolygon& cell, const Vec3& normal, const Vec3& p, const Vec3& q,
                       double margin) {
   const Vec3 d = q - p;
   return segmentKeepsAPoint(cell.count, [&](int k) {
@@ -120,7 +108,7 @@ bool segmentMeetsCell(const SmallPolygon& cell, const Vec3& normal, const Vec3& 
 
 }  // namespace
 
-bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<int>& occluders,
+bool ShadowClipper::eventPlanes(const ConvexPolygon& source, const std::vector<int>& occluders,
                                 std::vector<EventPlane>& out) const {
   out.clear();
   if (occluders.empty()) return true;
@@ -140,7 +128,7 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
   // Receiver corner r behind occluder edge ab (EV), and occluder corner v in front of receiver edge r1 r2
   // (VE): from x the point nearer the source's plane hides the one farther. Heights first: most candidates
   // end there, before any cross product.
-  SmallBuffer<double, SmallPolygon::kInline> receiverHeight;
+  SmallBuffer<double, ConvexPolygon::kInline> receiverHeight;
   receiverHeight.reserve(receiver_.count);
   for (int k = 0; k < receiver_.count; ++k)
     receiverHeight[static_cast<std::size_t>(k)] = region.height(receiver_.v[static_cast<std::size_t>(k)]);
@@ -273,25 +261,19 @@ bool ShadowClipper::eventPlanes(const SmallPolygon& source, const std::vector<in
 }
 
 bool cutAlongEvents(const SourcePanel& panel, const std::vector<EventPlane>& planes, double eps, int maxCells,
-                    std::vector<SmallPolygon>& cells) {
+                    std::vector<ConvexPolygon>& cells) {
   const std::size_t first = cells.size();
-  SmallPolygon& whole = cells.emplace_back();
-  whole.v.reserve(panel.count);
-  whole.count = panel.count;
-  std::copy_n(panel.v.begin(), panel.count, whole.v.begin());
-  SmallPolygon front, back;
+  cells.emplace_back().assign(panel);
+  ConvexPolygon front, back;
   // The panel's own normal: it and every cell cut from it turn counter-clockwise about it. Any cell's edge is
   // no longer than twice the panel's longest.
-  Vec3 normal = Vec3::Zero();
-  for (int k = 0; k < panel.count; ++k)
-    normal +=
-        panel.v[static_cast<std::size_t>(k)].cross(panel.v[static_cast<std::size_t>((k + 1) % panel.count)]);
+  const Vec3 normal = twiceAreaVector(panel.data(), panel.count);
   const double margin = eps * normal.norm() * 2 * panel.longestEdge();
   for (const EventPlane& plane : planes) {
     const double margin2 = eps * eps * plane.normal.squaredNorm();
     const std::size_t end = cells.size();
     for (std::size_t c = first; c < end; ++c) {
-      if (splitAt(cells[c], plane.origin, plane.normal, margin2, front, &back) != 0) continue;
+      if (splitByPlane(cells[c], plane.origin, plane.normal, margin2, front, &back) != 0) continue;
       if (front.count < 3 || back.count < 3) continue;  // a sliver below the margin: not worth a cell
       // The event happens on part of the line only: a cell that part misses keeps its form across the line.
       if (plane.bounded && !segmentMeetsCell(cells[c], normal, plane.from, plane.to, margin)) continue;
@@ -299,9 +281,9 @@ bool cutAlongEvents(const SourcePanel& panel, const std::vector<EventPlane>& pla
         cells.resize(first);
         return false;
       }
-      // (Corner by corner: a whole SmallPolygon is 800 bytes.)
-      copyPolygon(front, cells[c]);
-      copyPolygon(back, cells.emplace_back());
+      // (Corner by corner: a whole ConvexPolygon is 800 bytes.)
+      cells[c].assign(front);
+      cells.emplace_back().assign(back);
     }
   }
   return true;

@@ -45,6 +45,6 @@ struct EventPlane {
 // corners within `eps` (a length) of a plane count as on it. Returns false (leaving `cells` as it found
 // them) when more than `maxCells` would be made.
 bool cutAlongEvents(const SourcePanel& panel, const std::vector<EventPlane>& planes, double eps, int maxCells,
-                    std::vector<SmallPolygon>& cells);
+                    std::vector<ConvexPolygon>& cells);
 
 }  // namespace rt

@@ -1,10 +1,10 @@
-// An array of N slots kept inline that grows onto the heap when asked for more: the clipper's polygons and
-// scratch arrays (shadow_clipper.h).
+// An array of N slots kept inline that grows onto the heap when asked for more: the convex polygons
+// (convex_polygon.h) and the shadow clipper's scratch arrays.
 //
 // Almost every polygon the clipper makes has a few corners (a quadrilateral cut by a handful of planes), so
 // N slots inline cost no allocation; an occluder of a hundred corners, or a piece cut by many cones, asks
 // for more with reserve() and gets them, instead of losing the corners past N. The buffer does not count
-// its entries: the caller keeps the count (SmallPolygon::count) and reserves before it writes.
+// its entries: the caller keeps the count (ConvexPolygon::count) and reserves before it writes.
 #pragma once
 
 #include <algorithm>
