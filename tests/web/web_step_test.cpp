@@ -5,9 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "core/formfactor/formfactor_method.h"
 #include "core/io/scene_loader.h"
@@ -23,13 +21,6 @@ namespace rt::web {
 namespace {
 
 using Json = nlohmann::json;
-
-std::string readText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 TEST(WebStep, WidgetsAreRowsOfTheStepKeyTable) {
   const Json rows =
@@ -75,7 +66,7 @@ TEST(WebStep, ALiveStepOffersItsControlsAndTheCommonOnes) {
 
 TEST(WebStep, AStepComputesWhatTheLessonLayerMapsItTo) {
   WebSession session;
-  session.putFile("cornell-box.json", readText(test::sourcePath("scenes/cornell-box.json")));
+  session.putFile("cornell-box.json", test::readFile(test::sourcePath("scenes/cornell-box.json")));
   ASSERT_EQ(session.load("cornell-box.json"), "");
   ASSERT_EQ(session.configureStep(R"({"stage": "solve", "parameters": {"subdivide": "2", "solver": "jacobi",
                                       "method": "analytic", "reflectance.floor": "0.3"}})"),
@@ -112,7 +103,7 @@ TEST(WebStep, AStepComputesWhatTheLessonLayerMapsItTo) {
 }
 
 TEST(WebStep, ALightChangeScalesTheLastSolutionAsASolveWould) {
-  const std::string box = readText(test::sourcePath("scenes/cornell-box.json"));
+  const std::string box = test::readFile(test::sourcePath("scenes/cornell-box.json"));
   auto step = [](const std::string& solver, const std::string& light) {
     return R"({"stage": "solve", "parameters": {"subdivide": "3", "method": "analytic", "solver": ")" +
            solver + R"(", "light-scale": ")" + light + R"("}})";

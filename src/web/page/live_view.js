@@ -357,14 +357,9 @@
     }
 
     take(result, seconds) {
-      this.summary = result.summary;
-      this.history = result.history;
-      this.final = result.final;
-      this.historyColours = result.colours;
-      this.finalColours = result.finalColours;
-      this.exposure = result.exposure;
-      this.residuals = result.residuals;
-      this.seconds = seconds;
+      Object.assign(this, { summary: result.summary, history: result.history, final: result.final, seconds,
+                            historyColours: result.colours, finalColours: result.finalColours,
+                            exposure: result.exposure, residuals: result.residuals });
       this.makeMesh(result);
       const last = Math.max(0, this.summary.iterations - 1);
       this.scrubber.max = String(last);
@@ -413,7 +408,8 @@
       let total = 0;
       for (let i = 0; i < B.length; ++i) total += B[i];
       this.numbers.textContent =
-          this.summary.elements + ' elements, ' + this.summary.method + ' form factors, ' + this.summary.solver +
+          this.summary.elements + ' elements, ' + (this.summary.method ? this.summary.method + ' form factors, ' : '') +
+          this.summary.solver +
           ': ' + this.summary.status + ' after ' + this.summary.iterations + ' iterations; residual ' +
           (k < this.residuals.length ? this.residuals[k].toExponential(2) : '-') +
           '; mean B ' + (total / B.length).toFixed(3) + ' W/m² (computed here in ' +
