@@ -22,9 +22,9 @@ const core = await RadiosityCore();
 
 // [scene file, web settings, the same as radiosity solve's options, relative tolerance on B]. The default
 // method (quadrature) in the occluded box is held to 1e-6 only: its adaptive rules branch on error estimates
-// that a last-bit difference between the maths libraries (glibc natively, musl in WebAssembly) can move
-// across a threshold (not the native four-lane arctangent: docs/benchmarks.md); each entry stays within the
-// method's tolerance either way.
+// that a last-bit difference between the two builds can move across a threshold (neither the native
+// four-lane arctangent nor the maths library: docs/benchmarks.md); each entry stays within the method's
+// tolerance either way.
 const steps = [
   ['cornell-box.json', { subdivide: 3, method: 'analytic', solver: 'gauss-seidel' }, 1e-9],
   ['cornell-box.json', { subdivide: 2, method: 'quadrature', solver: 'jacobi' }, 1e-6],
