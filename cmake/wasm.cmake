@@ -1,5 +1,5 @@
-# The WebAssembly build (the wasm preset, Emscripten's em++): the core, portable (no Embree, no TBB), and its
-# web module, one JavaScript file with the WebAssembly embedded (radiosity-core.js), which the web edition's
+# The WebAssembly build (the wasm preset, Emscripten's em++): the core, portable (no Embree, no TBB), the
+# lesson layer's step keys, and the web module, one JavaScript file with the WebAssembly embedded (radiosity-core.js), which the web edition's
 # pages load from file:// or any static server. Nothing else of the project is built here.
 set(RT_PORTABLE ON CACHE BOOL "" FORCE)
 set(RT_CHECKS ON)
@@ -32,4 +32,14 @@ set_target_properties(Eigen3::Eigen nlohmann_json::nlohmann_json Boost::headers 
   INTERFACE_INCLUDE_DIRECTORIES ${rt_headers} INTERFACE_SYSTEM_INCLUDE_DIRECTORIES ${rt_headers})
 
 add_subdirectory(src/core)
+# The lesson layer's table of step keys and its mapping to the pipeline, so that a page's widgets and what a
+# change computes come from the same declared table as the app's (src/web/web_step.h). The table's choices
+# name the homework topics, hence rt_homework (core only). The rest of the lesson layer (Markdown, the runner)
+# stays native.
+add_subdirectory(src/homework)
+set(rt_lesson_dir ${PROJECT_SOURCE_DIR}/src/lesson)
+add_library(rt_lesson STATIC ${rt_lesson_dir}/lesson.cpp ${rt_lesson_dir}/lesson_parser.cpp
+            ${rt_lesson_dir}/placeholders.cpp ${rt_lesson_dir}/step_keys.cpp ${rt_lesson_dir}/step_keys_chapters.cpp
+            ${rt_lesson_dir}/step_settings.cpp ${rt_lesson_dir}/value_parsing.cpp)
+target_link_libraries(rt_lesson PUBLIC rt_core rt_homework PRIVATE rt_warnings nlohmann_json::nlohmann_json)
 add_subdirectory(src/web)

@@ -9,8 +9,7 @@
 
 #include "core/io/scene_loader.h"
 #include "lesson/book_html.h"
-#include "lesson/step_settings.h"
-#include "web/web_settings.h"
+#include "web/web_step.h"
 
 namespace rt::cli {
 namespace {
@@ -37,17 +36,21 @@ void copyAsset(const fs::path& from, const fs::path& to, const std::string& reme
   fs::copy_file(from, to, fs::copy_options::overwrite_existing);
 }
 
-// The stages the web core computes as the desktop does, with a 3D view of the solution.
-// A bounces step of no bounce shows the emission alone, which has no iteration to scrub.
+// The steps the web core computes as the desktop does, with a 3D view of the scene: solve and bounces steps
+// (a bounces step of no bounce shows the emission alone, which has no iteration to scrub), and the steps
+// that compute F by a method, whose live view solves with that F.
 bool isLive(const lesson::Step& step) {
-  const bool solves = step.stage == lesson::Stage::Solve ||
-                      (step.stage == lesson::Stage::Bounces && step.parameters.bounces > 0);
+  using lesson::Stage;
+  const bool solves =
+      step.stage == Stage::Solve || (step.stage == Stage::Bounces && step.parameters.bounces > 0) ||
+      step.stage == Stage::FormFactors || step.stage == Stage::Hemicube || step.stage == Stage::Nusselt;
   const bool shown = std::find(step.views.begin(), step.views.end(), lesson::View::Scene) != step.views.end();
   return solves && shown && !step.scene.empty();
 }
 
-// The step for the page: its scene's files, its settings, the surface whose reflectance the reader may
-// change (the floor when there is one, else the first surface that does not emit).
+// The step for the page: its scene's files, its stage, its parameters as the lesson writes them and the
+// keys it offers as controls (web_step.h), and the surface whose reflectance the reader may drag (the floor
+// when there is one, else the first surface that does not emit).
 Json liveStep(const lesson::Step& step, const std::string& scenesDir) {
   const fs::path scenePath = fs::path(scenesDir) / step.scene;
   Json files = Json::object();
@@ -57,17 +60,11 @@ Json liveStep(const lesson::Step& step, const std::string& scenesDir) {
     if (fs::exists(mtl)) files[mtl.filename().string()] = readText(mtl);
   }
   const Scene scene = loadScene(scenePath.string());
-  PipelineSettings settings = lesson::settingsFor(step.parameters, step.parameters.method);
-  if (step.stage == lesson::Stage::Bounces) {
-    // Bounce by bounce: the solver that adds one term of the Neumann series per iteration, as many as the
-    // step.
-    settings.solver = "bounces";
-    settings.solverOptions.maxIterations = step.parameters.bounces;
-    settings.solverOptions.tolerance = 1e-15;
-  }
   Json out{{"scene", scenePath.filename().string()},
            {"files", files},
-           {"settings", Json::parse(web::settingsJson(settings))}};
+           {"stage", lesson::toString(web::liveStage(step))},
+           {"parameters", Json::parse(web::stepParametersJson(step))},
+           {"controls", web::liveControls(step)}};
   const Surface* chosen = nullptr;
   for (const Surface& s : scene.surfaces) {
     if (scene.materials[std::size_t(s.material)].isEmitter()) continue;
@@ -75,8 +72,8 @@ Json liveStep(const lesson::Step& step, const std::string& scenesDir) {
   }
   if (chosen) {
     Rgb rho = scene.materials[std::size_t(chosen->material)].reflectance;
-    const auto over = settings.reflectance.find(chosen->name);
-    if (over != settings.reflectance.end()) rho = over->second;
+    const auto over = step.parameters.reflectance.find(chosen->name);
+    if (over != step.parameters.reflectance.end()) rho = over->second;
     out["surface"] = chosen->name;
     out["surfaceColour"] = {rho[0], rho[1], rho[2]};
     out["surfaceReflectance"] = rho.maxCoeff();
@@ -97,8 +94,12 @@ bool insertAfterFigure(std::string& html, const std::string& figureFile, const s
   return true;
 }
 
-// The scene playground (src/web/page/playground.js): the reader's own scene, dropped on the page.
+// The scene playground (src/web/page/playground.js): the reader's own scene, dropped on the page, with the
+// controls of a solve step.
 std::string playgroundHtml() {
+  lesson::Step solve;
+  solve.stage = lesson::Stage::Solve;
+  const std::string controls = Json(web::liveControls(solve)).dump();
   std::string html =
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       "<title>Scene playground</title>\n<link rel=\"stylesheet\" href=\"" +
@@ -109,11 +110,16 @@ std::string playgroundHtml() {
       "the "
       "desktop programs check it, meshed, solved by the same core, running in this page, and shown: drag to "
       "rotate, scrub the iterations, change the light.</p>\n"
-      "<div id=\"playground-drop\" class=\"live-view\">\n"
+      "<div id=\"playground-drop\" class=\"live-view\" data-controls='" +
+      controls +
+      "'>\n"
       "<p><input type=\"file\" id=\"playground-files\" multiple accept=\".json,.obj,.mtl\"> "
       "<label>Subdivide <input type=\"number\" id=\"playground-subdivide\" min=\"1\" max=\"12\" "
-      "value=\"3\"></label> <button type=\"button\" id=\"playground-csv\" hidden>Download B "
-      "(CSV)</button></p>\n<p id=\"playground-status\">No scene yet.</p>\n"
+      "value=\"3\"></label> <button type=\"button\" class=\"playground-download\" data-kind=\"csv\" "
+      "hidden>Download B (CSV)</button> <button type=\"button\" class=\"playground-download\" "
+      "data-kind=\"F-csv\" hidden>Download F (CSV)</button> <button type=\"button\" "
+      "class=\"playground-download\" data-kind=\"F-npy\" hidden>Download F (NPY)</button></p>\n<p "
+      "id=\"playground-status\">No scene yet.</p>\n"
       "<div id=\"playground-view\"></div>\n</div>\n";
   for (const char* script :
        {"three.min.js", "OrbitControls.js", "radiosity-core.js", "live_view.js", "playground.js"})

@@ -39,17 +39,7 @@ void StageContext::failUnavailable(const std::string& key, const std::string& na
 }
 
 std::string StageContext::method() const {
-  if (step.fields.count("method")) return parameters.method;
-  switch (step.stage) {
-    case Stage::Hemicube:
-      return "hemicube";
-    case Stage::Nusselt:
-      return "nusselt";
-    case Stage::Rays:
-      return "raycast";
-    default:
-      return parameters.method;
-  }
+  return methodOf(step);
 }
 
 FormFactorOptions StageContext::optionsFor(const std::string& name, int sweepValue) const {

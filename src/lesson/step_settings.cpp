@@ -64,6 +64,20 @@ SolverOptions solverOptionsFor(const StepParameters& p) {
   return o;
 }
 
+std::string methodOf(const Step& step) {
+  if (step.fields.count("method")) return step.parameters.method;
+  switch (step.stage) {
+    case Stage::Hemicube:
+      return "hemicube";
+    case Stage::Nusselt:
+      return "nusselt";
+    case Stage::Rays:
+      return "raycast";
+    default:
+      return step.parameters.method;
+  }
+}
+
 PipelineSettings settingsFor(const StepParameters& p, const std::string& method) {
   PipelineSettings s;
   s.mesh = meshOptionsFor(p);

@@ -15,6 +15,9 @@ void setMeshOptions(StepParameters& p, const MeshOptions& options);
 FormFactorOptions formFactorOptionsFor(const StepParameters& p, const std::string& method,
                                        double sweepValue = 0);
 SolverOptions solverOptionsFor(const StepParameters& p);
+// The form-factor method of a step: `method` when written, otherwise the stage's own (hemicube, nusselt,
+// raycast), otherwise the default.
+std::string methodOf(const Step& step);
 // `method`: the form-factor method to use (a stage may have its own, see StageContext::method).
 PipelineSettings settingsFor(const StepParameters& p, const std::string& method);
 

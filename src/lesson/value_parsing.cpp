@@ -2,7 +2,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <locale>
 #include <sstream>
+#include <version>
 
 namespace rt::lesson {
 namespace {
@@ -18,9 +20,18 @@ std::vector<std::string> words(const std::string& text) {
 }
 
 bool toDouble(const std::string& word, double& value) {
+#if defined(__cpp_lib_to_chars)
   const char* end = word.data() + word.size();
   auto [ptr, ec] = std::from_chars(word.data(), end, value);
   return ec == std::errc() && ptr == end && std::isfinite(value);
+#else
+  // A standard library without the floating-point from_chars (Emscripten's libc++, which the web edition's
+  // core is built with): a stream in the classic locale, so that the reader's locale never changes a number.
+  std::istringstream in(word);
+  in.imbue(std::locale::classic());
+  in >> value;
+  return !in.fail() && in.peek() == std::char_traits<char>::eof() && std::isfinite(value);
+#endif
 }
 
 std::string range(double min, double max) {

@@ -1,10 +1,13 @@
 // The web module's JavaScript interface (embind): `new Module.Session()` with the methods of WebSession;
-// the arrays come back as typed arrays of their own (Float32Array, Int32Array, Float64Array), copied out of
-// the WebAssembly memory so that they outlive the next call.
+// the arrays come back as typed arrays of their own (Float32Array, Int32Array, Float64Array, Uint8Array),
+// copied out of the WebAssembly memory so that they outlive the next call. `Module.controlRows(keys)` gives
+// the step-key table's rows a page builds its widgets from (web_step.h).
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include "viz/display_pipeline.h"
 #include "web/web_session.h"
+#include "web/web_step.h"
 
 namespace {
 
@@ -15,19 +18,94 @@ val copied(const std::vector<T>& values) {
   return val(emscripten::typed_memory_view(values.size(), values.data())).call<val>("slice");
 }
 
+// Reports to a JavaScript function(fraction, stage), at most once per percent and stage, so that a worker
+// posting them does not flood the page.
+class ScriptProgress : public rt::Progress {
+ public:
+  explicit ScriptProgress(val callback) : callback_(std::move(callback)) {}
+  void report(double fraction, const std::string& stage) override {
+    const int percent = static_cast<int>(fraction * 100);
+    if (percent == percent_ && stage == stage_) return;
+    percent_ = percent;
+    stage_ = stage;
+    if (callback_.typeOf().as<std::string>() == "function") callback_(fraction, stage);
+  }
+
+ private:
+  val callback_;
+  int percent_ = -1;
+  std::string stage_;
+};
+
+val bytes(const std::string& text) {
+  const std::vector<unsigned char> b(text.begin(), text.end());
+  return copied(b);
+}
+
+rt::MatrixFormat formatOf(const std::string& extension) {
+  return extension == "npy" ? rt::MatrixFormat::Npy : rt::MatrixFormat::Csv;
+}
+
+rt::RgbField field(const std::vector<double>& values) {
+  rt::RgbField out(Eigen::Index(values.size() / 3), 3);
+  for (Eigen::Index i = 0; i < out.rows(); ++i)
+    for (int c = 0; c < 3; ++c) out(i, c) = values[std::size_t(3 * i + c)];
+  return out;
+}
+
+// The display pipeline of the app's views and the book's figures (viz/display_pipeline.h, VTK-free, compiled
+// into the module): the exposure of the session's final B (`exposure` when > 0, else automatic, the emitters
+// left out), and B after iteration k (k < 0: the final B) as 8-bit colours through it.
+double displayExposure(const rt::web::WebSession& s, double exposure, const std::string& toneMap) {
+  rt::viz::ImageOptions options;
+  options.exposure = exposure;
+  options.toneMap = rt::viz::toneMapFromName(toneMap);
+  const rt::RgbField emission = field(s.emission());
+  return rt::viz::displaySettingsFor(options, field(s.radiosity(-1)), &emission).exposure;
+}
+
+val displayColours(const rt::web::WebSession& s, int k, double exposure, const std::string& toneMap,
+                   bool gamma) {
+  const rt::viz::DisplaySettings settings{exposure, rt::viz::toneMapFromName(toneMap), gamma};
+  const std::vector<double> B = s.radiosity(k);
+  std::vector<unsigned char> out(B.size());
+  for (std::size_t i = 0; i + 2 < B.size(); i += 3) {
+    const rt::viz::Rgb8 c = rt::viz::displayColour(rt::Rgb(B[i], B[i + 1], B[i + 2]), settings);
+    for (std::size_t j = 0; j < 3; ++j) out[i + j] = c[j];
+  }
+  return copied(out);
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(radiosity_core) {
   using rt::web::WebSession;
+  emscripten::function("controlRows", emscripten::optional_override([](const std::string& keysJson) {
+                         std::vector<std::string> keys;
+                         const val list = val::global("JSON").call<val>("parse", keysJson);
+                         for (int i = 0; i < list["length"].as<int>(); ++i)
+                           keys.push_back(list[i].as<std::string>());
+                         return rt::web::controlRowsJson(keys);
+                       }));
   emscripten::class_<WebSession>("Session")
       .constructor<>()
       .function("putFile", &WebSession::putFile)
       .function("load", &WebSession::load)
       .function("configure", &WebSession::configure)
-      .function("run", &WebSession::run)
+      .function("configureStep", &WebSession::configureStep)
+      .function("run", emscripten::optional_override([](WebSession& s) { return s.run(); }))
+      .function("runWithProgress", emscripten::optional_override([](WebSession& s, val callback) {
+                  ScriptProgress progress(std::move(callback));
+                  return s.run(progress);
+                }))
+      .function("displayExposure", &displayExposure)
+      .function("displayColours", &displayColours)
       .function("elements", &WebSession::elements)
       .function("iterations", &WebSession::iterations)
       .function("csv", &WebSession::csv)
+      .function("formFactorFile", emscripten::optional_override([](const WebSession& s, std::string ext) {
+                  return bytes(s.formFactorFile(formatOf(ext)));
+                }))
       .function("trianglePositions", emscripten::optional_override(
                                          [](const WebSession& s) { return copied(s.trianglePositions()); }))
       .function("triangleElements", emscripten::optional_override(

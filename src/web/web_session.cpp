@@ -1,13 +1,19 @@
 #include "web/web_session.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/input_error.h"
 #include "core/io/radiosity_csv.h"
 #include "core/io/scene_loader.h"
+#include "core/pipeline/scene_overrides.h"
+#include "core/solvers/solver.h"
 #include "web/web_settings.h"
+#include "web/web_step.h"
 
 namespace rt::web {
 namespace {
@@ -67,15 +73,34 @@ std::string WebSession::load(const std::string& name) {
 
 std::string WebSession::configure(const std::string& settingsJson) {
   if (!scene_) return "settings: load a scene first";
+  stepButLight_.clear();
   return readSettings(settingsJson, *scene_, settings_);
 }
 
-std::string WebSession::run() {
+std::string WebSession::configureStep(const std::string& stepJson) {
+  if (!scene_) return "step: load a scene first";
+  const std::string problem = readStep(stepJson, settings_);
+  stepButLight_.clear();
+  if (problem.empty()) {
+    Json step = Json::parse(stepJson);
+    if (step.contains("parameters")) step["parameters"].erase("light-scale");
+    stepButLight_ = step.dump();
+  }
+  return problem;
+}
+
+std::string WebSession::run(Progress& progress) {
   if (!scene_) return errorJson("load a scene first");
   try {
     requireLight(*scene_);
-    output_ = pipeline_.run(*scene_, settings_);
-    solved_ = true;
+    if (onlyTheLightChanged()) {
+      scaleTheLight();
+    } else {
+      output_ = pipeline_.run(*scene_, settings_, progress);
+      solved_ = true;
+      ranStep_ = stepButLight_;
+      ranLight_ = settings_.lightScale;
+    }
   } catch (const InputError& e) {
     solved_ = false;
     return errorJson(e.what());
@@ -119,6 +144,37 @@ std::string WebSession::run() {
       .dump();
 }
 
+// B is linear in E: after a change of the light alone, every iterate of a deterministic solver (one that
+// draws no random numbers: no seed among its settings) scales with it, the relative residuals and the
+// iterations stay, so the session scales the last run instead of solving again, as the app does.
+bool WebSession::onlyTheLightChanged() const {
+  if (!solved_ || stepButLight_.empty() || stepButLight_ != ranStep_ || !(ranLight_ > 0) ||
+      !(settings_.lightScale > 0) || settings_.basis != Basis::Constant)
+    return false;
+  const auto& seeded = solverInfo(output_.solve.solverName).settings;
+  return std::find(seeded.begin(), seeded.end(), "seed") == seeded.end();
+}
+
+void WebSession::scaleTheLight() {
+  const double ratio = settings_.lightScale / ranLight_;
+  auto mesh = std::make_shared<Mesh>(*output_.mesh);
+  mesh->emission *= ratio;
+  output_.mesh = mesh;
+  output_.scene =
+      std::make_shared<const Scene>(applyOverrides(*scene_, settings_.reflectance, settings_.lightScale));
+  output_.formFactorsReused = true;
+  output_.solve.B *= ratio;
+  for (IterationRecord& r : output_.solve.history) {
+    r.B *= ratio;
+    if (r.unshot.size() > 0) r.unshot *= ratio;
+    r.unshotPower *= ratio;
+    r.emittedPower *= ratio;
+    r.absorbedPower *= ratio;
+    r.escapedPower *= ratio;
+  }
+  ranLight_ = settings_.lightScale;
+}
+
 int WebSession::elements() const {
   return solved_ ? static_cast<int>(output_.mesh->size()) : 0;
 }
@@ -159,6 +215,16 @@ std::vector<double> WebSession::radiosity(int k) const {
   return out;
 }
 
+std::vector<double> WebSession::emission() const {
+  std::vector<double> out;
+  if (!solved_) return out;
+  const RgbField& E = output_.mesh->emission;
+  out.reserve(std::size_t(E.rows()) * 3);
+  for (Eigen::Index i = 0; i < E.rows(); ++i)
+    for (int c = 0; c < 3; ++c) out.push_back(E(i, c));
+  return out;
+}
+
 std::vector<double> WebSession::formFactorRow(int i) const {
   std::vector<double> out;
   if (!solved_ || !output_.F || i < 0 || i >= output_.F->rows()) return out;
@@ -177,6 +243,22 @@ std::vector<double> WebSession::residuals() const {
 std::string WebSession::csv() const {
   if (!solved_) return "";
   return radiosityCsv(*output_.scene, *output_.mesh, output_.solve.B);
+}
+
+std::string WebSession::formFactorFile(MatrixFormat format) const {
+  if (!solved_ || !output_.F) return "";
+  // Through the one writer of matrix files, in the module's own file system (memory in WebAssembly).
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / "rt-web-form-factors";
+  try {
+    writeMatrix(*output_.F, path.string(), format);
+  } catch (const InputError&) {
+    return "";
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  std::filesystem::remove(path);
+  return bytes.str();
 }
 
 }  // namespace rt::web

@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "core/io/matrix_export.h"
 #include "core/pipeline/pipeline.h"
+#include "core/progress.h"
 #include "core/scene.h"
 
 namespace rt::web {
@@ -25,10 +27,13 @@ class WebSession {
   std::string load(const std::string& name);
   // The settings as a JSON object (web_settings.h). Returns "" or what is wrong, naming the key.
   std::string configure(const std::string& settingsJson);
+  // A lesson step's parameters instead (web_step.h: {"stage", "parameters": {key: text}}), read through the
+  // table of step keys as the app reads its panel. Returns "" or the refusal, naming the key.
+  std::string configureStep(const std::string& stepJson);
   // Mesh, form factors (cached by geometry and method), solve with every iteration recorded. Returns a JSON
   // object: the counts, the solver and its status, the surfaces with their reflectance and emission, or
-  // {"error": message}.
-  std::string run();
+  // {"error": message}. `progress` hears how far the computation is (the page's progress bar).
+  std::string run(Progress& progress = noProgress());
 
   int elements() const;
   int iterations() const;  // recorded iterations (0 before a run)
@@ -38,14 +43,22 @@ class WebSession {
   std::vector<int> triangleElements() const;
   // B (n x 3, row-major) after iteration `k` (0-based), or the final B for k < 0 or past the last.
   std::vector<double> radiosity(int k) const;
+  // Each element's emission (n x 3, row-major; an emitter's light is not what an exposure is set by).
+  std::vector<double> emission() const;
   // Row i of F (empty without F: a solver that traces its own rays stores none).
   std::vector<double> formFactorRow(int i) const;
   // The relative residual after each recorded iteration.
   std::vector<double> residuals() const;
   // B per element as `radiosity solve --output` writes it.
   std::string csv() const;
+  // F as a file of `format` (matrix_export.h: the CSV or NumPy .npy that `radiosity formfactors --output`
+  // writes); empty without F.
+  std::string formFactorFile(MatrixFormat format) const;
 
  private:
+  bool onlyTheLightChanged() const;
+  void scaleTheLight();
+
   std::map<std::string, std::string> files_;
   std::shared_ptr<const Scene> scene_;
   std::string sceneName_;
@@ -53,6 +66,9 @@ class WebSession {
   Pipeline pipeline_;
   PipelineOutput output_;
   bool solved_ = false;
+  // The step configured and the one last run, without their light (configureStep only), and that light.
+  std::string stepButLight_, ranStep_;
+  double ranLight_ = 0;
 };
 
 }  // namespace rt::web

@@ -1,9 +1,12 @@
 // The web edition in a real browser: Debian's headless Chromium driven through the DevTools protocol by
 // puppeteer-core (which never downloads a browser). For every page of the site with live views:
-// no console errors; every view's canvas is not blank; a drag rotates the view; the light and reflectance
-// sliders change the numbers and the picture; the scrubber changes the colours. Screenshots go to
-// <site>/screenshots. Usage: node web_edition.test.mjs <radiosity> <radiosity-core.js> <site folder> [lesson...]
-// writes the site with `radiosity book --web` (the Cornell box lesson unless lessons are named) and tests it.
+// no console errors; every view's canvas is not blank; a drag rotates the view; a click picks an element;
+// the light and reflectance sliders, the solver and the subdivision change the numbers and the picture; the
+// scrubber changes the colours. The playground solves a dropped OBJ, reports a bad one with its line and
+// downloads F as CSV and NPY; meshes of about 1,000 and 5,000 elements are timed with the page responsive
+// and the progress shown. Screenshots go to <site>/screenshots.
+// Usage: node web_edition.test.mjs <radiosity> <radiosity-core.js> <site folder> [lesson...] writes the site
+// with `radiosity book --web` (the Cornell box, hemicube and shooting lessons unless lessons are named).
 // Exits 77 (ctest: skipped) when the WebAssembly core, Chromium or puppeteer-core is missing, unless
 // RT_REQUIRE_WEB=1 asks for them.
 import { execFileSync } from 'node:child_process';
@@ -33,7 +36,7 @@ try {
 fs.rmSync(site, { recursive: true, force: true });
 const started = Date.now();
 execFileSync(cli, ['book', '--web', '--quick', '--no-pdf', '--wasm', wasm, '--output', site,
-                   ...(lessons.length ? lessons : ['cornell-box'])], { stdio: 'inherit' });
+                   ...(lessons.length ? lessons : ['cornell-box', 'hemicube', 'shooting'])], { stdio: 'inherit' });
 let bytes = 0;
 const walk = (dir) => fs.readdirSync(dir, { withFileTypes: true }).forEach((e) =>
   e.isDirectory() ? walk(path.join(dir, e.name)) : (bytes += fs.statSync(path.join(dir, e.name)).size));
@@ -82,13 +85,21 @@ async function pixels(page, k) {
   }, k);
 }
 
-async function setSlider(page, k, cls, value) {
-  await page.evaluate((k, cls, value) => {
-    const slider = window.rtLiveViews[k].sliders[cls];
-    slider.value = String(value);
-    slider.dispatchEvent(new Event('change'));
-  }, k, cls, value);
+// Sets a control of view k (a row of the step-key table: 'light-scale', 'reflectance', 'solver', ...) and
+// waits until the view shows the new solve; returns the seconds from the change to the repaint.
+async function setControl(page, k, name, value) {
+  return page.evaluate(async (k, name, value) => {
+    const view = window.rtLiveViews[k];
+    const input = view.widgets[name];
+    const started = performance.now();
+    input.value = String(value);
+    input.dispatchEvent(new Event('change'));
+    while (view.running) await view.running.catch(() => {});
+    return (performance.now() - started) / 1000;
+  }, k, name, value);
 }
+
+const hasControl = (page, k, name) => page.evaluate((k, name) => Boolean(window.rtLiveViews[k].widgets[name]), k, name);
 
 const numbers = (page, k) => page.evaluate((k) => window.rtLiveViews[k].numbers.textContent, k);
 
@@ -100,11 +111,12 @@ for (const file of pages) {
   page.on('pageerror', (e) => errors.push(String(e)));
   const started = Date.now();
   await page.goto(pathToFileURL(path.join(site, file)).href, { waitUntil: 'load' });
-  await page.waitForSelector('body[data-live-ready]', { timeout: 60000 });
-  const loadSeconds = (Date.now() - started) / 1000;
+  const loaded = Date.now();
+  await page.waitForSelector('body[data-live-ready]', { timeout: 120000 });
+  const loadSeconds = (Date.now() - started) / 1000, afterLoad = (Date.now() - loaded) / 1000;
   const views = await page.evaluate(() => document.querySelectorAll('.live-view').length);
   const ready = await page.evaluate(() => window.rtLiveViews.length);
-  check(ready === views, `${file}: every live view computed`, `${ready} of ${views}, interactive ${loadSeconds.toFixed(2)} s after navigation`);
+  check(ready === views, `${file}: every live view computed`, `${ready} of ${views}, interactive ${loadSeconds.toFixed(2)} s after navigation, ${afterLoad.toFixed(2)} s after load`);
   for (let k = 0; k < ready; ++k) {
     const label = `${file} view ${k + 1}`;
     const handle = await page.evaluateHandle((k) => window.rtLiveViews[k].renderer.domElement, k);
@@ -123,26 +135,70 @@ for (const file of pages) {
     check(dragged.sum !== before.sum, `${label}: a drag rotates the view`);
     await handle.screenshot({ path: path.join(shots, `${path.basename(file, '.html')}-${k + 1}-dragged.png`) });
 
-    const picked = await page.evaluate((k, x, y) => {
+    // A click at the centre, or (a small scene) at the first element seen, the centre of one of its triangles.
+    const picked = await page.evaluate(async (k, x, y) => {
       const view = window.rtLiveViews[k];
-      const e = view.pick(x, y);
+      let e = view.pick(x, y);
+      const p = view.mesh.geometry.attributes.position.array, r = view.renderer.domElement.getBoundingClientRect();
+      for (let t = 0; e < 0 && t < p.length / 9; ++t) {
+        const c = [0, 1, 2].map((i) => (p[9 * t + i] + p[9 * t + 3 + i] + p[9 * t + 6 + i]) / 3);
+        const v = new THREE.Vector3(...c).project(view.camera);
+        if (Math.abs(v.x) < 0.95 && Math.abs(v.y) < 0.95 && v.z < 1)
+          e = view.pick(r.left + ((v.x + 1) / 2) * r.width, r.top + ((1 - v.y) / 2) * r.height);
+      }
+      await view.picking;
       return [e, view.picked.textContent];
     }, k, cx, cy);
     check(picked[0] >= 0 && /row of F sums to/.test(picked[1]), `${label}: a click picks an element and shows its B and row of F`,
           picked[1].slice(0, 110));
     const text = await numbers(page, k);
-    const t0 = Date.now();
-    await setSlider(page, k, 'light', 2);
-    const lightSeconds = (Date.now() - t0) / 1000;
+    const lightSeconds = await setControl(page, k, 'light-scale', 2);
     const lit = await pixels(page, k);
     check((await numbers(page, k)) !== text && lit.sum !== dragged.sum, `${label}: the light slider changes the numbers and the picture`,
           `recomputed and repainted in ${lightSeconds.toFixed(3)} s`);
-    const hasRho = await page.evaluate((k) => Boolean(window.rtLiveViews[k].sliders.rho), k);
-    if (hasRho) {
+    let shown = lit;
+    if (await hasControl(page, k, 'reflectance')) {
       const text2 = await numbers(page, k);
-      await setSlider(page, k, 'rho', 0.2);
+      await setControl(page, k, 'reflectance', 0.2);
       const darker = await pixels(page, k);
-      check((await numbers(page, k)) !== text2 && darker.sum !== lit.sum, `${label}: the reflectance slider changes the numbers and the picture`);
+      check((await numbers(page, k)) !== text2 && darker.sum !== shown.sum, `${label}: the reflectance slider changes the numbers and the picture`);
+      shown = darker;
+    }
+    // The step's other controls, widgets built from the step-key table's rows: another solver, another mesh.
+    // A converged solution looks the same whichever solver found it: the way there (the first iteration)
+    // differs.
+    const firstIteration = (k) => page.evaluate((k) => {
+      const view = window.rtLiveViews[k];
+      view.show(0);
+      return true;
+    }, k).then(() => pixels(page, k));
+    if (await hasControl(page, k, 'solver')) {
+      const [text3, solver] = [await numbers(page, k), await page.evaluate((k) => window.rtLiveViews[k].widgets.solver.value, k)];
+      const first = await firstIteration(k);
+      const seconds = await setControl(page, k, 'solver', solver === 'jacobi' ? 'southwell' : 'jacobi');
+      const after = await pixels(page, k);
+      const afterFirst = await firstIteration(k);
+      check((await numbers(page, k)) !== text3 && (after.sum !== shown.sum || afterFirst.sum !== first.sum),
+            `${label}: the solver changes the numbers and the picture`, `${solver} to another in ${seconds.toFixed(3)} s`);
+      await page.evaluate((k) => window.rtLiveViews[k].show(Number(window.rtLiveViews[k].scrubber.value)), k);
+      shown = after;
+    }
+    if (await hasControl(page, k, 'subdivide')) {
+      const text4 = await numbers(page, k);
+      const seconds = await setControl(page, k, 'subdivide', 5);
+      const after = await pixels(page, k);
+      check((await numbers(page, k)) !== text4 && after.sum !== shown.sum, `${label}: the subdivision changes the numbers and the picture`,
+            `${(await numbers(page, k)).split(',')[0]} in ${seconds.toFixed(3)} s`);
+      const refused = await page.evaluate(async (k) => {
+        const view = window.rtLiveViews[k];
+        view.widgets.subdivide.value = '1000';
+        view.widgets.subdivide.dispatchEvent(new Event('change'));
+        while (view.running) await view.running.catch(() => {});
+        return view.refusal.textContent;
+      }, k);
+      const kept = await page.evaluate((k) => window.rtLiveViews[k].widgets.subdivide.value, k);
+      check(/subdivide/.test(refused) && kept === '5', `${label}: a subdivision past the table's range is refused, naming the key`,
+            `${refused}; the widget back at ${kept}`);
     }
     await handle.screenshot({ path: path.join(shots, `${path.basename(file, '.html')}-${k + 1}-sliders.png`) });
 
@@ -183,6 +239,68 @@ for (const file of pages) {
   await page.screenshot({ path: path.join(shots, 'playground.png') });
   const bad = await drop([['bad.obj', 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n']]);
   check(bad.includes('bad.obj:4'), 'playground: a bad OBJ is reported with its line', bad.slice(0, 120));
+
+  // F downloads as CSV and as NumPy's .npy (the matrix writer's files): n rows, and an n x n float64 array.
+  await drop([['cornell-box.obj', obj], ['cornell-box.mtl', mtl]]);
+  const downloads = path.join(site, 'downloads');
+  fs.rmSync(downloads, { recursive: true, force: true });
+  fs.mkdirSync(downloads);
+  const cdp = await page.target().createCDPSession();
+  await cdp.send('Page.setDownloadBehavior', { behavior: 'allow', downloadPath: downloads });
+  const n = await page.evaluate(() => Number(document.getElementById('playground-status').textContent.match(/(\d+) elements/)[1]));
+  const fetched = async (kind, name) => {
+    await page.click(`.playground-download[data-kind="${kind}"]`);
+    const file = path.join(downloads, name);
+    for (let t = 0; t < 100 && !fs.existsSync(file); ++t) await new Promise((r) => setTimeout(r, 100));
+    return fs.existsSync(file) ? fs.readFileSync(file) : Buffer.alloc(0);
+  };
+  const npy = await fetched('F-npy', 'cornell-box-F.npy');
+  // Version 1: magic, version, the header's length (2 bytes, little-endian), the header, the data.
+  const header = npy.length >= 10 ? npy.subarray(10, 10 + npy.readUInt16LE(8)).toString('latin1') : '';
+  check(npy.subarray(1, 6).toString() === 'NUMPY' && header.includes(`'shape': (${n}, ${n})`) &&
+        npy.length === 10 + header.length + 8 * n * n, 'playground: F downloads as NPY', `${n} x ${n}, ${npy.length} bytes`);
+  const csv = (await fetched('F-csv', 'cornell-box-F.csv')).toString();
+  check(csv.trim().split('\n').length === n && csv.split('\n')[0].split(',').length === n, 'playground: F downloads as CSV',
+        `${csv.length} bytes`);
+  await page.screenshot({ path: path.join(shots, 'playground-downloads.png') });
+
+  // Meshes of about 1,000 and 5,000 elements (docs/benchmarks.md): the first run, then a change of the light
+  // and of the solver, each timed from the change to the repaint, while a timer on the page measures the
+  // longest the page went unanswered and the progress bar's reports are counted.
+  const box = fs.readFileSync(path.join(repo, 'scenes/cornell-box.json'), 'utf8');
+  for (const [subdivide, method] of [['7', 'quadrature'], ['7', 'hemicube'], ['15', 'hemicube']]) {
+    const r = await page.evaluate(async (scene, subdivide, method) => {
+      const holder = document.getElementById('playground-view');
+      holder.replaceChildren();
+      const step = { scene: 'cornell-box.json', files: { 'cornell-box.json': scene }, stage: 'solve',
+                     parameters: { subdivide, method, solver: 'gauss-seidel' }, controls: ['light-scale', 'solver'] };
+      let last = performance.now(), gap = 0;
+      const timer = setInterval(() => {
+        const now = performance.now();
+        gap = Math.max(gap, now - last);
+        last = now;
+      }, 10);
+      const t0 = performance.now();
+      const view = await new window.rtLive.LiveView(holder, step).start();
+      const first = (performance.now() - t0) / 1000, reports = view.progressReports;
+      const change = async (name, value) => {
+        const t = performance.now();
+        view.widgets[name].value = value;
+        view.widgets[name].dispatchEvent(new Event('change'));
+        while (view.running) await view.running.catch(() => {});
+        return (performance.now() - t) / 1000;
+      };
+      const light = await change('light-scale', '2');
+      const solver = await change('solver', 'jacobi');
+      clearInterval(timer);
+      return { elements: view.summary.elements, first, reports, light, solver, gap: gap / 1000 };
+    }, box, subdivide, method);
+    console.log(`measured: ${r.elements} elements, ${method}: first run ${r.first.toFixed(2)} s (${r.reports} progress ` +
+                `reports), light change ${r.light.toFixed(3)} s, solver change ${r.solver.toFixed(3)} s, page unanswered ` +
+                `at most ${r.gap.toFixed(3)} s`);
+    check(r.reports >= 2 && r.gap < 0.3, `playground: ${r.elements} elements computed with the page responsive and the progress shown`,
+          `${r.reports} progress reports, the page unanswered at most ${r.gap.toFixed(3)} s`);
+  }
   check(errors.length === 0, 'playground: no page errors', errors.slice(0, 3).join(' | '));
   await page.close();
 }

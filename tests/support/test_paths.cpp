@@ -26,6 +26,12 @@ std::string binaryPath(const std::string& relative) {
 std::string cliPath() {
   return RT_CLI_PATH;
 }
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
 std::string scratchDir(const std::string& name) {
   // The process id keeps concurrent test processes (ctest -j runs each test of a binary as its own process)
   // from emptying each other's folders.

@@ -11,6 +11,8 @@ std::string sourcePath(const std::string& relative);  // <repo>/relative
 std::string dataPath(const std::string& relative);    // <repo>/tests/data/relative
 std::string binaryPath(const std::string& relative);  // <build>/relative
 std::string cliPath();                                // the radiosity executable
+// The whole of a file as bytes ("" when it cannot be read).
+std::string readFile(const std::string& path);
 // A fresh empty folder under the build tree for one test's outputs (build/<preset>/test-output/<name>-<pid>).
 std::string scratchDir(const std::string& name);
 // Runs a command through the shell; returns its exit code and captures stdout+stderr.

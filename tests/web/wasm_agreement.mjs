@@ -21,10 +21,10 @@ const RadiosityCore = createRequire(import.meta.url)(path.resolve(modulePath));
 const core = await RadiosityCore();
 
 // [scene file, web settings, the same as radiosity solve's options, relative tolerance on B]. The default
-// method (quadrature) in the occluded box is held to 1e-6 only: natively its Lambert sums take glibc's
-// four-lane arctangent (formfactor/lambert_four.h, within 4 ulp), in WebAssembly the scalar one, and its
-// adaptive rules branch on error estimates that so small a difference can move across a threshold; each
-// entry stays within the method's tolerance either way.
+// method (quadrature) in the occluded box is held to 1e-6 only: its adaptive rules branch on error estimates
+// that a last-bit difference between the two builds can move across a threshold (neither the native
+// four-lane arctangent nor the maths library: docs/benchmarks.md); each entry stays within the method's
+// tolerance either way.
 const steps = [
   ['cornell-box.json', { subdivide: 3, method: 'analytic', solver: 'gauss-seidel' }, 1e-9],
   ['cornell-box.json', { subdivide: 2, method: 'quadrature', solver: 'jacobi' }, 1e-6],

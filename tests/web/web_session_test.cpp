@@ -2,9 +2,6 @@
 // and settings as the programs do (file, line, key), and keeps F across a change of reflectance or light.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "core/io/scene_loader.h"
 #include "core/pipeline/pipeline.h"
 #include "support/test_paths.h"
@@ -14,15 +11,8 @@
 namespace rt::web {
 namespace {
 
-std::string readText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 void loadCornellBox(WebSession& session) {
-  session.putFile("cornell-box.json", readText(test::sourcePath("scenes/cornell-box.json")));
+  session.putFile("cornell-box.json", test::readFile(test::sourcePath("scenes/cornell-box.json")));
   EXPECT_EQ(session.load("cornell-box.json"), "");
 }
 
@@ -115,8 +105,8 @@ TEST(WebSettings, WrittenSettingsReadBackToTheSameRun) {
 
 TEST(WebSession, AnObjFindsItsMaterialLibrary) {
   WebSession session;
-  session.putFile("cornell-box.obj", readText(test::sourcePath("scenes/cornell-box.obj")));
-  session.putFile("cornell-box.mtl", readText(test::sourcePath("scenes/cornell-box.mtl")));
+  session.putFile("cornell-box.obj", test::readFile(test::sourcePath("scenes/cornell-box.obj")));
+  session.putFile("cornell-box.mtl", test::readFile(test::sourcePath("scenes/cornell-box.mtl")));
   ASSERT_EQ(session.load("cornell-box.obj"), "");
   ASSERT_EQ(session.configure(R"({"noSubdivide": true, "solver": "gauss-seidel", "method": "analytic"})"),
             "");

@@ -1,32 +1,125 @@
 // The web edition's live figures. Every <div class="live-view" data-live="KEY"> on a page becomes a 3D view
 // of a step computed in the browser by the WebAssembly core (radiosity-core.js): rotate and zoom with the
-// mouse, a scrubber with play through the solver's iterations beside the residual chart, and sliders for the
-// light and a surface's reflectance, which solve again (the form factors stay cached in the core).
-// RT_LIVE[KEY] (the page's <lesson>-live.js) holds the step: its scene files and its settings as JSON.
+// mouse, a scrubber with play through the solver's iterations beside the residual chart, and one widget per
+// control of the step, built from the rows of the lesson layer's table of step keys that the core hands out
+// (the app's parameter panel builds its widgets from the same rows). A change solves again in a Web Worker,
+// so that the page stays responsive, with a progress bar; the form factors stay cached in the core when only
+// the light or a reflectance changed.
+// RT_LIVE[KEY] (the page's <lesson>-live.js) holds the step: its scene files, its stage, its parameters as
+// the lesson writes them and the keys it offers as controls.
 /* global THREE, RadiosityCore, RT_LIVE */
 (function () {
   'use strict';
 
-  let corePromise = null;
-  function core() {
-    if (!corePromise) corePromise = RadiosityCore();
-    return corePromise;
+  // ---- The worker: this function's source and the core's run in a Web Worker made from a Blob, which a
+  // page opened from file:// may start (a worker script from a file URL it may not).
+  function workerMain() {
+    /* global RadiosityCore */
+    const ready = RadiosityCore();
+    const sessions = new Map();
+
+    function sessionFor(module, a) {
+      if (!sessions.has(a.sessionKey)) {
+        const session = new module.Session();
+        for (const [name, text] of Object.entries(a.files)) session.putFile(name, text);
+        const problem = session.load(a.scene);
+        if (problem) throw new Error(problem);
+        sessions.set(a.sessionKey, { session, ran: null });
+      }
+      return sessions.get(a.sessionKey);
+    }
+
+    // The views of one scene share its session: before reading F, make sure it holds this view's run.
+    function runStep(s, step, report) {
+      const text = JSON.stringify(step);
+      const problem = s.session.configureStep(text);
+      if (problem) throw new Error(problem);
+      const summary = JSON.parse(s.session.runWithProgress(report));
+      if (summary.error) throw new Error(summary.error);
+      s.ran = text;
+      return summary;
+    }
+
+    // The solve and what the view shows of it: every iteration's B as colours through the app's display
+    // pipeline (exposure, tone map and gamma as the step sets them; `exposure` kept from the view's first
+    // solve, so that more light shows brighter).
+    function solve(s, step, exposure, id) {
+      const summary = runStep(s, step, (fraction, stage) => self.postMessage({ id, progress: fraction, stage }));
+      const p = step.parameters;
+      const toneMap = p['tone-map'] || 'linear', gamma = p.gamma !== 'false';
+      if (!exposure) exposure = s.session.displayExposure(Number(p.exposure || 0), toneMap);
+      const history = [], colours = [];
+      for (let k = 0; k < summary.iterations; ++k) {
+        history.push(s.session.radiosity(k));
+        colours.push(s.session.displayColours(k, exposure, toneMap, gamma));
+      }
+      const result = { summary, history, colours, exposure, final: s.session.radiosity(-1),
+                       finalColours: s.session.displayColours(-1, exposure, toneMap, gamma),
+                       residuals: s.session.residuals(), positions: s.session.trianglePositions(),
+                       triangleElements: s.session.triangleElements() };
+      const buffers = [result.final, result.finalColours, result.residuals, result.positions, result.triangleElements,
+                       ...history, ...colours];
+      return [result, buffers.map((b) => b.buffer)];
+    }
+
+    function handle(module, id, op, a) {
+      if (op === 'controls') return [JSON.parse(module.controlRows(JSON.stringify(a.keys)))];
+      const s = sessionFor(module, a);
+      if (op === 'solve') return solve(s, a.step, a.exposure, id);
+      if (s.ran !== JSON.stringify(a.step)) runStep(s, a.step, () => {});
+      if (op === 'row') return [s.session.formFactorRow(a.element)];
+      if (op === 'csv') return [s.session.csv()];
+      if (op === 'matrix') return [s.session.formFactorFile(a.format)];
+      throw new Error('unknown request ' + op);
+    }
+
+    self.onmessage = async (e) => {
+      const { id, op, args } = e.data;
+      try {
+        const [result, transfer] = handle(await ready, id, op, args);
+        self.postMessage({ id, result }, transfer || []);
+      } catch (error) {
+        self.postMessage({ id, error: String((error && error.message) || error) });
+      }
+    };
   }
 
-  // The exposure that puts the brightest reflecting element at white.
-  function exposureOf(B, emitting) {
-    let brightest = 0;
-    for (let i = 0; i < B.length / 3; ++i)
-      if (!emitting[i]) brightest = Math.max(brightest, B[3 * i], B[3 * i + 1], B[3 * i + 2]);
-    return brightest > 0 ? 1 / brightest : 1;
+  // ---- The page's side of the worker: requests answered by promises, progress reported on the way.
+  let worker = null;
+  let nextId = 0;
+  const pending = new Map();
+  function ask(op, args, onProgress) {
+    if (!worker) {
+      // RadiosityCore (radiosity-core.js, loaded by the page) is Emscripten's module factory; it reads one
+      // variable of its wrapper, the script's folder, which a module with the WebAssembly embedded never uses.
+      const source = 'var _scriptDir;\nvar RadiosityCore = (' + RadiosityCore.toString() + ');\n(' +
+                     workerMain.toString() + ')();\n';
+      worker = new Worker(URL.createObjectURL(new Blob([source], { type: 'text/javascript' })));
+      worker.onmessage = (e) => {
+        const request = pending.get(e.data.id);
+        if (!request) return;
+        if ('progress' in e.data) {
+          if (request.onProgress) request.onProgress(e.data.progress, e.data.stage);
+          return;
+        }
+        pending.delete(e.data.id);
+        if ('error' in e.data) request.reject(new Error(e.data.error));
+        else request.resolve(e.data.result);
+      };
+    }
+    return new Promise((resolve, reject) => {
+      const id = ++nextId;
+      pending.set(id, { resolve, reject, onProgress });
+      worker.postMessage({ id, op, args });
+    });
   }
 
-  // Linear tone map at `scale`, then the display's gamma: the desktop figures' default look.
-  function colours(B, triangleElements, scale, out) {
+  // The colours of the elements (8-bit, n x 3) spread over their triangles' vertices.
+  function colours(rgb8, triangleElements, out) {
     for (let t = 0; t < triangleElements.length; ++t) {
       const e = triangleElements[t];
       for (let c = 0; c < 3; ++c) {
-        const v = Math.pow(Math.min(1, Math.max(0, B[3 * e + c] * scale)), 1 / 2.2);
+        const v = rgb8[3 * e + c] / 255;
         for (let k = 0; k < 3; ++k) out[9 * t + 3 * k + c] = v;
       }
     }
@@ -69,28 +162,65 @@
     g.fill();
   }
 
-  // One session per scene on a page: the views of its steps share the form factors the core caches by
-  // geometry and method, so that the second view of the same mesh only solves.
-  const sessions = new Map();
-  function sessionFor(step, module) {
-    const key = JSON.stringify(step.files) + step.scene;
-    if (!sessions.has(key)) {
-      const session = new module.Session();
-      for (const [name, text] of Object.entries(step.files)) session.putFile(name, text);
-      const problem = session.load(step.scene);
-      if (problem) throw new Error(problem);
-      sessions.set(key, session);
+  // One widget for a row of the step-key table (the app's panel: a spin box, a check box, a list, a typed
+  // field). The light and a surface's reflectance are sliders, to drag.
+  function widget(row, value, surface) {
+    if (row.name === 'light-scale' || row.name === 'reflectance') {
+      const top = row.name === 'light-scale' ? Math.max(3, 2 * Number(value)) : 0.95;
+      return element('input', { type: 'range', min: String(row.min), max: String(Math.min(row.max, top)),
+                                step: '0.05', value: String(value) });
     }
-    return sessions.get(key);
+    if (row.type === 'choice') {
+      const select = element('select');
+      for (const choice of row.choices) element('option', { value: choice, text: choice }, select);
+      select.value = value;
+      return select;
+    }
+    if (row.type === 'bool') {
+      const box = element('input', { type: 'checkbox' });
+      box.checked = value === 'true';
+      return box;
+    }
+    if ((row.type === 'int' || row.type === 'double') && !row.logScale) {
+      const input = element('input', { type: 'number', min: String(row.min), max: String(Math.min(row.max, 1e6)),
+                                       step: String(row.type === 'int' ? Math.max(1, row.step) : row.step),
+                                       value: String(value) });
+      if (row.zeroText) input.title = '0: ' + row.zeroText;
+      return input;
+    }
+    return element('input', { type: 'text', size: '8', value: String(value), placeholder: row.zeroText || '' });
+  }
+
+  // The text of a widget as a lesson would write the key's value.
+  function widgetText(row, input) {
+    if (row.type === 'bool') return input.checked ? 'true' : 'false';
+    if (row.name === 'reflectance') return String(input.value);
+    return String(input.value).trim();
   }
 
   class LiveView {
-    constructor(container, step, module) {
+    constructor(container, step) {
       this.step = step;
-      this.session = sessionFor(step, module);
-      this.settings = Object.assign({}, step.settings);
+      this.sessionKey = JSON.stringify(step.files) + step.scene;
+      this.parameters = Object.assign({}, step.parameters);
       this.build(container);
-      this.solve();
+    }
+
+    // The widgets, then the first solve; resolves when the view shows it.
+    async start() {
+      this.rows = await ask('controls', { keys: this.step.controls || [] });
+      this.buildControls();
+      await this.solve();
+      return this;
+    }
+
+    request(op, args, onProgress) {
+      return ask(op, Object.assign({ sessionKey: this.sessionKey, files: this.step.files, scene: this.step.scene,
+                                     step: this.stepNow() }, args), onProgress);
+    }
+
+    stepNow() {
+      return { stage: this.step.stage || 'solve', parameters: this.parameters };
     }
 
     build(container) {
@@ -113,18 +243,14 @@
                                          'aria-label': 'iteration' }, scrub);
       this.iterationLabel = element('span', { class: 'live-iteration' }, scrub);
       this.chart = element('canvas', { width: '320', height: '150', class: 'live-chart' }, panel);
-      this.sliders = {};
-      const light = element('label', { class: 'live-row', text: 'Light ' }, panel);
-      this.sliders.light = element('input', { type: 'range', min: '0', max: '3', step: '0.05',
-                                              value: String(this.settings.lightScale || 1),
-                                              class: 'live-light' }, light);
-      const surface = this.step.surface;
-      if (surface) {
-        const rho = element('label', { class: 'live-row', text: 'Reflectance of ' + surface + ' ' }, panel);
-        this.sliders.rho = element('input', { type: 'range', min: '0', max: '0.95', step: '0.05',
-                                              value: String(this.step.surfaceReflectance),
-                                              class: 'live-reflectance' }, rho);
-      }
+      this.widgets = {};
+      this.form = element('div', { class: 'live-controls' }, panel);
+      const busy = element('div', { class: 'live-row live-busy' }, panel);
+      this.progress = element('progress', { max: '1', value: '0' }, busy);
+      this.progressLabel = element('span', { class: 'live-progress-label' }, busy);
+      this.busy = busy;
+      busy.hidden = true;
+      this.refusal = element('div', { class: 'live-error live-refusal' }, panel);
       this.numbers = element('div', { class: 'live-numbers' }, panel);
       this.picked = element('div', { class: 'live-picked', text: 'Click an element to see its B and its row of F.' },
                             panel);
@@ -137,55 +263,126 @@
       });
       this.scrubber.addEventListener('input', () => this.show(Number(this.scrubber.value)));
       this.play.addEventListener('click', () => this.toggle());
-      for (const s of Object.values(this.sliders)) s.addEventListener('change', () => this.change());
     }
 
-    change() {
-      this.settings.lightScale = Number(this.sliders.light.value);
-      if (this.sliders.rho) {
-        const v = Number(this.sliders.rho.value);
+    buildControls() {
+      this.shown = [];
+      for (const row of this.rows) {
+        const surface = row.name === 'reflectance' ? this.step.surface : null;
+        if (row.name === 'reflectance' && !surface) continue;
+        const key = surface ? 'reflectance.' + surface : row.name;
+        const label = element('label', { class: 'live-row', title: row.tooltip,
+                                         text: (surface ? 'Reflectance of ' + surface : row.label) + ' ' }, this.form);
+        const input = widget(row, this.valueOf(row, key), surface);
+        input.classList.add('live-control-' + row.name);
+        label.appendChild(input);
+        this.widgets[row.name] = input;
+        this.shown.push([row, key, input]);
+        input.addEventListener('change', () => this.edited(row, key, input));
+      }
+    }
+
+    // What a widget shows: the step's value, or the default the method or solver then uses (as the app).
+    valueOf(row, key) {
+      if (row.name === 'reflectance') {
+        const written = this.parameters[key];
+        return written === undefined ? this.step.surfaceReflectance : Math.max(...written.split(' ').map(Number));
+      }
+      return this.parameters[key] !== undefined ? this.parameters[key] : row.default;
+    }
+
+    showValues() {
+      for (const [row, key, input] of this.shown) {
+        if (row.type === 'bool') input.checked = this.valueOf(row, key) === 'true';
+        else input.value = String(this.valueOf(row, key));
+      }
+    }
+
+    // A widget's new value becomes the step's parameter (the two ways of meshing exclude each other: the one
+    // touched wins, as in the app), and the step is solved again.
+    edited(row, key, input) {
+      const text = widgetText(row, input);
+      if (row.name === 'reflectance') {
+        // The surface keeps its hue: the slider sets its largest channel.
         const base = this.step.surfaceColour;
         const top = Math.max(...base, 1e-9);
-        this.settings.reflectance = Object.assign({}, this.settings.reflectance,
-                                                  { [this.step.surface]: base.map((c) => (c / top) * v) });
+        this.parameters[key] = base.map((c) => String((c / top) * Number(text))).join(' ');
+      } else if (text === '') {
+        delete this.parameters[key];
+      } else {
+        this.parameters[key] = text;
       }
-      this.solve();
+      if (row.name === 'subdivide') delete this.parameters['max-edge'];
+      if (row.name === 'max-edge') delete this.parameters.subdivide;
+      return this.solve();
     }
 
-    solve() {
+    // Solves the step as the widgets set it; a value the core refuses is shown, and the view keeps its last
+    // solution. Changes made while a solve runs are taken by one more solve after it.
+    async solve() {
+      if (this.running) {
+        this.again = true;
+        return this.running;
+      }
       const started = performance.now();
-      const problem = this.session.configure(JSON.stringify(this.settings));
-      if (problem) throw new Error(problem);
-      const summary = JSON.parse(this.session.run());
-      if (summary.error) throw new Error(summary.error);
-      this.summary = summary;
-      if (!this.mesh) this.makeMesh(summary);
-      this.residuals = this.session.residuals();
-      // This view's iterations, copied out: the session serves the other views too.
-      this.history = [];
-      for (let k = 0; k < summary.iterations; ++k) this.history.push(this.session.radiosity(k));
-      this.final = this.session.radiosity(-1);
-      this.seconds = (performance.now() - started) / 1000;
-      const last = Math.max(0, summary.iterations - 1);
+      this.busy.hidden = false;
+      this.progress.value = 0;
+      this.progressLabel.textContent = 'computing…';
+      const tried = Object.assign({}, this.parameters);
+      this.progressReports = 0;
+      this.running = this.request('solve', { exposure: this.exposure }, (fraction, stage) => {
+        ++this.progressReports;
+        this.progress.value = fraction;
+        this.progressLabel.textContent = stage + ' ' + Math.round(100 * fraction) + ' %';
+      }).then((result) => {
+        this.refusal.textContent = '';
+        this.good = tried;
+        this.take(result, (performance.now() - started) / 1000);
+      }, (error) => {
+        this.refusal.textContent = 'Not applied: ' + error.message;
+        if (!this.good) throw error;
+        this.parameters = Object.assign({}, this.good);
+        this.showValues();
+      });
+      try {
+        await this.running;
+      } finally {
+        this.running = null;
+        this.busy.hidden = true;
+      }
+      if (this.again) {
+        this.again = false;
+        await this.solve();
+      }
+    }
+
+    take(result, seconds) {
+      Object.assign(this, { summary: result.summary, history: result.history, final: result.final, seconds,
+                            historyColours: result.colours, finalColours: result.finalColours,
+                            exposure: result.exposure, residuals: result.residuals });
+      this.makeMesh(result);
+      const last = Math.max(0, this.summary.iterations - 1);
       this.scrubber.max = String(last);
       this.scrubber.value = String(last);
-      drawChart(this.chart, this.residuals, last);
       this.show(last);
     }
 
-    makeMesh(summary) {
-      const positions = this.session.trianglePositions();
-      this.triangleElements = this.session.triangleElements();
-      const geometry = new THREE.BufferGeometry();
-      geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
-      this.colourArray = new Float32Array(positions.length);
+    makeMesh(result) {
+      const first = !this.mesh;
+      if (first) {
+        const material = new THREE.MeshBasicMaterial({ vertexColors: THREE.VertexColors, side: THREE.FrontSide });
+        this.mesh = new THREE.Mesh(new THREE.BufferGeometry(), material);
+        this.scene.add(this.mesh);
+      }
+      const geometry = this.mesh.geometry;
+      this.triangleElements = result.triangleElements;
+      geometry.setAttribute('position', new THREE.BufferAttribute(result.positions, 3));
+      this.colourArray = new Float32Array(result.positions.length);
       geometry.setAttribute('color', new THREE.BufferAttribute(this.colourArray, 3));
-      const material = new THREE.MeshBasicMaterial({ vertexColors: THREE.VertexColors, side: THREE.FrontSide });
-      this.mesh = new THREE.Mesh(geometry, material);
-      this.scene.add(this.mesh);
       geometry.computeBoundingSphere();
+      if (!first) return;
       const { center, radius } = geometry.boundingSphere;
-      const view = summary.camera;
+      const view = this.summary.camera;
       if (view) {
         this.camera.position.set(...view.position);
         this.controls.target.set(...view.target);
@@ -203,28 +400,25 @@
 
     show(k) {
       const B = k < this.history.length ? this.history[k] : this.final;
-      if (this.exposure === undefined) {
-        // Fixed at the step's own solution, so that more light or a lighter surface shows brighter.
-        const emitting = new Uint8Array(B.length / 3);
-        for (const e of this.summary.emitters) emitting[e] = 1;
-        this.exposure = exposureOf(this.final, emitting);
-      }
-      colours(B, this.triangleElements, this.exposure, this.colourArray);
+      colours(k < this.history.length ? this.historyColours[k] : this.finalColours, this.triangleElements,
+              this.colourArray);
       this.mesh.geometry.attributes.color.needsUpdate = true;
       this.iterationLabel.textContent = 'iteration ' + (k + 1) + ' of ' + this.summary.iterations;
       drawChart(this.chart, this.residuals, k);
       let total = 0;
       for (let i = 0; i < B.length; ++i) total += B[i];
       this.numbers.textContent =
-          this.summary.elements + ' elements, ' + this.summary.solver + ': ' + this.summary.status + ' after ' +
-          this.summary.iterations + ' iterations; residual ' +
+          this.summary.elements + ' elements, ' + (this.summary.method ? this.summary.method + ' form factors, ' : '') +
+          this.summary.solver +
+          ': ' + this.summary.status + ' after ' + this.summary.iterations + ' iterations; residual ' +
           (k < this.residuals.length ? this.residuals[k].toExponential(2) : '-') +
           '; mean B ' + (total / B.length).toFixed(3) + ' W/m² (computed here in ' +
           this.seconds.toFixed(2) + ' s)';
       this.render();
     }
 
-    // The element seen at a client position: its B in the iteration shown and its row of F.
+    // The element seen at a client position (-1 for none); its B in the iteration shown and its row of F
+    // follow in the text below the view.
     pick(clientX, clientY) {
       const r = this.renderer.domElement.getBoundingClientRect();
       const ndc = new THREE.Vector2(((clientX - r.left) / r.width) * 2 - 1, -((clientY - r.top) / r.height) * 2 + 1);
@@ -235,20 +429,22 @@
       const e = this.triangleElements[hit.faceIndex];
       const k = Number(this.scrubber.value);
       const B = k < this.history.length ? this.history[k] : this.final;
-      const row = this.session.formFactorRow(e);
       let text = 'Element ' + e + ': B = (' + [0, 1, 2].map((c) => B[3 * e + c].toFixed(3)).join(', ') + ') W/m²';
-      if (row.length) {
-        let sum = 0;
-        const largest = [];
-        row.forEach((f, j) => {
-          sum += f;
-          largest.push([f, j]);
-        });
-        largest.sort((a, b) => b[0] - a[0]);
-        text += '; its row of F sums to ' + sum.toFixed(4) + ', largest ' +
-                largest.slice(0, 3).map(([f, j]) => 'F(' + e + ',' + j + ') = ' + f.toFixed(4)).join(', ');
-      }
       this.picked.textContent = text;
+      this.picking = this.request('row', { element: e }).then((row) => {
+        if (row.length) {
+          let sum = 0;
+          const largest = [];
+          row.forEach((f, j) => {
+            sum += f;
+            largest.push([f, j]);
+          });
+          largest.sort((a, b) => b[0] - a[0]);
+          text += '; its row of F sums to ' + sum.toFixed(4) + ', largest ' +
+                  largest.slice(0, 3).map(([f, j]) => 'F(' + e + ',' + j + ') = ' + f.toFixed(4)).join(', ');
+        }
+        this.picked.textContent = text;
+      });
       return e;
     }
 
@@ -276,22 +472,25 @@
   async function start() {
     const containers = document.querySelectorAll('.live-view[data-live]');
     if (containers.length === 0) return;
-    const module = await core();
     window.rtLiveViews = [];
+    const started = [];
     for (const container of containers) {
-      const step = RT_LIVE[container.dataset.live];
-      try {
-        window.rtLiveViews.push(new LiveView(container, step, module));
-      } catch (e) {
-        element('p', { class: 'live-error', text: 'This figure could not be computed here: ' + e.message },
-                container);
+      const view = new LiveView(container, RT_LIVE[container.dataset.live]);
+      started.push(view.start().then(() => window.rtLiveViews.push(view), (e) => {
+        view.renderer.domElement.remove();
+        element('p', { class: 'live-error', text: 'This figure could not be computed here: ' + e.message }, container);
         console.error(e);
-      }
+      }));
     }
+    await Promise.all(started);
+    // In the page's order, whichever view finished first.
+    const order = Array.from(containers);
+    window.rtLiveViews.sort((a, b) => order.indexOf(a.renderer.domElement.closest('.live-view')) -
+                                      order.indexOf(b.renderer.domElement.closest('.live-view')));
     document.body.dataset.liveReady = String(window.rtLiveViews.length);
   }
 
   // For the playground page (playground.js), which makes views of the reader's own scenes.
-  window.rtLive = { core, LiveView };
+  window.rtLive = { LiveView, ask };
   window.addEventListener('load', () => start());
 })();
