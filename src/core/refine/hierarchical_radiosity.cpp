@@ -44,8 +44,7 @@ struct Node {
 
 class Hierarchy {
  public:
-  Hierarchy(const Scene& scene, const RefineOptions& options)
-      : scene_(scene), options_(options), visibility_(scene) {
+  Hierarchy(const Scene& scene, const RefineOptions& options) : options_(options), visibility_(scene) {
     transfer_.visibilitySamples = options.visibilitySamples;
     for (std::size_t p = 0; p < scene.patches.size(); ++p) {
       const Patch& patch = scene.patches[p];
@@ -188,7 +187,6 @@ class Hierarchy {
     return next;
   }
 
-  const Scene& scene_;
   RefineOptions options_;
   VisibilityOracle visibility_;
   TransferOptions transfer_;
