@@ -42,6 +42,8 @@ TEST(ExerciseSteps, EveryLessonEndsWithExercisesOnItsOwnTopic) {
         ++conceptual;
         EXPECT_EQ(q.choices.size(), step.choices.size());
         EXPECT_EQ(q.mistakes.size(), step.choices.size() - 1) << "every wrong choice is explained";
+        for (const homework::Choice& c : step.choices)
+          EXPECT_GE(c.because.size(), 20u) << "an explanation, not a word: " << c.text;
         continue;
       }
       ++numeric;
