@@ -111,19 +111,28 @@ PipelineResult LessonLibrary::runOne(const lesson::Lesson& lesson, const lesson:
   }
   try {
     // Equations and listings are numbered over the whole lesson, so that a step shows the numbers the book
-    // prints; the works the page cites are listed under it, where its citations link to.
+    // prints; the works the page cites are listed under it, where its citations link to, and so are the
+    // definitions of the terms it uses, where the first use of each links to.
     const lesson::TextApparatus apparatus = lesson::lessonApparatus(lesson);
     const std::string resolved = lesson::resolvedText(lesson, step, *stepResult);
     std::vector<std::string> cited = lesson::citedKeys(resolved, step.textLine, lesson.file);
-    std::string text =
-        "## " + step.title + "\n\n" + lesson::prepareText(resolved, step.textLine, lesson.file, apparatus);
+    std::vector<const lesson::GlossaryEntry*> terms;
+    std::string text;
     if (step.index == 0 && !lesson.intro.empty()) {
       text = "# " + lesson.title + "\n\n" +
-             lesson::prepareText(lesson.intro, lesson.introLine, lesson.file, apparatus) + "\n\n" + text;
+             lesson::linkTermsToDefinitions(
+                 lesson::prepareText(lesson.intro, lesson.introLine, lesson.file, apparatus),
+                 apparatus.glossary, terms) +
+             "\n\n";
       const auto introKeys = lesson::citedKeys(lesson.intro, lesson.introLine, lesson.file);
       cited.insert(cited.end(), introKeys.begin(), introKeys.end());
     }
-    out.text = text + "\n\n" + lesson::furtherReading(cited, apparatus.bibliography, 3);
+    text +=
+        "## " + step.title + "\n\n" +
+        lesson::linkTermsToDefinitions(lesson::prepareText(resolved, step.textLine, lesson.file, apparatus),
+                                       apparatus.glossary, terms);
+    out.text = text + "\n\n" + lesson::furtherReading(cited, apparatus.bibliography, 3) + "\n\n" +
+               lesson::termDefinitionsHtml(terms, 3);
   } catch (const InputError& e) {
     out.text = step.text;
     out.note = e.what();

@@ -54,6 +54,11 @@ QString cssColour(const QColor& c) {
   return c.name(QColor::HexRgb);
 }
 
+// Text for a single-quoted JavaScript string.
+QString scriptString(QString text) {
+  return text.replace('\\', "\\\\").replace('\'', "\\'");
+}
+
 }  // namespace
 
 LessonTextView::LessonTextView(QWidget* parent) : QWidget(parent) {
@@ -129,9 +134,8 @@ QString LessonTextView::styleSheet() const {
 void LessonTextView::applyStyle() {
   view_->page()->setBackgroundColor(palette().color(QPalette::Base));
   if (!loaded_) return;
-  QString css = styleSheet();
-  css.replace('\\', "\\\\").replace('\'', "\\'");
-  view_->page()->runJavaScript("document.getElementById('look').textContent = '" + css + "';");
+  view_->page()->runJavaScript("document.getElementById('look').textContent = '" +
+                               scriptString(styleSheet()) + "';");
 }
 
 void LessonTextView::changeEvent(QEvent* event) {
@@ -221,15 +225,25 @@ LessonTextView::MathsState LessonTextView::mathsState(int timeoutMs) {
 
 QRect LessonTextView::linkRect(const QString& hrefSuffix, int timeoutMs) {
   if (!waitUntilShown(timeoutMs)) return {};
-  QString suffix = hrefSuffix;
-  suffix.replace('\\', "\\\\").replace('\'', "\\'");
-  const QJsonObject o = pageAnswer(
-      "(function () { var a = Array.prototype.find.call(document.querySelectorAll('a[href]'), function (e) {"
+  return pageRect(
+      "Array.prototype.find.call(document.querySelectorAll('a[href]'), function (e) {"
       " return e.getAttribute('href').endsWith('" +
-          suffix +
-          "'); }); if (!a) return ''; a.scrollIntoView({block: 'center'}); var r = a.getBoundingClientRect();"
-          " return JSON.stringify({x: r.left, y: r.top, w: r.width, h: r.height}); })()",
-      timeoutMs);
+          scriptString(hrefSuffix) + "'); })",
+      true, timeoutMs);
+}
+
+QRect LessonTextView::elementRect(const QString& id, int timeoutMs) {
+  if (!waitUntilShown(timeoutMs)) return {};
+  return pageRect("document.getElementById('" + scriptString(id) + "')", false, timeoutMs);
+}
+
+QRect LessonTextView::pageRect(const QString& element, bool scrollIntoView, int timeoutMs) {
+  const QJsonObject o =
+      pageAnswer("(function () { var a = " + element + "; if (!a) return '';" +
+                     (scrollIntoView ? " a.scrollIntoView({block: 'center'});" : "") +
+                     " var r = a.getBoundingClientRect();"
+                     " return JSON.stringify({x: r.left, y: r.top, w: r.width, h: r.height}); })()",
+                 timeoutMs);
   if (o.isEmpty()) return {};
   const double zoom = view_->zoomFactor();
   return QRectF(o.value("x").toDouble() * zoom, o.value("y").toDouble() * zoom,

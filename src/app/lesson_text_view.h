@@ -44,6 +44,9 @@ class LessonTextView : public QWidget {
   // Where the first link whose target ends with `hrefSuffix` is, in viewport() coordinates, once scrolled
   // into view (waits for the page like mathsState); empty when the page has no such link.
   QRect linkRect(const QString& hrefSuffix, int timeoutMs = 15000);
+  // Where the element with this id (a definition "gl-<term>", a reference "ref-<key>") is, in viewport()
+  // coordinates as the page is scrolled now (waits for the page like mathsState); empty when it has none.
+  QRect elementRect(const QString& id, int timeoutMs = 15000);
   // Waits until the page of the last setMarkdown is typeset and has had time to be drawn (screenshots).
   bool waitUntilShown(int timeoutMs = 15000);
 
@@ -61,6 +64,8 @@ class LessonTextView : public QWidget {
   QString pageHtml(const QString& body) const;
   // Runs a script that returns JSON text on the page; its answer (empty when none came in time).
   QJsonObject pageAnswer(const QString& script, int timeoutMs);
+  // The rectangle of the element a script expression gives, in viewport() coordinates; empty when none.
+  QRect pageRect(const QString& element, bool scrollIntoView, int timeoutMs);
   QString styleSheet() const;
   void applyStyle();
   void watchChildren(QObject* object);

@@ -81,6 +81,10 @@ const std::vector<Topic>& topicTable() {
       {"linear-element", "Evaluating a linear element",
        "a rectangle's bilinear shape functions and radiosity at a point, its average and one corner's weight",
        "finite-elements", generateLinearElement},
+      {"discontinuity", "The critical lines of a shadow",
+       "where the rays from a strip light's edges past a table's edges meet the floor (the umbra and "
+       "penumbrae), the width of the light a penumbra point sees, the lines' order and the element they cut",
+       "meshing", generateDiscontinuity},
   };
   return table;
 }

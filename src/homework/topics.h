@@ -29,5 +29,6 @@ std::optional<Exercise> generateHierarchicalOracle(Draw& draw);
 std::optional<Exercise> generateRandomWalk(Draw& draw);
 std::optional<Exercise> generateTwoPass(Draw& draw);
 std::optional<Exercise> generateLinearElement(Draw& draw);
+std::optional<Exercise> generateDiscontinuity(Draw& draw);
 
 }  // namespace rt::homework

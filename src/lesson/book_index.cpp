@@ -18,11 +18,6 @@ struct Mark {
   std::string closeTag;
 };
 
-bool overlaps(const Range& a, const std::vector<Mark>& marks) {
-  return std::any_of(marks.begin(), marks.end(),
-                     [&](const Mark& m) { return a.first < m.range.second && m.range.first < a.second; });
-}
-
 std::string lowerCase(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
@@ -41,12 +36,6 @@ std::string apply(std::string text, std::vector<Mark> marks) {
 
 std::vector<IndexEntry> markIndexTerms(std::vector<RenderedLesson>& chapters,
                                        const std::vector<GlossaryEntry>& terms) {
-  // Longer terms first, so that "delta form factor" is marked and "form factor" finds another use.
-  std::vector<const GlossaryEntry*> byLength;
-  for (const GlossaryEntry& t : terms) byLength.push_back(&t);
-  std::stable_sort(byLength.begin(), byLength.end(), [](const GlossaryEntry* a, const GlossaryEntry* b) {
-    return a->term.size() > b->term.size();
-  });
   std::map<std::string, IndexEntry> index;  // by the lower-case term: sorted as the index prints it
   for (RenderedLesson& chapter : chapters) {
     const std::string page = lessonPageFile(chapter);
@@ -57,25 +46,23 @@ std::vector<IndexEntry> markIndexTerms(std::vector<RenderedLesson>& chapters,
     for (std::size_t k = 0; k < sections.size(); ++k) {
       std::string& text = *sections[k];
       std::vector<Mark> marks;
-      for (const GlossaryEntry* t : byLength) {
-        for (const Range& use : termUses(text, t->term)) {
-          if (overlaps(use, marks)) continue;
-          const std::string anchor =
-              "ix-" + glossaryAnchor(t->term).substr(3) + "-" + number + "-" + std::to_string(k);
-          IndexEntry& entry = index[lowerCase(t->term)];
-          entry.term = t->term;
-          entry.defined = !t->indexOnly;
-          entry.locators.push_back({page, anchor, k == 0 ? number : number + "." + std::to_string(k)});
-          if (!t->indexOnly && !linked[t->term]) {
-            linked[t->term] = true;
-            marks.push_back({use,
-                             "<a class=\"term\" id=\"" + anchor + "\" href=\"" + kGlossaryPage + "#" +
-                                 glossaryAnchor(t->term) + "\">",
-                             "</a>"});
-          } else {
-            marks.push_back({use, "<span class=\"term-use\" id=\"" + anchor + "\">", "</span>"});
-          }
-          break;
+      for (const TermUse& use : firstTermUses(text, terms)) {
+        const GlossaryEntry* t = use.entry;
+        const std::string anchor =
+            "ix-" + glossaryAnchor(t->term).substr(3) + "-" + number + "-" + std::to_string(k);
+        IndexEntry& entry = index[lowerCase(t->term)];
+        entry.term = t->term;
+        entry.defined = !t->indexOnly;
+        entry.locators.push_back({page, anchor, k == 0 ? number : number + "." + std::to_string(k)});
+        if (!t->indexOnly && !linked[t->term]) {
+          linked[t->term] = true;
+          marks.push_back({use.range,
+                           "<a class=\"term\" id=\"" + anchor + "\" href=\"" + kGlossaryPage + "#" +
+                               glossaryAnchor(t->term) + "\" title=\"" + escapeHtml(definitionText(*t)) +
+                               "\">",
+                           "</a>"});
+        } else {
+          marks.push_back({use.range, "<span class=\"term-use\" id=\"" + anchor + "\">", "</span>"});
         }
       }
       text = apply(text, std::move(marks));
@@ -113,8 +100,7 @@ std::string indexHtml(const std::vector<IndexEntry>& index) {
 }
 
 std::string indexStyleSheet() {
-  return R"(/* A term's first use in a chapter links to its definition; the index lists every section using it. */
-a.term { color: inherit; text-decoration: none; border-bottom: 1px dotted #777; }
+  return R"(/* The index: each term with every section that uses it. */
 .index-letter { margin: 0.8em 0 0.2em; }
 .index-entry { margin: 0.1em 0 0.1em 1.5em; text-indent: -1.5em; }
 .index-entry .index-term a { color: inherit; text-decoration: none; font-weight: bold; }

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "homework/plain_text.h"
 #include "lesson/markdown_html.h"
 #include "lesson/maths.h"
 
@@ -66,7 +67,64 @@ std::string definitionHtml(const std::string& text) {
   return html;
 }
 
+// A term's paragraph as the Glossary chapter and a page's definitions open it, before any link.
+std::string definitionParagraph(const GlossaryEntry& e) {
+  return "<p class=\"glossary\" id=\"" + glossaryAnchor(e.term) + "\"><b>" + escapeHtml(e.term) +
+         "</b>: " + definitionHtml(e.definition);
+}
+
 }  // namespace
+
+std::string definitionText(const GlossaryEntry& entry) {
+  return homework::plainText(entry.definition);
+}
+
+std::vector<TermUse> firstTermUses(const std::string& markdown, const std::vector<GlossaryEntry>& entries) {
+  std::vector<const GlossaryEntry*> byLength;
+  for (const GlossaryEntry& t : entries) byLength.push_back(&t);
+  std::stable_sort(byLength.begin(), byLength.end(), [](const GlossaryEntry* a, const GlossaryEntry* b) {
+    return a->term.size() > b->term.size();
+  });
+  std::vector<TermUse> found;
+  for (const GlossaryEntry* t : byLength)
+    for (const auto& use : termUses(markdown, t->term)) {
+      const bool free = std::none_of(found.begin(), found.end(), [&](const TermUse& u) {
+        return use.first < u.range.second && u.range.first < use.second;
+      });
+      if (!free) continue;
+      found.push_back({t, use});
+      break;
+    }
+  return found;
+}
+
+std::string linkTermsToDefinitions(const std::string& markdown, const std::vector<GlossaryEntry>& entries,
+                                   std::vector<const GlossaryEntry*>& linked) {
+  std::vector<TermUse> uses;
+  for (const TermUse& u : firstTermUses(markdown, entries))
+    if (!u.entry->indexOnly && std::find(linked.begin(), linked.end(), u.entry) == linked.end())
+      uses.push_back(u);
+  // From the end, so that the offsets still ahead stay valid.
+  std::sort(uses.begin(), uses.end(), [](const TermUse& a, const TermUse& b) { return a.range > b.range; });
+  std::string text = markdown;
+  for (const TermUse& u : uses) {
+    const auto [begin, end] = u.range;
+    text.replace(begin, end - begin,
+                 "<a class=\"term\" href=\"#" + glossaryAnchor(u.entry->term) + "\" title=\"" +
+                     escapeHtml(definitionText(*u.entry)) + "\">" + text.substr(begin, end - begin) + "</a>");
+  }
+  for (auto it = uses.rbegin(); it != uses.rend(); ++it) linked.push_back(it->entry);
+  return text;
+}
+
+std::string termDefinitionsHtml(const std::vector<const GlossaryEntry*>& terms, int level) {
+  if (terms.empty()) return "";
+  // One paragraph per term and no blank line: Markdown passes the block through whole.
+  const std::string h = "h" + std::to_string(level);
+  std::string html = "<" + h + " class=\"terms\">Terms</" + h + ">\n\n";
+  for (const GlossaryEntry* e : terms) html += definitionParagraph(*e) + "</p>\n";
+  return html;
+}
 
 std::vector<std::pair<std::size_t, std::size_t>> termUses(const std::string& markdown,
                                                           const std::string& term) {
@@ -147,8 +205,7 @@ std::string glossaryHtml(const std::vector<GlossaryEntry>& entries, const std::v
   // One paragraph per term and no blank line: Markdown passes the block through whole.
   std::string html;
   for (const GlossaryEntry* e : sorted) {
-    html += "<p class=\"glossary\" id=\"" + glossaryAnchor(e->term) + "\"><b>" + escapeHtml(e->term) +
-            "</b>: " + definitionHtml(e->definition);
+    html += definitionParagraph(*e);
     if (const auto use = firstUse(e->term, lessons)) {
       const Lesson& l = *use->lesson;
       const std::string order = std::to_string(l.order);

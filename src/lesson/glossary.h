@@ -30,6 +30,29 @@ std::vector<std::pair<std::size_t, std::size_t>> termUses(const std::string& mar
 // The anchor of a term's definition in the Glossary chapter: "gl-form-factor".
 std::string glossaryAnchor(const std::string& term);
 
+// A term's definition as plain text (maths as Unicode), for a link's title: what hovering over the term
+// shows.
+std::string definitionText(const GlossaryEntry& entry);
+
+// The first use of each term in a Markdown text (as termUses finds them), longer terms first, so that
+// "delta form factor" takes its words before "form factor" looks for a use of its own: at most one range per
+// term, none overlapping, in the order longer terms first.
+struct TermUse {
+  const GlossaryEntry* entry = nullptr;
+  std::pair<std::size_t, std::size_t> range;
+};
+std::vector<TermUse> firstTermUses(const std::string& markdown, const std::vector<GlossaryEntry>& entries);
+
+// A page that stands on its own (the app's text pane shows one step of a lesson): the first use of each
+// defined term on it becomes a link to its definition on the same page ("#gl-<term>", the definition as the
+// link's title, which shows on hover). `linked` holds the terms the page links already, in an earlier text
+// of it: they are not linked again; those linked here are added in the order of the text.
+std::string linkTermsToDefinitions(const std::string& markdown, const std::vector<GlossaryEntry>& entries,
+                                   std::vector<const GlossaryEntry*>& linked);
+// The definitions for such a page, under a heading of level `level` ("Terms"): one paragraph per term,
+// anchored "gl-<term>" as in the Glossary chapter. Empty when there are none.
+std::string termDefinitionsHtml(const std::vector<const GlossaryEntry*>& terms, int level);
+
 // Where a term is first used in the lessons (given in book order): in a title or in normal text (not code,
 // not maths), as a whole word, in any case, plural or not.
 struct FirstUse {

@@ -14,6 +14,7 @@ TextApparatus lessonApparatus(const Lesson& lesson) {
   const std::string folder = std::filesystem::path(lesson.file).parent_path().string();
   a.bibliography = loadBibliography(bibliographyPath(folder));
   a.lessons = lessonNumbers(folder);
+  a.glossary = loadGlossary(glossaryPath(folder));
   return a;
 }
 
@@ -75,6 +76,9 @@ td.alg-source { width: 13em; text-align: right; color: #888; font-size: 0.68em; 
                 font-family: "DejaVu Sans Mono", monospace; overflow-wrap: break-word; }
 @media (max-width: 30em) { td.alg-source { display: none; } }
 p.reference, p.glossary { padding-left: 1.5em; text-indent: -1.5em; margin: 0.35em 0; }
+/* A term's first use links to its definition (the definition on hover); the definition reached is marked. */
+a.term { color: inherit; text-decoration: none; border-bottom: 1px dotted #777; }
+p.glossary:target, p.reference:target { outline: 1px dotted #777; outline-offset: 2px; }
 )";
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "lesson/bibliography.h"
+#include "lesson/glossary.h"
 #include "lesson/lesson.h"
 #include "lesson/lesson_references.h"
 #include "lesson/maths.h"
@@ -17,12 +18,13 @@ namespace rt::lesson {
 struct TextApparatus {
   EquationNumbers equations;
   AlgorithmNumbers algorithms;
-  Bibliography bibliography;  // the references.json beside the lesson file
-  LessonNumbers lessons;      // the chapter numbers of the lessons beside it
+  Bibliography bibliography;            // the references.json beside the lesson file
+  LessonNumbers lessons;                // the chapter numbers of the lessons beside it
+  std::vector<GlossaryEntry> glossary;  // the glossary.json beside the lesson file
 };
 
-// Numbers the lesson's equations and listings and reads its bibliography. InputError on a label used twice
-// or a malformed bibliography.
+// Numbers the lesson's equations and listings and reads its bibliography and glossary. InputError on a label
+// used twice or a malformed bibliography or glossary.
 TextApparatus lessonApparatus(const Lesson& lesson);
 
 // One text of the lesson (its introduction or a step's text, placeholders filled in) ready for Markdown to

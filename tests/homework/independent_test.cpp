@@ -5,8 +5,11 @@
 // scene file, the data files and the numbers the statement was written from.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "core/assembly.h"
 #include "core/basis/linear_basis.h"
@@ -18,6 +21,7 @@
 #include "core/io/scene_loader.h"
 #include "core/radiometry.h"
 #include "core/raytrace/ray_cost.h"
+#include "core/refine/discontinuity.h"
 #include "core/refine/refine.h"
 #include "core/solvers/bounces_solver.h"
 #include "core/solvers/direct_solver.h"
@@ -476,6 +480,43 @@ TEST(HomeworkIndependent, HierarchicalOracleAgreesWithTheCoresKernelAndSplitting
       linked += std::max(toOther, toChild) / (delta * delta) < e.given.at("epsilon");
     }
     EXPECT_EQ(answer(e, "linked"), linked) << "seed " << e.seed;
+  });
+}
+
+// The scene file handed out: the core's critical segments on the floor that cross the section y = 0 are the
+// four lines of the key; the visible width is counted by rays traced forwards from the floor point to points
+// of the light, hidden when they pass through the table.
+TEST(HomeworkIndependent, DiscontinuityAgreesWithTheCoresCriticalSegments) {
+  forEachVariant("discontinuity", [](const Exercise& e) {
+    const Scene s = parseSceneJson(e.sceneJson);
+    ASSERT_EQ(s.patches.size(), 3u);
+    std::vector<double> lines;
+    for (const CriticalSegment& c : criticalSegments(s, 0, 1e-9)) {
+      if (std::min(c.a.y(), c.b.y()) > 0 || std::max(c.a.y(), c.b.y()) < 0) continue;
+      EXPECT_NEAR(c.a.x(), c.b.x(), 1e-9) << "seed " << e.seed << ": a line across y = 0 runs along y";
+      if (std::none_of(lines.begin(), lines.end(), [&](double x) { return std::abs(x - c.a.x()) < 1e-9; }))
+        lines.push_back(c.a.x());
+    }
+    std::sort(lines.begin(), lines.end());
+    ASSERT_EQ(lines.size(), 4u) << "seed " << e.seed;
+    int crossing = 0;
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_AGREES(e, "x" + std::to_string(i + 1), lines[static_cast<std::size_t>(i)], 0.01);
+      crossing += lines[static_cast<std::size_t>(i)] > e.given.at("e0") &&
+                  lines[static_cast<std::size_t>(i)] < e.given.at("e1");
+    }
+    EXPECT_EQ(answer(e, "crossing"), crossing) << "seed " << e.seed;
+    const double xp = e.given.at("xp"), l0 = e.given.at("l0"), l1 = e.given.at("l1");
+    const double H = e.given.at("H"), h = e.given.at("h"), o0 = e.given.at("o0"), o1 = e.given.at("o1");
+    constexpr int kRays = 20000;
+    int seen = 0;
+    for (int r = 0; r < kRays; ++r) {
+      const double l = l0 + (l1 - l0) * (r + 0.5) / kRays;
+      const double atTable = xp + (l - xp) * h / H;
+      seen += atTable < o0 || atTable > o1;
+    }
+    EXPECT_AGREES(e, "visible", (l1 - l0) * seen / kRays, 0.5);
+    EXPECT_EQ(answer(e, "order"), 1.0) << "parallel edges";
   });
 }
 

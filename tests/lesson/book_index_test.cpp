@@ -39,12 +39,14 @@ TEST(BookIndex, MarksEachSectionsFirstUseAndLinksTheChaptersFirstToTheGlossary) 
   const auto index = markIndexTerms(chapters, kTerms);
   const RenderedLesson& a = chapters[0];
   EXPECT_EQ(a.intro,
-            "The <a class=\"term\" id=\"ix-form-factor-6-0\" href=\"glossary.html#gl-form-factor\">form "
-            "factor</a> of two squares.\n");
+            "The <a class=\"term\" id=\"ix-form-factor-6-0\" href=\"glossary.html#gl-form-factor\" "
+            "title=\"The fraction F_ij.\">form factor</a> of two squares.\n")
+      << "the definition shows on hover";
   EXPECT_EQ(
       a.steps[0].text,
       "Two <span class=\"term-use\" id=\"ix-form-factor-6-1\">form factors</span> and a <a class=\"term\" "
-      "id=\"ix-delta-form-factor-6-1\" href=\"glossary.html#gl-delta-form-factor\">delta form factor</a>.\n");
+      "id=\"ix-delta-form-factor-6-1\" href=\"glossary.html#gl-delta-form-factor\" title=\"Of one "
+      "pixel.\">delta form factor</a>.\n");
   EXPECT_EQ(a.steps[1].text, "A <span class=\"term-use\" id=\"ix-z-buffer-6-2\">z-buffer</span>.\n")
       << "an index-only term has no definition to link to";
   EXPECT_EQ(a.steps[2].text,
@@ -72,6 +74,32 @@ TEST(BookIndex, MarksEachSectionsFirstUseAndLinksTheChaptersFirstToTheGlossary) 
   EXPECT_NE(html.find("<span class=\"index-term\">z-buffer</span>"), std::string::npos) << html;
   EXPECT_NE(html.find("<h3 class=\"index-letter\">D</h3>"), std::string::npos) << html;
   EXPECT_EQ(html.find("\n\n"), std::string::npos) << "a blank line would end the HTML block";
+}
+
+// A page that stands alone, as the app's text pane shows a step: each defined term's first use on the page
+// links to its definition listed under it, with the definition as the link's title.
+TEST(BookIndex, APageLinksItsFirstUsesToDefinitionsListedUnderIt) {
+  std::vector<const GlossaryEntry*> linked;
+  const std::string text = linkTermsToDefinitions(
+      "Two form factors, a z-buffer and a delta form factor; `form factor` and one more form factor.\n",
+      kTerms, linked);
+  EXPECT_EQ(text,
+            "Two <a class=\"term\" href=\"#gl-form-factor\" title=\"The fraction F_ij.\">form factors</a>, a "
+            "z-buffer and a <a class=\"term\" href=\"#gl-delta-form-factor\" title=\"Of one pixel.\">delta "
+            "form factor</a>; `form factor` and one more form factor.\n")
+      << "the first use only, never an index-only term";
+  ASSERT_EQ(linked.size(), 2u);
+  EXPECT_EQ(linked[0]->term, "form factor") << "in the order of the text";
+  EXPECT_EQ(linked[1]->term, "delta form factor");
+  const std::string html = termDefinitionsHtml(linked, 3);
+  EXPECT_EQ(html.rfind("<h3 class=\"terms\">Terms</h3>", 0), 0u) << html;
+  EXPECT_NE(
+      html.find("<p class=\"glossary\" id=\"gl-form-factor\"><b>form factor</b>: The fraction "
+                "<x-equation>F_{ij}</x-equation>.</p>\n<p class=\"glossary\" id=\"gl-delta-form-factor\">"),
+      std::string::npos)
+      << html;
+  EXPECT_EQ(html.find("\n\n", html.find("</h3>") + 7), std::string::npos) << "one HTML block";
+  EXPECT_EQ(termDefinitionsHtml({}, 3), "");
 }
 
 TEST(BookIndex, InThePrintedBookTheLinksPointIntoTheOneDocument) {

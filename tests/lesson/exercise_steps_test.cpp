@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/input_error.h"
+#include "homework/conceptual.h"
 #include "homework/topic_table.h"
 #include "lesson/exercise_topics.h"
 #include "lesson/lesson_parser.h"
@@ -41,6 +42,8 @@ TEST(ExerciseSteps, EveryLessonEndsWithExercisesOnItsOwnTopic) {
         ++conceptual;
         EXPECT_EQ(q.choices.size(), step.choices.size());
         EXPECT_EQ(q.mistakes.size(), step.choices.size() - 1) << "every wrong choice is explained";
+        for (const homework::Choice& c : step.choices)
+          EXPECT_GE(c.because.size(), 20u) << "an explanation, not a word: " << c.text;
         continue;
       }
       ++numeric;
@@ -55,6 +58,37 @@ TEST(ExerciseSteps, EveryLessonEndsWithExercisesOnItsOwnTopic) {
     EXPECT_GE(numeric, 2) << "two numeric exercises";
     EXPECT_GE(conceptual, 1) << "a conceptual question";
   }
+}
+
+// How to answer is the exercise frame's line (homework::answerInstruction, under every exercise in the app
+// and the book): no lesson says it again in its own words.
+TEST(ExerciseSteps, NoLessonRepeatsTheFramesInstruction) {
+  homework::Exercise numeric, choice;
+  numeric.questions.resize(1);
+  choice.questions.resize(1);
+  choice.questions[0].choices = {"a", "b"};
+  std::vector<std::string> clauses;
+  for (const homework::Exercise* e : {&numeric, &choice})
+    for (const homework::Frame frame : {homework::Frame::App, homework::Frame::Book}) {
+      std::string line = homework::answerInstruction(*e, frame);
+      for (std::size_t at = line.find_first_of(";,."); !line.empty(); at = line.find_first_of(";,.")) {
+        std::string clause = line.substr(0, at);
+        while (!clause.empty() && (clause.front() == ' ' || clause.front() == '*')) clause.erase(0, 1);
+        if (clause.size() > 12) clauses.push_back(clause);
+        line = at == std::string::npos ? "" : line.substr(at + 1);
+      }
+    }
+  ASSERT_GE(clauses.size(), 4u);
+  for (const Lesson& lesson : loadCatalogue(test::repoFolders()))
+    for (const Step& step : lesson.steps) {
+      std::string text = step.text;
+      for (char& c : text)
+        if (c == '\n') c = ' ';
+      for (const std::string& clause : clauses)
+        EXPECT_EQ(text.find(clause), std::string::npos)
+            << lesson.file << ": the step '" << step.title << "' repeats the exercise frame's '" << clause
+            << "'";
+    }
 }
 
 TEST(ExerciseSteps, EveryLessonATopicListsExistsAndHasATopic) {
