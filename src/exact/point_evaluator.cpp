@@ -23,7 +23,7 @@ PointEvaluator::PointEvaluator(const PairGeometry& pair, Booleans booleans)
   if (pair.sourcePolygon.empty() || pair.receiverPolygon.empty()) return;
   receiver_ = clipToHalfspace(pair.receiverPolygon, pair.sourcePolygon.front(), pair.sourceNormal);
   if (receiver_.size() >= 3) receiverArea_ = polygonArea(receiver_);
-  for (const Polygon& polygon : pair.occluderPolygons) {
+  for (const Polygon& polygon : pair.blockers) {
     Occluder occluder{&polygon, Vec3::Zero(), {}, {}};
     const Vec3 n = newellNormal(polygon);
     if (n.norm() > 0) occluder.normal = n.normalized();

@@ -22,7 +22,8 @@ struct PairGeometry {
   Polygon integrationDomain;          // source clipped to the receiver's front half-space
   std::vector<int> occluders;         // shaft candidates
   std::vector<Polygon> occluderPolygons;
-  double scale = 1;  // length scale of the pair (for relative tolerances)
+  std::vector<Polygon> blockers;  // the same merged per patch, none inside another (blockers.h)
+  double scale = 1;               // length scale of the pair (for relative tolerances)
 };
 
 // Relative tolerance of the double-precision culling and classification tests.
