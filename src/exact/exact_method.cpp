@@ -41,6 +41,24 @@ class ExactMethod : public FormFactorMethod {
   }
 };
 
+// Pairs i < j that face each other with candidate occluders in their shaft: the entries that need
+// cubature.
+std::size_t countOccludedPairs(const Mesh& mesh, const ElementIndex& index, int threads) {
+  const auto n = static_cast<int>(mesh.size());
+  std::atomic<std::size_t> count{0};
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, n, 1), [&](const tbb::blocked_range<int>& r) {
+      for (int i = r.begin(); i != r.end(); ++i)
+        for (int j = i + 1; j < n; ++j) {
+          const PairGeometry pair = setUpPair(mesh, i, j, true, &index);
+          if (pair.facing && !pair.occluders.empty()) ++count;
+        }
+    });
+  });
+  return count.load();
+}
+
 }  // namespace
 
 ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& entryOptions, Progress& progress,
@@ -52,25 +70,30 @@ ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& entryOptions,
   const std::size_t totalPairs =
       static_cast<std::size_t>(n) * static_cast<std::size_t>(std::max<Eigen::Index>(n - 1, 0)) / 2;
   std::atomic<long> evaluations{0}, exactEvaluations{0}, splitEvaluations{0}, notConverged{0};
-  std::atomic<long> work{
-      0};                    // point evaluations so far, entries in progress included; an analytic entry is 1
+  // Point evaluations so far, entries in progress included (an analytic entry counts 1), and those of the
+  // finished occluded entries.
+  std::atomic<long> work{0}, occludedWork{0};
+  std::atomic<std::size_t> occludedDone{0};
   std::mutex progressMutex;  // reporters need not be thread-safe
   double reported = 0;
   const std::string stage = "exact form factors";
   progress.report(0.0, stage);
+  const ElementIndex index(mesh);
+  const std::size_t occludedPairs = countOccludedPairs(mesh, index, threads);
 
-  // The fraction of the work done. The whole is not known in advance (an occluded entry takes from a few
-  // hundred to the cap of point evaluations, an unoccluded one a single contour integral): it is estimated
-  // as the work done plus the pairs not yet finished at the mean cost of the finished ones. The estimate
-  // only grows the bar, never shrinks it; a budget, when given, bounds the whole.
+  // The fraction of the work done. An occluded entry takes from a few hundred point evaluations to the cap,
+  // an unoccluded one a single contour integral, and the occluded ones are counted before the run (their
+  // shafts, a small part of the whole): the whole is estimated as the work done plus the occluded entries
+  // not yet finished at the mean cost of the finished ones (kMeterBatch each before any has finished). The
+  // bar never goes back; a budget, when given, bounds the whole.
   auto report = [&](bool checkCancel) {
     std::lock_guard lock(progressMutex);
     const double done = static_cast<double>(work.load());
-    const double finished = static_cast<double>(pairsDone.load());
-    const double remaining = static_cast<double>(totalPairs) - finished;
-    double whole = finished > 0 ? done + remaining * done / finished : 0;
-    if (workBudget > 0)
-      whole = whole > 0 ? std::min(whole, static_cast<double>(workBudget)) : static_cast<double>(workBudget);
+    const double finished = static_cast<double>(occludedDone.load());
+    const double mean = finished > 0 ? static_cast<double>(occludedWork.load()) / finished : kMeterBatch;
+    double whole = done + std::max(0.0, static_cast<double>(occludedPairs) - finished) * mean +
+                   static_cast<double>(totalPairs - std::min(totalPairs, pairsDone.load()));
+    if (workBudget > 0) whole = std::min(whole, static_cast<double>(workBudget));
     if (whole > 0) reported = std::max(reported, std::min(0.999, done / whole));
     progress.report(reported, stage);
     if (checkCancel && progress.cancelled()) throw Cancelled();
@@ -90,7 +113,6 @@ ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& entryOptions,
     report(true);
   };
 
-  const ElementIndex index(mesh);
   auto row = [&](Eigen::Index i) {
     if (progress.cancelled()) throw Cancelled();
     const double ai = mesh.elements[i].area;
@@ -105,6 +127,10 @@ ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& entryOptions,
       if (e.evaluations == 0) spend(1);  // the analytic value, or wholly hidden: one step of work
       ++computed;
       if (!e.occluded) ++unoccluded;
+      if (e.occluded) {
+        occludedWork += e.evaluations;
+        ++occludedDone;
+      }
       evaluations += e.evaluations;
       exactEvaluations += e.exactEvaluations;
       splitEvaluations += e.splitEvaluations;

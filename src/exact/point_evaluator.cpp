@@ -93,8 +93,23 @@ void PointEvaluator::subtractShadow(const Vec3& x, const Occluder& occluder, dou
     if (m.dot(centre - x) < 0) m = -m;
     cone_.push_back(m);
   }
+  // A piece on the outer side of one of the cone's planes (touching counts) meets the shadow in no area:
+  // it is kept whole. Cut by the planes before that one, it would come back in pieces, and the pieces
+  // would multiply with every occluder after.
+  auto outsideCone = [&](const Polygon& piece) {
+    for (const Vec3& m : cone_) {
+      bool outside = true;
+      for (const Vec3& v : piece) outside = outside && m.dot(v - x) <= 0;
+      if (outside) return true;
+    }
+    return false;
+  };
   std::size_t nextCount = 0;
   for (std::size_t p = 0; p < pieceCount_; ++p) {
+    if (outsideCone(work_[p])) {
+      std::swap(slot(next_, nextCount), work_[p]);
+      continue;
+    }
     inside_ = work_[p];
     for (const Vec3& m : cone_) {
       clipToHalfspace(inside_, x, -m, outside_);
