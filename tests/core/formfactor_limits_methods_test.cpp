@@ -103,9 +103,7 @@ TEST_P(FormerLimits, LightToFloorWithinTheMethodsBound) {
 
 INSTANTIATE_TEST_SUITE_P(Registered, FormerLimits, ::testing::ValuesIn(formFactorMethodNames()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = info.param;
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
+                           return test::testNameOf(info.param);
                          });
 
 }  // namespace
