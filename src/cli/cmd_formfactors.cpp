@@ -1,5 +1,5 @@
 // radiosity formfactors SCENE [--method NAME] [mesh options] [--resolution R] [--samples N] [--seed S]
-//                            [--ff-tolerance T]
+//                            [--ff-tolerance T] [--ff-budget N]
 //                            [--enforce-reciprocity] [--normalize-rows] [--output F.csv|F.mtx|F.npy|F.tex]
 //                            [--compare-to REFERENCE.npy] [--explain I,J]
 // Computes the form-factor matrix of a scene's mesh, prints one summary line and one diagnostics line, and
@@ -133,6 +133,13 @@ void addFormFactorsCommand(CLI::App& app) {
   // --tolerance is the solver's in every other command; here it was the form factors' and still works.
   addDeprecatedAlias(*command, "--tolerance",
                      addSettingOption(*command, "ff-tolerance", arguments->options.tolerance));
+  command
+      ->add_option(
+          "--ff-budget", arguments->options.workBudget,
+          "exact: the most point evaluations the whole matrix may take (0: no limit); past it the run "
+          "stops with a message naming the budget, instead of running on for hours")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   command
       ->add_option("--explain", arguments->explain,
                    "I,J: print the route the pair I -> J takes through the quadrature method's stages, the "

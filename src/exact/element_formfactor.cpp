@@ -60,7 +60,7 @@ bool near(const PairGeometry& pair) {
 // splitting the source along every visibility event.)
 bool whollyHidden(const PairGeometry& pair) {
   const double eps = 100 * kGeometricEpsilon * pair.scale;
-  for (const Polygon& o : pair.occluderPolygons) {
+  for (const Polygon& o : pair.blockers) {
     const Vec3 normal = newellNormal(o);
     const double length = normal.norm();
     if (o.size() < 3 || !(length > 0)) continue;
@@ -106,7 +106,12 @@ EntryResult integratePair(const Mesh& mesh, const PairGeometry& pair, const Exac
   const AdaptiveCubature cubature(settingsFor(options, entry.occluded, area, unoccluded * area));
   std::vector<WeightedPoint> finalPoints;
   bool anyVisible = false;  // all points in full shadow: F_ij = 0 exactly, not a difference of two integrals
+  long unmetered = 0;
   const auto f = [&](const Vec3& x) {
+    if (options.meter && ++unmetered == kMeterBatch) {
+      options.meter(unmetered);
+      unmetered = 0;
+    }
     const double visible = evaluate(x);
     anyVisible = anyVisible || visible > 0;
     return subtract ? evaluate.unoccluded(x) - visible : visible;
@@ -118,6 +123,7 @@ EntryResult integratePair(const Mesh& mesh, const PairGeometry& pair, const Exac
     entry.eventCells = static_cast<long>(cells.size());
   }
   const CubatureResult result = cubature.integrateCells(cells, f, points ? &finalPoints : nullptr);
+  if (options.meter && unmetered > 0) options.meter(unmetered);
   entry.value = subtract ? std::max(0.0, unoccluded - result.value / area) : result.value / area;
   entry.errorEstimate = result.errorEstimate / area;
   if (!anyVisible) entry.value = entry.errorEstimate = 0;  // the direct integral over the same points

@@ -35,41 +35,102 @@ class ExactMethod : public FormFactorMethod {
   }
   FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
                                  FormFactorStats& stats) const override {
-    return exactFormFactors(mesh, exactOptionsFor(options.tolerance), progress, &stats, options.threads).F;
+    return exactFormFactors(mesh, exactOptionsFor(options.tolerance), progress, &stats, options.threads,
+                            options.workBudget)
+        .F;
   }
 };
 
+// Pairs i < j that face each other with candidate occluders in their shaft: the entries that need
+// cubature.
+std::size_t countOccludedPairs(const Mesh& mesh, const ElementIndex& index, int threads) {
+  const auto n = static_cast<int>(mesh.size());
+  std::atomic<std::size_t> count{0};
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, n, 1), [&](const tbb::blocked_range<int>& r) {
+      for (int i = r.begin(); i != r.end(); ++i)
+        for (int j = i + 1; j < n; ++j) {
+          const PairGeometry pair = setUpPair(mesh, i, j, true, &index);
+          if (pair.facing && !pair.occluders.empty()) ++count;
+        }
+    });
+  });
+  return count.load();
+}
+
 }  // namespace
 
-ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& options, Progress& progress,
-                             FormFactorStats* stats, int threads) {
+ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& entryOptions, Progress& progress,
+                             FormFactorStats* stats, int threads, long workBudget) {
   const auto start = std::chrono::steady_clock::now();
   const auto n = static_cast<Eigen::Index>(mesh.size());
   ExactMatrix result{zeroFormFactorMatrix(n), Eigen::MatrixXd::Zero(n, n)};
   std::atomic<std::size_t> computed{0}, facing{0}, unoccluded{0}, pairsDone{0};
-  const double totalPairs = std::max(1.0, 0.5 * static_cast<double>(n) * static_cast<double>(n - 1));
+  const std::size_t totalPairs =
+      static_cast<std::size_t>(n) * static_cast<std::size_t>(std::max<Eigen::Index>(n - 1, 0)) / 2;
   std::atomic<long> evaluations{0}, exactEvaluations{0}, splitEvaluations{0}, notConverged{0};
-  std::atomic<bool> cancelled{false};
-  std::mutex progressMutex;
+  // Point evaluations so far, entries in progress included (an analytic entry counts 1), and those of the
+  // finished occluded entries.
+  std::atomic<long> work{0}, occludedWork{0};
+  std::atomic<std::size_t> occludedDone{0};
+  std::mutex progressMutex;  // reporters need not be thread-safe
+  double reported = 0;
   const std::string stage = "exact form factors";
   progress.report(0.0, stage);
-
   const ElementIndex index(mesh);
+  const std::size_t occludedPairs = countOccludedPairs(mesh, index, threads);
+
+  // The fraction of the work done. An occluded entry takes from a few hundred point evaluations to the cap,
+  // an unoccluded one a single contour integral, and the occluded ones are counted before the run (their
+  // shafts, a small part of the whole): the whole is estimated as the work done plus the occluded entries
+  // not yet finished at the mean cost of the finished ones (kMeterBatch each before any has finished). The
+  // bar never goes back; a budget, when given, bounds the whole.
+  auto report = [&](bool checkCancel) {
+    std::lock_guard lock(progressMutex);
+    const double done = static_cast<double>(work.load());
+    const double finished = static_cast<double>(occludedDone.load());
+    const double mean = finished > 0 ? static_cast<double>(occludedWork.load()) / finished : kMeterBatch;
+    double whole = done + std::max(0.0, static_cast<double>(occludedPairs) - finished) * mean +
+                   static_cast<double>(totalPairs - std::min(totalPairs, pairsDone.load()));
+    if (workBudget > 0) whole = std::min(whole, static_cast<double>(workBudget));
+    if (whole > 0) reported = std::max(reported, std::min(0.999, done / whole));
+    progress.report(reported, stage);
+    if (checkCancel && progress.cancelled()) throw Cancelled();
+  };
+  auto spend = [&](long evaluationsSpent) {
+    const long total = work += evaluationsSpent;
+    if (workBudget > 0 && total > workBudget)
+      throw WorkBudgetExceeded(
+          "exact form factors stopped: the work budget of " + std::to_string(workBudget) +
+          " point evaluations (--ff-budget) ran out after " + std::to_string(pairsDone.load()) + " of " +
+          std::to_string(totalPairs) +
+          " element pairs; raise the budget, loosen --ff-tolerance or use fewer elements");
+  };
+  ExactOptions options = entryOptions;
+  options.meter = [&](long batch) {
+    spend(batch);
+    report(true);
+  };
+
   auto row = [&](Eigen::Index i) {
-    if (cancelled.load() || progress.cancelled()) {
-      cancelled = true;
-      return;
-    }
+    if (progress.cancelled()) throw Cancelled();
     const double ai = mesh.elements[i].area;
     for (Eigen::Index j = i + 1; j < n; ++j) {
       const EntryResult e =
           elementFormFactor(mesh, static_cast<int>(i), static_cast<int>(j), options, nullptr, &index);
+      ++pairsDone;
       if (!e.facing) {
         ++facing;
         continue;
       }
+      if (e.evaluations == 0) spend(1);  // the analytic value, or wholly hidden: one step of work
       ++computed;
       if (!e.occluded) ++unoccluded;
+      if (e.occluded) {
+        occludedWork += e.evaluations;
+        ++occludedDone;
+      }
       evaluations += e.evaluations;
       exactEvaluations += e.exactEvaluations;
       splitEvaluations += e.splitEvaluations;
@@ -80,13 +141,10 @@ ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& options, Prog
       result.F(j, i) = ai * e.value / aj;  // each (i, j) is written by exactly one row task
       result.errorEstimate(j, i) = ai * e.errorEstimate / aj;
     }
-    // Rows are uneven (row i integrates n - i - 1 pairs): report the fraction of pairs, not of rows.
-    const std::size_t done = pairsDone += static_cast<std::size_t>(n - i - 1);
-    std::lock_guard lock(progressMutex);  // reporters need not be thread-safe
-    progress.report(static_cast<double>(done) / totalPairs, stage);
-    if (progress.cancelled()) cancelled = true;
+    report(true);
   };
 
+  // A throw in any row (Cancelled, WorkBudgetExceeded) cancels the others and comes out of execute().
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, n, 1),
@@ -94,7 +152,6 @@ ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& options, Prog
                         for (Eigen::Index i = r.begin(); i != r.end(); ++i) row(i);
                       });
   });
-  if (cancelled.load()) throw Cancelled();
 
   if (stats) {
     stats->elements = mesh.size();

@@ -14,7 +14,9 @@
 //      entry.
 #pragma once
 
+#include <functional>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "core/formfactor/formfactor_matrix.h"
@@ -91,6 +93,19 @@ struct ExactOptions {
   // the occluders take away. Off: the cubature of F_visible(x) for every entry (the lessons' cubature
   // points).
   bool analyticUnoccluded = true;
+  // Called from an entry's cubature with each batch of kMeterBatch point evaluations (and the rest when the
+  // entry ends), so that a whole matrix can report progress within long entries and stop on a budget or a
+  // cancel by throwing. Empty: no calls.
+  std::function<void(long)> meter;
+};
+
+inline constexpr long kMeterBatch = 4096;
+
+// Thrown by exactFormFactors when the point evaluations reach the work budget: what() names the budget, the
+// pairs finished and what to change.
+class WorkBudgetExceeded : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 // Options for a requested relative tolerance t as the form-factor method reads it: t for unoccluded pairs,
@@ -134,10 +149,12 @@ struct ExactMatrix {
   Eigen::MatrixXd errorEstimate;  // absolute error estimate per entry (derived entries scaled by A_i / A_j)
 };
 
-// Full matrix: rows in parallel (TBB), i < j computed and j > i derived by reciprocity, progress per row;
-// throws Cancelled. stats may be null.
+// Full matrix: rows in parallel (TBB), i < j computed and j > i derived by reciprocity. Progress moves with
+// the point evaluations done (an occluded entry can take a hundred thousand of them), against an estimate of
+// the whole that the finished entries refine. Throws Cancelled, and WorkBudgetExceeded when `workBudget`
+// (point evaluations, 0: none) runs out. stats may be null.
 ExactMatrix exactFormFactors(const Mesh& mesh, const ExactOptions& options, Progress& progress,
-                             FormFactorStats* stats = nullptr, int threads = 0);
+                             FormFactorStats* stats = nullptr, int threads = 0, long workBudget = 0);
 
 // |F_method - F_exact| per entry, for error maps.
 Eigen::MatrixXd errorMap(const FormFactorMatrix& method, const FormFactorMatrix& exact);

@@ -23,7 +23,7 @@ PointEvaluator::PointEvaluator(const PairGeometry& pair, Booleans booleans)
   if (pair.sourcePolygon.empty() || pair.receiverPolygon.empty()) return;
   receiver_ = clipToHalfspace(pair.receiverPolygon, pair.sourcePolygon.front(), pair.sourceNormal);
   if (receiver_.size() >= 3) receiverArea_ = polygonArea(receiver_);
-  for (const Polygon& polygon : pair.occluderPolygons) {
+  for (const Polygon& polygon : pair.blockers) {
     Occluder occluder{&polygon, Vec3::Zero(), {}, {}};
     const Vec3 n = newellNormal(polygon);
     if (n.norm() > 0) occluder.normal = n.normalized();
@@ -93,8 +93,23 @@ void PointEvaluator::subtractShadow(const Vec3& x, const Occluder& occluder, dou
     if (m.dot(centre - x) < 0) m = -m;
     cone_.push_back(m);
   }
+  // A piece on the outer side of one of the cone's planes (touching counts) meets the shadow in no area:
+  // it is kept whole. Cut by the planes before that one, it would come back in pieces, and the pieces
+  // would multiply with every occluder after.
+  auto outsideCone = [&](const Polygon& piece) {
+    for (const Vec3& m : cone_) {
+      bool outside = true;
+      for (const Vec3& v : piece) outside = outside && m.dot(v - x) <= 0;
+      if (outside) return true;
+    }
+    return false;
+  };
   std::size_t nextCount = 0;
   for (std::size_t p = 0; p < pieceCount_; ++p) {
+    if (outsideCone(work_[p])) {
+      std::swap(slot(next_, nextCount), work_[p]);
+      continue;
+    }
     inside_ = work_[p];
     for (const Vec3& m : cone_) {
       clipToHalfspace(inside_, x, -m, outside_);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "exact/blockers.h"
 #include "exact/exact_reference.h"
 #include "exact/geometry_util.h"
 
@@ -103,6 +104,7 @@ PairGeometry setUpPair(const Mesh& mesh, int source, int receiver, bool cullOccl
     index->overlapping(shaftBox, pair.occluders,
                        [&](int element) { return mayBlock(element, index->polygon(element)); });
     for (int element : pair.occluders) pair.occluderPolygons.push_back(index->polygon(element));
+    pair.blockers = mergeOccluders(mesh, pair.occluders, pair.occluderPolygons, eps);
     return pair;
   }
   for (std::size_t k = 0; k < mesh.elements.size(); ++k) {
@@ -112,6 +114,7 @@ PairGeometry setUpPair(const Mesh& mesh, int source, int receiver, bool cullOccl
     pair.occluders.push_back(element);
     pair.occluderPolygons.push_back(std::move(polygon));
   }
+  pair.blockers = mergeOccluders(mesh, pair.occluders, pair.occluderPolygons, eps);
   return pair;
 }
 

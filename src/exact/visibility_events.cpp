@@ -31,7 +31,7 @@ std::vector<Polygon> blockingParts(const PairGeometry& pair, double eps) {
   std::vector<Polygon> parts;
   const Vec3& s0 = pair.sourcePolygon.front();
   const Vec3& r0 = pair.receiverPolygon.front();
-  for (const Polygon& occluder : pair.occluderPolygons) {
+  for (const Polygon& occluder : pair.blockers) {
     Polygon o = clipToHalfspace(occluder, s0, pair.sourceNormal);
     if (o.size() >= 3) o = clipToHalfspace(o, r0, pair.receiverNormal);
     if (o.size() < 3) continue;
@@ -168,7 +168,7 @@ void addEvent(const Vertex& v, const Edge& e, const Polygon& domain, const Vec3&
 
 std::vector<EventSegment> visibilityEvents(const PairGeometry& pair) {
   std::vector<EventSegment> events;
-  if (!pair.facing || pair.occluderPolygons.empty() || pair.integrationDomain.size() < 3) return events;
+  if (!pair.facing || pair.blockers.empty() || pair.integrationDomain.size() < 3) return events;
   const double eps = kGeometricEpsilon * pair.scale * 10;
   const Vec3& s0 = pair.sourcePolygon.front();
   const Vec3& ns = pair.sourceNormal;

@@ -66,6 +66,21 @@ TEST(FormFactorsCommand, ExactMethodHonoursTheTolerance) {
   EXPECT_NEAR(entryOfTwoByTwoCsv(dir + "/F.csv", 0, 1), kParallelSquares, 1e-10 * kParallelSquares);
 }
 
+// A work budget ends an exact run that would take long with a message naming it (exit status 1), on the
+// prism room whose occluded pairs take most of the work.
+TEST(FormFactorsCommand, TheExactMethodsBudgetEndsTheRunWithAMessageNamingIt) {
+  if (!methodAvailable("exact")) GTEST_SKIP() << "built without the exact reference";
+  std::string log;
+  EXPECT_EQ(runCommand(cliPath() + " formfactors " + sourcePath("scenes/prism-room.json") +
+                           " --method exact --ff-budget 100000 --quiet",
+                       &log),
+            1)
+      << log;
+  EXPECT_NE(log.find("the work budget of 100000 point evaluations (--ff-budget) ran out after"),
+            std::string::npos)
+      << log;
+}
+
 TEST(FormFactorsCommand, ToleranceOutOfRangeIsRejectedByName) {
   std::string log;
   EXPECT_NE(runCommand(cliPath() + " formfactors " + sourcePath("scenes/parallel-squares.json") +

@@ -153,9 +153,7 @@ TEST_P(FormFactorContract, ItsKnobConvergesOnTheReferenceCase) {
 
 INSTANTIATE_TEST_SUITE_P(Registered, FormFactorContract, ::testing::ValuesIn(formFactorMethodNames()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = info.param;
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
+                           return test::testNameOf(info.param);
                          });
 
 }  // namespace

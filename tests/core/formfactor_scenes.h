@@ -2,6 +2,7 @@
 // inside (occlusion), two facing squares.
 #pragma once
 
+#include <algorithm>
 #include <string>
 
 #include "core/formfactor/formfactor_method.h"
@@ -86,6 +87,12 @@ inline FormFactorMatrix runMethod(const std::string& method, const Mesh& mesh, F
   FormFactorMatrix F = makeFormFactorMethod(method)->compute(mesh, options, noProgress(), stats);
   if (statsOut) *statsOut = stats;
   return F;
+}
+
+// A method's name as a test parameter's name, which takes letters, digits and underscores only.
+inline std::string testNameOf(std::string method) {
+  std::replace(method.begin(), method.end(), '-', '_');
+  return method;
 }
 
 }  // namespace rt::test

@@ -77,6 +77,37 @@ TEST(ExactMethod, CancelThrows) {
   EXPECT_THROW(exactFormFactors(mesh, exactOptionsFor(1e-4), progress), Cancelled);
 }
 
+// A budget of point evaluations ends the run with a message that names it, instead of hours of work.
+TEST(ExactMethod, WorkBudgetEndsTheRunWithAMessageNamingIt) {
+  registerExactMethod();
+  const Mesh mesh = roomWithClosedBoxes();
+  FormFactorOptions options;
+  options.tolerance = 1e-6;
+  options.workBudget = 2000;
+  FormFactorStats stats;
+  try {
+    makeFormFactorMethod("exact")->compute(mesh, options, noProgress(), stats);
+    FAIL() << "the budget did not stop the run";
+  } catch (const WorkBudgetExceeded& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("work budget of 2000 point evaluations (--ff-budget) ran out"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("element pairs"), std::string::npos) << message;
+  }
+}
+
+// Progress follows the point evaluations, within rows too: it never goes back and ends at 1.
+TEST(ExactMethod, ProgressMovesWithTheWorkAndEndsAtOne) {
+  const Mesh mesh = roomWithClosedBoxes();
+  std::vector<double> fractions;
+  CallbackProgress progress([&](double f, const std::string&) { fractions.push_back(f); });
+  exactFormFactors(mesh, exactOptionsFor(1e-6), progress, nullptr, 1);
+  ASSERT_GE(fractions.size(), mesh.size());
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_EQ(fractions.back(), 1.0);
+  EXPECT_GT(fractions[fractions.size() / 2], 0.0);
+}
+
 TEST(ExactMethod, CubaturePointsReproduceTheEntry) {
   const Mesh mesh = roomWithClosedBoxes();
   // Floor (patch 0 faces +x ... find the floor: normal +y) to ceiling, occluded by both boxes.

@@ -25,6 +25,9 @@ struct FormFactorOptions {
   // method says it costs.
   double tolerance = 0;
   int threads = 0;  // 0 = all cores
+  // exact: the most point evaluations the whole matrix may take; past it the run stops with a message that
+  // names this budget (WorkBudgetExceeded). 0: no limit.
+  long workBudget = 0;
 };
 
 // What a run did and skipped; printed as one line by the CLI.

@@ -15,8 +15,8 @@
 // between 1 and 1024. A pair with a 10 % form factor gets ten times the rays of one with 1 %, and the many
 // far pairs one ray each.
 //
-// On the Cornell box at 4k elements this reaches 1 % relative RMS error against the exact method in about
-// 1.5 s on two cores (docs/benchmarks.md); the hemicube's centroid rule stays near 19 % at any resolution.
+// Its error falls with the rays, where the hemicube's centroid rule keeps a bias that no resolution removes
+// (docs/benchmarks.md has the figures).
 #include <algorithm>
 #include <cmath>
 #include <memory>

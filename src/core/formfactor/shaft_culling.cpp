@@ -48,7 +48,7 @@ std::vector<Vec3> convexOutline(std::vector<Vec3> points, const Vec3& normal) {
   // The elements' vertices along a patch's edge are on it only to rounding: some stick out by 1e-17 and are
   // corners of the exact hull. Dropped, round the closed outline, where a corner lies between its neighbours
   // on their line to rounding: an outline that kept some would not share its edges with the next face's (a
-  // block of finely meshed faces was then no closed solid).
+  // block of finely meshed faces would be no closed solid).
   Eigen::AlignedBox2d extent;
   for (const auto& [p, index] : flat) extent.extend(p);
   const double straight = 1e-12 * extent.diagonal().squaredNorm();

@@ -266,13 +266,11 @@ void HiddenIntegral::push(std::vector<Item>& heap, Item item, double estimate, b
     item.value += child.value;
   }
   item.error = std::abs(item.value - estimate);
-  // A 2 x 2 rule and its children's can agree by chance where a shadow's edge crosses the panel (measured:
-  // 1 % of a hidden part past a block's corner). A top panel whose hidden part is more than a tenth of the
+  // A 2 x 2 rule and its children's can agree by chance where a shadow's edge crosses the panel, to about
+  // 1 % of the hidden part past a block's corner. A top panel whose hidden part is more than a tenth of the
   // tolerance at 1 % is therefore never trusted on one comparison: it is split at least once; so is a child
-  // whose hidden part is still a hundred times that (at tight tolerances: the 612-wall room's pair of a
-  // back-wall element just above the short block and a front-wall element was 4.6e-6 off at 1e-7 on 74
-  // points, 1.3e-6 with this; the same points as before at 1e-5, 7 % more at 1e-7). (A 3 x 3 rule against the
-  // children's instead is fooled as well: errors of 1.5e-4 at a tolerance of 1e-6 on the grid room.)
+  // whose hidden part is still a hundred times that, which matters at tight tolerances only. (A 3 x 3 rule
+  // against the children's is fooled the same way: a higher order does not replace the forced split.)
   double trusted = kTrustedShare * tolerance_;
   for (int d = 0; d < item.depth && d < 2; ++d) trusted *= 100;
   const bool forced = mixed && item.depth <= 1 && item.value > trusted;
