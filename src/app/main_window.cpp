@@ -72,6 +72,7 @@ MainWindow::MainWindow(const AppOptions& options, std::unique_ptr<LessonLibrary>
   else
     normalTextFont_.setPixelSize(normalTextFont_.pixelSize());
   resize(options.size);
+  fitToWidth();
 }
 
 MainWindow::~MainWindow() {
@@ -119,6 +120,7 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
 void MainWindow::buildUi() {
   // Centre: the step's text | (views, player, chart and matrix).
   auto* centre = new QSplitter(Qt::Horizontal, this);
+  centre_ = centre;
   auto* textPane = new QWidget(centre);
   auto* textLayout = new QVBoxLayout(textPane);
   textLayout->setContentsMargins(4, 4, 4, 4);
@@ -201,7 +203,6 @@ void MainWindow::buildUi() {
   centre->setStretchFactor(1, 5);
   centre->setStretchFactor(2, 5);
   centre->setCollapsible(2, false);
-  centre->setSizes({380, 900, 900});  // the views or the answer fields: one of the two is shown
   setCentralWidget(centre);
 
   // The shared camera of compare mode: whichever view the reader moves, the other follows.
@@ -334,46 +335,6 @@ void MainWindow::setCompareChoice(const CompareChoice& choice) {
     choose(compareMesh_, choice.mesh);
   }
   if (compare_ && mode_ != Mode::None) requestComputation();
-}
-
-void MainWindow::setPresenterMode(bool on) {
-  if (presenter_ == on) return;
-  presenter_ = on;
-  {
-    const QSignalBlocker block(presenterAction_);
-    presenterAction_->setChecked(on);
-  }
-  if (on) {
-    normalLook_ = currentLook();
-    applyPresenterLook(normalLook_);
-    menuBar()->hide();
-    statusBar()->hide();
-    contentsDock_->hide();
-    parametersDock_->hide();
-    showFullScreen();
-  } else {
-    applyLook(normalLook_);
-    menuBar()->show();
-    statusBar()->show();
-    contentsDock_->show();
-    parametersDock_->show();
-    showNormal();
-  }
-  textZoom_ = 1.0;
-  zoomText(0);
-  chart_->setLargeFonts(on);
-  // The main figure fills the screen in presenter mode when the step has one; the 3D view otherwise.
-  if (!on) setLargeFigure(false);
-}
-
-void MainWindow::showStale(bool on) {
-  if (!on || !result_ || viewsPane_->isHidden()) {
-    staleCover_->hide();
-    return;
-  }
-  staleCover_->setGeometry(QRect(viewsPane_->mapTo(this, QPoint(0, 0)), viewsPane_->size()));
-  staleCover_->raise();
-  staleCover_->show();
 }
 
 void MainWindow::showError(const QString& coreMessage) {
