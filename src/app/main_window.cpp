@@ -59,6 +59,11 @@ MainWindow::MainWindow(const AppOptions& options, std::unique_ptr<LessonLibrary>
     statusLabel_->setText(tr("Cancelled: the previous result is still shown."));
   });
   connect(runner_, &ComputationRunner::busyChanged, this, &MainWindow::setBusy);
+  prefetch_ = new ComputationRunner(this);
+  connect(prefetch_, &ComputationRunner::finished, this, &MainWindow::keepPrefetched);
+  // Overtaken by what the reader asked for, or by another step: the step now next is computed ahead in its
+  // turn (nothing is done when it is in memory already).
+  connect(prefetch_, &ComputationRunner::cancelled, this, &MainWindow::prefetchNextStep);
   connect(runner_, &ComputationRunner::progress, this,
           [this](double fraction, const QString& stage) { progress_->setProgress(fraction, stage); });
   history_ = new ParameterHistory([this](const lesson::StepParameters& p) { restoreParameters(p); }, this);
@@ -79,6 +84,8 @@ MainWindow::~MainWindow() {
   // The workers may be inside the lesson library: stop them before the library goes.
   delete figureExport_;
   figureExport_ = nullptr;
+  delete prefetch_;
+  prefetch_ = nullptr;
   delete runner_;
   runner_ = nullptr;
   if (presenter_) applyLook(normalLook_);
@@ -203,6 +210,7 @@ void MainWindow::buildUi() {
   centre->setStretchFactor(1, 5);
   centre->setStretchFactor(2, 5);
   centre->setCollapsible(2, false);
+  centre->setSizes({380, 900, 900});  // the views or the answer fields: one of the two is shown
   setCentralWidget(centre);
 
   // The shared camera of compare mode: whichever view the reader moves, the other follows.

@@ -72,6 +72,10 @@ class MainWindow : public QMainWindow {
   void cancelComputation();
   // Blocks (processing events) until no computation runs; false on timeout.
   bool waitUntilIdle(int timeoutMs = 120000);
+  // Whether the next step is being computed ahead while the reader reads this one (prefetchNextStep), and
+  // blocking until it is done, as a reader who reads the step before turning the page.
+  bool prefetching() const;
+  bool waitUntilPrefetched(int timeoutMs = 120000);
   // Computations run on the calling thread (screenshots, deterministic tests).
   void setBlockingComputations(bool blocking) { blocking_ = blocking; }
 
@@ -183,6 +187,13 @@ class MainWindow : public QMainWindow {
   bool showKeptResult();
   // The current lesson step, the reader's values of its controls and the compare pane's choice, as one key.
   QString recentKey() const;
+  QString recentKey(int lessonIndex, int step, const lesson::StepParameters& parameters) const;
+  // While the reader reads a step, the next one is computed on the worker side and its figures drawn, so
+  // that Page Down shows it from memory (recent_, the figures pane's drawn figures). Not for exercises and
+  // text (instant anyway), benchmarks and steps that took long last time (the reader starts those), compare
+  // mode, or blocking computations.
+  void prefetchNextStep();
+  void keepPrefetched(std::shared_ptr<const PipelineResult> result);
   // Covers the views while a new step computes, so that the previous step's pictures look out of date.
   void showStale(bool on);
   // Lays the window out for its width: below a projector's width the contents list folds away and the text
@@ -207,6 +218,13 @@ class MainWindow : public QMainWindow {
   AppOptions options_;
   std::unique_ptr<LessonLibrary> library_;
   ComputationRunner* runner_ = nullptr;
+  ComputationRunner* prefetch_ = nullptr;  // the next step, computed ahead (prefetchNextStep)
+  // What prefetch_ computes: the step, under its recent key, and the step the reader was on then.
+  struct Prefetched {
+    QString key;
+    int lesson = -1, step = -1, afterLesson = -1, afterStep = -1;
+  };
+  Prefetched prefetched_;
   bool blocking_ = false;
   Mode mode_ = Mode::None;
   int lesson_ = -1;

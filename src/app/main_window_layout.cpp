@@ -20,8 +20,8 @@ namespace {
 // Below this width the contents list and the parameters together would leave the text a column of a few
 // words a line (about 150 px at 1024 px): the list folds away (View > Contents brings it back).
 constexpr int kNarrowWindow = 1280;
-// The text's share of the centre in a narrow window, and at ordinary widths, in per cent (the views, or an
-// exercise's answer fields, get the rest).
+// The text's share of the centre in a narrow window, and at ordinary widths (as the window is built), in per
+// cent (the views, or an exercise's answer fields, get the rest).
 constexpr int kNarrowTextPercent = 45, kTextPercent = 30;
 
 }  // namespace
@@ -67,22 +67,26 @@ void MainWindow::resizeEvent(QResizeEvent* event) {
 void MainWindow::fitToWidth() {
   const WidthFit fit = width() < kNarrowWindow ? WidthFit::Narrow : WidthFit::Wide;
   // Only on crossing the width: between two crossings the reader's own arrangement (the list shown again
-  // from the View menu, a splitter moved) stays as the reader left it.
+  // from the View menu, a splitter moved) stays as the reader left it. A window that opens wide keeps the
+  // proportions it was built with.
   if (presenter_ || !centre_ || fit == widthFit_) return;
+  const bool opening = widthFit_ == WidthFit::Unknown;
   widthFit_ = fit;
-  // The list's room goes to the centre, not to the parameters beside it.
-  const int parametersWidth = parametersDock_->width();
-  if (fit == WidthFit::Narrow) {
-    contentsFolded_ = contentsFolded_ || !contentsDock_->isHidden();
-    contentsDock_->hide();
-  } else {
+  if (fit == WidthFit::Wide) {
     if (contentsFolded_) contentsDock_->show();
     contentsFolded_ = false;
+    if (opening) return;
+  } else {
+    contentsFolded_ = contentsFolded_ || !contentsDock_->isHidden();
+    contentsDock_->hide();
   }
+  // The list's room goes to the centre, not to the parameters beside it.
+  const int parametersWidth = parametersDock_->width();
   // Shared out once the window has laid out the docks anew (the centre's width changes with the list's).
   QTimer::singleShot(0, this, [this, fit, parametersWidth] {
     if (fit != widthFit_) return;
-    if (!parametersDock_->isHidden()) resizeDocks({parametersDock_}, {parametersWidth}, Qt::Horizontal);
+    if (fit == WidthFit::Narrow && !parametersDock_->isHidden())
+      resizeDocks({parametersDock_}, {parametersWidth}, Qt::Horizontal);
     layout()->activate();  // the centre at its new width: the shares below are of that width
     const int room = std::max(0, centre_->width() - centre_->handleWidth());
     const int text = room * (fit == WidthFit::Narrow ? kNarrowTextPercent : kTextPercent) / 100;
