@@ -94,4 +94,14 @@ AppOptions parseAppOptions(const QStringList& arguments, QString* error) {
   return options;
 }
 
+bool asksForHelpOrVersion(int argc, const char* const* argv) {
+  for (int k = 1; k < argc; ++k) {
+    const QString argument = QString::fromLocal8Bit(argv[k]);
+    if (argument == "--") break;
+    for (const char* option : {"-h", "--help", "-?", "--help-all", "-v", "--version"})
+      if (argument == QLatin1String(option)) return true;
+  }
+  return false;
+}
+
 }  // namespace rt::app

@@ -22,7 +22,12 @@ struct AppOptions {
   QString compareSolver, compareMethod, compareMesh;
 };
 
-// Returns the options, or an error message in `error` (then the result is meaningless).
+// Returns the options, or an error message in `error` (then the result is meaningless). --help and --version
+// print and exit.
 AppOptions parseAppOptions(const QStringList& arguments, QString* error);
+
+// Whether the command line asks for --help (-h, -?) or --version (-v): answered before any window system is
+// touched, so that they work without a display.
+bool asksForHelpOrVersion(int argc, const char* const* argv);
 
 }  // namespace rt::app

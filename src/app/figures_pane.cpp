@@ -32,9 +32,21 @@ void FiguresPane::clear() {
   count_ = 0;
 }
 
+namespace {
+
+// As many steps' figures as the window keeps results of (RecentResults): a revisit finds both.
+constexpr std::size_t kDrawnKept = 16;
+
+}  // namespace
+
 bool FiguresPane::addFigure(const QString& path, const QString& text) {
   QPixmap pixmap(path);
   if (pixmap.isNull()) return false;  // vector-only formats are not shown here
+  addFigure(pixmap, path, text);
+  return true;
+}
+
+void FiguresPane::addFigure(const QPixmap& pixmap, const QString& path, const QString& text) {
   auto* caption = new QLabel(text, content_);
   caption->setWordWrap(true);
   auto* image = new QLabel(content_);
@@ -45,7 +57,6 @@ bool FiguresPane::addFigure(const QString& path, const QString& text) {
   layout_->insertWidget(layout_->count() - 1, caption);
   layout_->insertWidget(layout_->count() - 1, image);
   ++count_;
-  return true;
 }
 
 int FiguresPane::showImages(const QStringList& files, const QStringList& captions) {
@@ -56,15 +67,15 @@ int FiguresPane::showImages(const QStringList& files, const QStringList& caption
   return count_;
 }
 
-int FiguresPane::showStep(const lesson::Lesson& lesson, const lesson::Step& step,
-                          const lesson::StepResult& result) {
-  clear();
+FiguresPane::Drawn FiguresPane::draw(const lesson::Lesson& lesson, const lesson::Step& step,
+                                     const lesson::StepResult& result) {
+  Drawn drawn;
   lesson::Step others = step;
   others.views.clear();
   for (lesson::View v : step.views)
     // The walkthrough is flown in the 3D view (CameraPathPlayer), not drawn as frames here.
     if (v != lesson::View::Scene && v != lesson::View::Walkthrough) others.views.push_back(v);
-  if (others.views.empty() || !folder_.isValid()) return 0;
+  if (others.views.empty() || !folder_.isValid()) return drawn;
   // A fresh folder per call: the files of the previous step may still be on screen while these are written.
   const QString dir = folder_.filePath(QString::number(++serial_));
   viz::StepFigureSettings settings;
@@ -72,11 +83,54 @@ int FiguresPane::showStep(const lesson::Lesson& lesson, const lesson::Step& step
   settings.height = 680;
   const auto figures = viz::renderStepFigures(lesson, others, result, dir.toStdString(), settings);
   const auto files = others.figureFiles();
-  for (std::size_t k = 0; k < files.size(); ++k)
-    addFigure(QDir(dir).filePath(QString::fromStdString(files[k])),
-              k < figures.size() ? QString::fromStdString(figures[k].caption) : QString());
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    const QString path = QDir(dir).filePath(QString::fromStdString(files[k]));
+    QPixmap image(path);
+    if (image.isNull()) continue;  // vector-only formats are not shown here
+    drawn.images.push_back(image);
+    drawn.files << path;
+    drawn.captions << (k < figures.size() ? QString::fromStdString(figures[k].caption) : QString());
+  }
+  return drawn;
+}
+
+void FiguresPane::remember(Drawn drawn) {
+  if (drawn.key.isEmpty()) return;
+  drawn_.remove_if([&](const Drawn& d) { return d.key == drawn.key; });
+  drawn_.push_front(std::move(drawn));
+  if (drawn_.size() > kDrawnKept) drawn_.pop_back();
+}
+
+int FiguresPane::showStep(const lesson::Lesson& lesson, const lesson::Step& step,
+                          const lesson::StepResult& result, const QString& key) {
+  clear();
+  const auto kept = key.isEmpty() ? drawn_.end()
+                                  : std::find_if(drawn_.begin(), drawn_.end(),
+                                                 [&](const Drawn& d) { return d.key == key; });
+  if (kept != drawn_.end()) {
+    drawn_.splice(drawn_.begin(), drawn_, kept);
+  } else {
+    Drawn drawn = draw(lesson, step, result);
+    drawn.key = key;
+    drawn_.push_front(std::move(drawn));
+  }
+  const Drawn& d = drawn_.front();
+  for (std::size_t k = 0; k < d.images.size(); ++k) addFigure(d.images[k], d.files[k], d.captions[k]);
   fitFigures();
+  // Figures drawn without a key are not kept.
+  if (key.isEmpty()) drawn_.pop_front();
+  while (drawn_.size() > kDrawnKept) drawn_.pop_back();
   return count_;
+}
+
+void FiguresPane::prepare(const lesson::Lesson& lesson, const lesson::Step& step,
+                          const lesson::StepResult& result, const QString& key) {
+  if (key.isEmpty() ||
+      std::any_of(drawn_.begin(), drawn_.end(), [&](const Drawn& d) { return d.key == key; }))
+    return;
+  Drawn drawn = draw(lesson, step, result);
+  drawn.key = key;
+  remember(std::move(drawn));
 }
 
 void FiguresPane::resizeEvent(QResizeEvent* event) {

@@ -7,6 +7,7 @@
 #include <QString>
 #include <QStringList>
 #include <QTemporaryDir>
+#include <list>
 #include <vector>
 
 #include "lesson/lesson.h"
@@ -22,8 +23,15 @@ class FiguresPane : public QScrollArea {
  public:
   explicit FiguresPane(QWidget* parent = nullptr);
   // Draws every view of the step except the live 3D scene view. Returns how many figures are shown; throws
-  // std::runtime_error when drawing fails.
-  int showStep(const lesson::Lesson& lesson, const lesson::Step& step, const lesson::StepResult& result);
+  // std::runtime_error when drawing fails. `key`, when given, names the step with its settings (as the
+  // window's recent results do): the figures of the last few keys are kept in memory and shown again at once
+  // when their key comes back, instead of being drawn again.
+  int showStep(const lesson::Lesson& lesson, const lesson::Step& step, const lesson::StepResult& result,
+               const QString& key = QString());
+  // Draws the figures showStep would draw for `key` into memory without showing them (a step computed
+  // ahead): showStep with that key then shows them at once.
+  void prepare(const lesson::Lesson& lesson, const lesson::Step& step, const lesson::StepResult& result,
+               const QString& key);
   // Shows figure images kept from an earlier run (a restored session's long step), under their captions.
   int showImages(const QStringList& files, const QStringList& captions);
   void clear();
@@ -45,6 +53,11 @@ class FiguresPane : public QScrollArea {
  private:
   void fitFigures();
   bool addFigure(const QString& path, const QString& caption);
+  // Draws the step's figures other than the 3D view into a new folder: files, captions and images.
+  struct Drawn;
+  Drawn draw(const lesson::Lesson& lesson, const lesson::Step& step, const lesson::StepResult& result);
+  void remember(Drawn drawn);
+  void addFigure(const QPixmap& pixmap, const QString& path, const QString& caption);
   struct Figure {
     QLabel* caption;
     QLabel* label;
@@ -52,6 +65,13 @@ class FiguresPane : public QScrollArea {
   };
   std::vector<Figure> figures_;
   QStringList files_, captions_;
+  // The figures drawn under the last keys given to showStep, the most recent first.
+  struct Drawn {
+    QString key;
+    std::vector<QPixmap> images;
+    QStringList files, captions;
+  };
+  std::list<Drawn> drawn_;
   QTemporaryDir folder_;
   QWidget* content_ = nullptr;
   QVBoxLayout* layout_ = nullptr;

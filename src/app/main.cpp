@@ -12,7 +12,26 @@
 #include "core/vector_state.h"
 #include "typeset/web_engine.h"
 
+namespace {
+
+void nameTheApplication() {
+  QCoreApplication::setOrganizationName("RadiosityTextbook");
+  QCoreApplication::setApplicationName("radiosity-textbook");
+  QCoreApplication::setApplicationVersion("0.1.0");
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  if (rt::app::asksForHelpOrVersion(argc, argv)) {
+    // Answered without a window system (a terminal with no display, a script): QApplication would need one.
+    QCoreApplication core(argc, argv);
+    nameTheApplication();
+    QString error;
+    rt::app::parseAppOptions(QCoreApplication::arguments(), &error);  // prints and exits
+    std::fprintf(stderr, "radiosity-textbook: %s\n", qPrintable(error));
+    return 2;
+  }
   // Before any thread exists: the threads made later start from this state (core/vector_state.h).
   rt::clearUpperVectorState();
   // VTK needs its GL context profile decided before any Qt GL object exists.
@@ -20,9 +39,7 @@ int main(int argc, char** argv) {
   // The text pane is a web view (typeset maths): WebEngine's settings come before the application object too.
   rt::typeset::prepareWebEngine();
   QApplication app(argc, argv);
-  QApplication::setOrganizationName("RadiosityTextbook");
-  QApplication::setApplicationName("radiosity-textbook");
-  QApplication::setApplicationVersion("0.1.0");
+  nameTheApplication();
 
   QString error;
   const rt::app::AppOptions options = rt::app::parseAppOptions(QApplication::arguments(), &error);

@@ -59,6 +59,11 @@ MainWindow::MainWindow(const AppOptions& options, std::unique_ptr<LessonLibrary>
     statusLabel_->setText(tr("Cancelled: the previous result is still shown."));
   });
   connect(runner_, &ComputationRunner::busyChanged, this, &MainWindow::setBusy);
+  prefetch_ = new ComputationRunner(this);
+  connect(prefetch_, &ComputationRunner::finished, this, &MainWindow::keepPrefetched);
+  // Overtaken by what the reader asked for, or by another step: the step now next is computed ahead in its
+  // turn (nothing is done when it is in memory already).
+  connect(prefetch_, &ComputationRunner::cancelled, this, &MainWindow::prefetchNextStep);
   connect(runner_, &ComputationRunner::progress, this,
           [this](double fraction, const QString& stage) { progress_->setProgress(fraction, stage); });
   history_ = new ParameterHistory([this](const lesson::StepParameters& p) { restoreParameters(p); }, this);
@@ -72,12 +77,15 @@ MainWindow::MainWindow(const AppOptions& options, std::unique_ptr<LessonLibrary>
   else
     normalTextFont_.setPixelSize(normalTextFont_.pixelSize());
   resize(options.size);
+  fitToWidth();
 }
 
 MainWindow::~MainWindow() {
   // The workers may be inside the lesson library: stop them before the library goes.
   delete figureExport_;
   figureExport_ = nullptr;
+  delete prefetch_;
+  prefetch_ = nullptr;
   delete runner_;
   runner_ = nullptr;
   if (presenter_) applyLook(normalLook_);
@@ -119,6 +127,7 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event) {
 void MainWindow::buildUi() {
   // Centre: the step's text | (views, player, chart and matrix).
   auto* centre = new QSplitter(Qt::Horizontal, this);
+  centre_ = centre;
   auto* textPane = new QWidget(centre);
   auto* textLayout = new QVBoxLayout(textPane);
   textLayout->setContentsMargins(4, 4, 4, 4);
@@ -334,46 +343,6 @@ void MainWindow::setCompareChoice(const CompareChoice& choice) {
     choose(compareMesh_, choice.mesh);
   }
   if (compare_ && mode_ != Mode::None) requestComputation();
-}
-
-void MainWindow::setPresenterMode(bool on) {
-  if (presenter_ == on) return;
-  presenter_ = on;
-  {
-    const QSignalBlocker block(presenterAction_);
-    presenterAction_->setChecked(on);
-  }
-  if (on) {
-    normalLook_ = currentLook();
-    applyPresenterLook(normalLook_);
-    menuBar()->hide();
-    statusBar()->hide();
-    contentsDock_->hide();
-    parametersDock_->hide();
-    showFullScreen();
-  } else {
-    applyLook(normalLook_);
-    menuBar()->show();
-    statusBar()->show();
-    contentsDock_->show();
-    parametersDock_->show();
-    showNormal();
-  }
-  textZoom_ = 1.0;
-  zoomText(0);
-  chart_->setLargeFonts(on);
-  // The main figure fills the screen in presenter mode when the step has one; the 3D view otherwise.
-  if (!on) setLargeFigure(false);
-}
-
-void MainWindow::showStale(bool on) {
-  if (!on || !result_ || viewsPane_->isHidden()) {
-    staleCover_->hide();
-    return;
-  }
-  staleCover_->setGeometry(QRect(viewsPane_->mapTo(this, QPoint(0, 0)), viewsPane_->size()));
-  staleCover_->raise();
-  staleCover_->show();
 }
 
 void MainWindow::showError(const QString& coreMessage) {

@@ -72,6 +72,10 @@ class MainWindow : public QMainWindow {
   void cancelComputation();
   // Blocks (processing events) until no computation runs; false on timeout.
   bool waitUntilIdle(int timeoutMs = 120000);
+  // Whether the next step is being computed ahead while the reader reads this one (prefetchNextStep), and
+  // blocking until it is done, as a reader who reads the step before turning the page.
+  bool prefetching() const;
+  bool waitUntilPrefetched(int timeoutMs = 120000);
   // Computations run on the calling thread (screenshots, deterministic tests).
   void setBlockingComputations(bool blocking) { blocking_ = blocking; }
 
@@ -87,8 +91,11 @@ class MainWindow : public QMainWindow {
   bool showingKeptResult() const { return showingKept_; }
 
   // Exports (errors go to lastError() and a message box when visible; false then).
-  // `size` empty: the view's size on screen.
+  // `size` empty: viewExportSize(). In compare mode both panes make one figure of that size, side by side.
   bool exportView(const QString& path, QSize size = QSize());
+  // The size File > Export view proposes: the view's on screen (both panes in compare mode), at least
+  // 640 x 480 (1280 x 480 for two panes).
+  QSize viewExportSize() const;
   bool exportMatrixFile(const QString& which, const QString& path);  // which: F, K or B
   // Computes every step on the worker side and draws its figures, with progress and cancel; returns at once
   // (true: started) unless computations are blocking, in which case it returns when the figures are written.
@@ -151,6 +158,7 @@ class MainWindow : public QMainWindow {
   // The step's text gives the window's keys back: Left, Right, Page Up/Down and Space step and play even
   // after the reader clicked into the text (whose invisible caret would otherwise take them).
   bool eventFilter(QObject* watched, QEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
   enum class Mode { None, Lesson, Scene };
@@ -179,8 +187,18 @@ class MainWindow : public QMainWindow {
   bool showKeptResult();
   // The current lesson step, the reader's values of its controls and the compare pane's choice, as one key.
   QString recentKey() const;
+  QString recentKey(int lessonIndex, int step, const lesson::StepParameters& parameters) const;
+  // While the reader reads a step, the next one is computed on the worker side and its figures drawn, so
+  // that Page Down shows it from memory (recent_, the figures pane's drawn figures). Not for exercises and
+  // text (instant anyway), benchmarks and steps that took long last time (the reader starts those), compare
+  // mode, or blocking computations.
+  void prefetchNextStep();
+  void keepPrefetched(std::shared_ptr<const PipelineResult> result);
   // Covers the views while a new step computes, so that the previous step's pictures look out of date.
   void showStale(bool on);
+  // Lays the window out for its width: below a projector's width the contents list folds away and the text
+  // gets a readable share of the centre; back above it, both return.
+  void fitToWidth();
   void requestComputation();
   void showResult(std::shared_ptr<const PipelineResult> result);
   void showIteration(int index);
@@ -193,11 +211,20 @@ class MainWindow : public QMainWindow {
   void updateNavigation();
   void rememberPosition();
   void applyStepDisplay(const lesson::Step* step);  // from parameters_
-  QString exportFileDialog(const QString& title, const QString& filters, const QString& suggested);
+  // With `size`, the dialog also asks for the picture's width and height in pixels, starting from *size.
+  QString exportFileDialog(const QString& title, const QString& filters, const QString& suggested,
+                           QSize* size = nullptr);
 
   AppOptions options_;
   std::unique_ptr<LessonLibrary> library_;
   ComputationRunner* runner_ = nullptr;
+  ComputationRunner* prefetch_ = nullptr;  // the next step, computed ahead (prefetchNextStep)
+  // What prefetch_ computes: the step, under its recent key, and the step the reader was on then.
+  struct Prefetched {
+    QString key;
+    int lesson = -1, step = -1, afterLesson = -1, afterStep = -1;
+  };
+  Prefetched prefetched_;
   bool blocking_ = false;
   Mode mode_ = Mode::None;
   int lesson_ = -1;
@@ -221,6 +248,12 @@ class MainWindow : public QMainWindow {
   QStringList lastExported_;
   bool compare_ = false;
   bool presenter_ = false;
+  // Whether the window is laid out as narrower than the contents list, the parameters and a readable text
+  // need (fitToWidth; unknown until the first fit), and whether the list was folded away for it (to come back
+  // when the window is wide again).
+  enum class WidthFit { Unknown, Wide, Narrow };
+  WidthFit widthFit_ = WidthFit::Unknown;
+  bool contentsFolded_ = false;
   AppLook normalLook_;
 
   ContentsTree* contents_ = nullptr;
@@ -233,6 +266,7 @@ class MainWindow : public QMainWindow {
   SceneView* primaryView_ = nullptr;
   SceneView* secondaryView_ = nullptr;
   QSplitter* viewSplitter_ = nullptr;
+  QSplitter* centre_ = nullptr;  // the text | the views | an exercise's answer fields
   QWidget* viewsPane_ = nullptr;
   QLabel* staleCover_ = nullptr;  // over viewsPane_ while a new step computes (showStale)  // views, player
                                   // and tabs: hidden for a step of text only

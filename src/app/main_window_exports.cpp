@@ -1,8 +1,8 @@
 // MainWindow: exports (the view, matrices, every figure of a lesson) and the progress strip they share with
 // the computations.
+#include <vtkRenderWindow.h>
 #include <QApplication>
 #include <QBuffer>
-#include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
@@ -22,6 +22,8 @@
 #include "app/scene_view.h"
 #include "app/wording.h"
 #include "lesson/step_result.h"
+#include "viz/vtk_render.h"
+#include "viz/vtk_views.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -30,15 +32,21 @@ namespace rt::app {
 
 namespace {
 
-// One pane as the exported figure draws it, at `size`.
-QImage paneImage(const SceneView& view, const Mesh& mesh, QSize size, const QString& scratch) {
+// One pane as the exported figure draws it, at `size`: the same offscreen window and scene view that
+// exportSceneFigure writes, read back into memory.
+QImage paneImage(const SceneView& view, const Mesh& mesh, QSize size) {
   viz::SceneViewOptions options = view.viewOptions();
   options.image.width = size.width();
   options.image.height = size.height();
-  exportSceneFigure(mesh, view.currentCamera(), view.viewData(), options, scratch.toStdString());
-  QImage image(scratch);
-  QFile::remove(scratch);
-  if (image.isNull()) throw std::runtime_error(scratch.toStdString() + ": the pane was not drawn");
+  auto window = viz::makeOffscreenWindow(options.image.width, options.image.height);
+  viz::addSceneView(window, mesh, view.currentCamera(), view.viewData(), options);
+  int width = 0, height = 0;
+  const std::vector<unsigned char> rgb = viz::captureRgb(window, width, height);
+  QImage image(width, height, QImage::Format_RGB888);
+  // The window's rows come bottom first.
+  const auto row = static_cast<std::size_t>(width) * 3;
+  for (int y = 0; y < height; ++y)
+    std::copy_n(rgb.data() + static_cast<std::size_t>(height - 1 - y) * row, row, image.scanLine(y));
   return image;
 }
 
@@ -80,6 +88,13 @@ void writeSideBySide(const QImage& left, const QImage& right, const QString& pat
 
 }  // namespace
 
+QSize MainWindow::viewExportSize() const {
+  if (compare_ && secondaryView_ && secondaryView_->isVisible())
+    return {std::max(primaryView_->width() + secondaryView_->width(), 1280),
+            std::max(primaryView_->height(), 480)};
+  return {std::max(primaryView_->width(), 640), std::max(primaryView_->height(), 480)};
+}
+
 bool MainWindow::exportView(const QString& path, QSize size) {
   if (!result_ || !result_->mesh) {
     showError(tr("There is no view to export yet."));
@@ -88,23 +103,18 @@ bool MainWindow::exportView(const QString& path, QSize size) {
   try {
     const bool bothPanes = compare_ && secondaryView_ && secondaryView_->isVisible() && result_->compared &&
                            result_->compared->mesh;
+    const QSize whole = size.isEmpty() ? viewExportSize() : size;
     if (bothPanes) {
-      // Compare mode: the two panes as one figure, each half of the size asked for (or of both panes' size).
-      const QSize whole = size.isEmpty()
-                              ? QSize(std::max(primaryView_->width() + secondaryView_->width(), 1280),
-                                      std::max(primaryView_->height(), 480))
-                              : size;
+      // Compare mode: the two panes as one figure, each half of the size.
       const QSize half(whole.width() / 2, whole.height());
-      const QString scratch =
-          QDir::temp().filePath(QString("rt-pane-%1.png").arg(QCoreApplication::applicationPid()));
-      writeSideBySide(paneImage(*primaryView_, *result_->mesh, half, scratch),
-                      paneImage(*secondaryView_, *result_->compared->mesh, half, scratch), path);
+      writeSideBySide(paneImage(*primaryView_, *result_->mesh, half),
+                      paneImage(*secondaryView_, *result_->compared->mesh, half), path);
       statusLabel_->setText(tr("Both panes written to %1").arg(path));
       return true;
     }
     viz::SceneViewOptions options = primaryView_->viewOptions();
-    options.image.width = size.isEmpty() ? std::max(primaryView_->width(), 640) : size.width();
-    options.image.height = size.isEmpty() ? std::max(primaryView_->height(), 480) : size.height();
+    options.image.width = whole.width();
+    options.image.height = whole.height();
     exportSceneFigure(*result_->mesh, primaryView_->currentCamera(), primaryView_->viewData(), options,
                       path.toStdString());
     statusLabel_->setText(tr("View written to %1").arg(path));

@@ -6,10 +6,14 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
+#include <QSpinBox>
 
 #include "app/camera_views.h"
 #include "app/contents_tree.h"
@@ -24,6 +28,8 @@ namespace rt::app {
 namespace {
 
 constexpr int kRecentFiles = 8;
+// The sides an exported view may have, in pixels.
+constexpr int kExportMin = 240, kExportMax = 8192;
 
 // An action whose shortcut also works while the menu bar is hidden (presenter mode): the window owns it too.
 QAction* add(QMainWindow* window, QMenu* menu, const QString& text, const QList<QKeySequence>& keys) {
@@ -48,7 +54,8 @@ QString MainWindow::suggestedFileName(const QString& what, const QString& extens
   return QString("%1-%2.%3").arg(stem, what, extension);
 }
 
-QString MainWindow::exportFileDialog(const QString& title, const QString& filters, const QString& suggested) {
+QString MainWindow::exportFileDialog(const QString& title, const QString& filters, const QString& suggested,
+                                     QSize* size) {
   QSettings settings;
   const QString folder = settings.value("export/folder", QDir::currentPath()).toString();
   QFileDialog dialog(this, title, folder, filters);
@@ -65,7 +72,38 @@ QString MainWindow::exportFileDialog(const QString& title, const QString& filter
     if (star >= 0) dialog.setDefaultSuffix(filter.mid(star + 2).remove(')').section(' ', 0, 0));
   });
   dialog.setDefaultSuffix(extension);
+  QSpinBox* width = nullptr;
+  QSpinBox* height = nullptr;
+  if (size) {
+    // A row under the file type: the picture's size in pixels (a slide, a poster, a page of the notes).
+    auto* grid = qobject_cast<QGridLayout*>(dialog.layout());
+    auto* row = new QWidget(&dialog);
+    auto* layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    width = new QSpinBox(row);
+    height = new QSpinBox(row);
+    for (QSpinBox* box : {width, height}) {
+      box->setRange(kExportMin, kExportMax);
+      box->setSuffix(tr(" px"));
+    }
+    width->setObjectName("exportWidth");
+    height->setObjectName("exportHeight");
+    width->setValue(size->width());
+    height->setValue(size->height());
+    layout->addWidget(width);
+    layout->addWidget(new QLabel(QStringLiteral("×"), row));
+    layout->addWidget(height);
+    layout->addStretch(1);
+    auto* label = new QLabel(tr("Picture size:"), &dialog);
+    label->setBuddy(width);
+    if (grid) {
+      const int at = grid->rowCount();
+      grid->addWidget(label, at, 0);
+      grid->addWidget(row, at, 1, 1, std::max(1, grid->columnCount() - 1));
+    }
+  }
   if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty()) return {};
+  if (size) *size = QSize(width->value(), height->value());
   const QString path = dialog.selectedFiles().front();
   settings.setValue("export/folder", QFileInfo(path).absolutePath());
   return path;
@@ -121,10 +159,11 @@ void MainWindow::buildMenus() {
   file->addSeparator();
   connect(add(this, file, tr("Export &view (PNG, SVG, PDF)..."), {QKeySequence(Qt::CTRL | Qt::Key_E)}),
           &QAction::triggered, this, [this] {
+            QSize size = viewExportSize();
             const QString path =
                 exportFileDialog(tr("Export view"), tr("PNG (*.png);;SVG (*.svg);;PDF (*.pdf)"),
-                                 suggestedFileName("view", "png"));
-            if (!path.isEmpty()) exportView(path);
+                                 suggestedFileName("view", "png"), &size);
+            if (!path.isEmpty()) exportView(path, size);
           });
   connect(add(this, file, tr("Export this step's &figures (SVG, PDF, PNG)..."),
               {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E)}),

@@ -172,8 +172,12 @@ bool MainWindow::showKeptResult() {
 }
 
 QString MainWindow::recentKey() const {
-  QString key = QString("%1/%2").arg(lesson_).arg(step_);
-  const QVariantMap values = parameterMap(parameters_);
+  return recentKey(lesson_, step_, parameters_);
+}
+
+QString MainWindow::recentKey(int lessonIndex, int step, const lesson::StepParameters& parameters) const {
+  QString key = QString("%1/%2").arg(lessonIndex).arg(step);
+  const QVariantMap values = parameterMap(parameters);
   for (auto it = values.begin(); it != values.end(); ++it)
     key += "/" + it.key() + "=" + it.value().toString();
   if (compare_) {

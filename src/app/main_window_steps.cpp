@@ -10,6 +10,7 @@
 #include <QSettings>
 #include <QTabWidget>
 #include <QThread>
+#include <QTimer>
 #include <algorithm>
 
 #include "app/builtin_scene.h"
@@ -233,6 +234,8 @@ void MainWindow::applyParameters(const lesson::StepParameters& parameters) {
 
 void MainWindow::requestComputation() {
   lastError_.clear();
+  // What the reader asks for now comes first: the step computed ahead stops at its next progress check.
+  if (prefetch_) prefetch_->cancel();
   computeStartedMs_ = QDateTime::currentMSecsSinceEpoch();
   const bool compare = compare_;
   const CompareChoice choice = compare ? compareChoice() : CompareChoice{};
@@ -412,7 +415,8 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
       // The figures are drawn with the reader's parameters (a matrix kind, a display key), as the step ran.
       lesson::Step shown = *step;
       shown.parameters = parameters_;
-      if (figures_->showStep(lesson, shown, *stepResult) > 0 && newStep) tabs_->setCurrentWidget(figures_);
+      if (figures_->showStep(lesson, shown, *stepResult, pendingKey_) > 0 && newStep)
+        tabs_->setCurrentWidget(figures_);
     } catch (const std::exception& e) {
       showError(tr("The step's figures could not be drawn: %1").arg(e.what()));
     }
@@ -448,6 +452,7 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
                           : exercise ? tr("An exercise: type the answers, then Check (or Enter in a field)")
                                      : tr("A step of text: Right or Page Down for the next step"));
     emit resultShown();
+    if (newStep) QTimer::singleShot(0, this, &MainWindow::prefetchNextStep);
     return;
   }
   QString status = counted(static_cast<long long>(r.mesh->size()), tr("element"));
@@ -458,6 +463,7 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
   if (!r.note.empty()) status += " (" + QString::fromStdString(r.note) + ")";
   statusLabel_->setText(status);
   emit resultShown();
+  if (newStep) QTimer::singleShot(0, this, &MainWindow::prefetchNextStep);
 }
 
 }  // namespace rt::app

@@ -63,7 +63,8 @@ void ResidualChart::setRuns(const std::vector<QString>& names,
       if (r > 0 && std::isfinite(r)) lowest = std::min(lowest, r), highest = std::max(highest, r);
   }
   if (highest <= 0) lowest = 1e-6, highest = 1;
-  const double floor = lowest / 10;
+  floor_ = lowest / 10;
+  const double floor = floor_;
   for (std::size_t k = 0; k < residuals_.size(); ++k) {
     const QColor colour = kRunColours[k % 7];
     auto* full = new QLineSeries();
@@ -109,16 +110,11 @@ void ResidualChart::setRuns(const std::vector<QString>& names,
 
 void ResidualChart::setCurrent(int index) {
   if (!marker_) return;
-  double lowest = 1e300;
-  for (const auto& run : residuals_)
-    for (double r : run)
-      if (r > 0) lowest = std::min(lowest, r);
-  const double floor = lowest / 10;
   marker_->clear();
   for (std::size_t k = 0; k < residuals_.size(); ++k) {
     QList<QPointF> points;
     const int last = std::min(index, static_cast<int>(residuals_[k].size()) - 1);
-    for (int i = 0; i <= last; ++i) points.append(QPointF(i + 1, plotted(residuals_[k][i], floor)));
+    for (int i = 0; i <= last; ++i) points.append(QPointF(i + 1, plotted(residuals_[k][i], floor_)));
     shown_[k]->replace(points);
     if (last >= 0) marker_->append(points.back());
   }

@@ -47,6 +47,9 @@ class ResidualChart : public QChartView {
   QValueAxis* xAxis_ = nullptr;
   QLogValueAxis* yAxis_ = nullptr;
   bool large_ = false;
+  // Where a zero residual is drawn: a decade under the lowest positive one of the runs (found in setRuns, so
+  // that the replay's many setCurrent calls do not scan every run again).
+  double floor_ = 1e-7;
   // The residual axis's range, as powers of ten.
   int lowestDecade_ = -6, highestDecade_ = 0;
   // The fonts of the normal mode: chart title, x and y labels, x and y titles, legend.

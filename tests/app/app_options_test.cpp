@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "app/app_options.h"
+#include "support/test_paths.h"
 
 using rt::app::AppOptions;
 using rt::app::parseAppOptions;
@@ -56,4 +57,20 @@ TEST(AppOptions, CompareChoicesImplyCompareMode) {
   EXPECT_TRUE(o.compareMethod.isEmpty());
   parseAppOptions({"radiosity-textbook", "--compare-mesh", "wavy"}, &error);
   EXPECT_TRUE(error.contains("--compare-mesh") && error.contains("hierarchical")) << error.toStdString();
+}
+
+// --help and --version answer in a terminal with no display at all: no DISPLAY, no Wayland, no QPA platform
+// chosen (a window system is needed only to open the window).
+TEST(AppOptions, HelpAndVersionNeedNoDisplay) {
+  const std::string app = rt::test::binaryPath("bin/radiosity-textbook");
+  const std::string bare = "env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM " + app;
+  std::string output;
+  EXPECT_EQ(rt::test::runCommand(bare + " --help", &output), 0) << output;
+  EXPECT_NE(output.find("Usage:"), std::string::npos) << output;
+  EXPECT_NE(output.find("--lesson <id>"), std::string::npos) << output;
+  EXPECT_NE(output.find("--screenshot <file>"), std::string::npos) << output;
+  EXPECT_EQ(rt::test::runCommand(bare + " --version", &output), 0) << output;
+  EXPECT_NE(output.find("radiosity-textbook 0.1.0"), std::string::npos) << output;
+  EXPECT_EQ(rt::test::runCommand(bare + " -h --no-such-option", &output), 2) << output;
+  EXPECT_NE(output.find("no-such-option"), std::string::npos) << output;
 }

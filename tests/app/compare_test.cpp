@@ -10,6 +10,9 @@
 #include <QComboBox>
 #include <QFileInfo>
 #include <QImage>
+#include <QLineEdit>
+#include <QSpinBox>
+#include <QTest>
 
 #include "app/compare_choice.h"
 #include "app/iteration_player.h"
@@ -190,4 +193,65 @@ TEST(CompareMode, ExportWritesBothPanesAsOneFigure) {
   EXPECT_GT(pixelStatistics(left).meanLuminance, 10) << "the left pane is drawn";
   EXPECT_GT(pixelStatistics(right).meanLuminance, 10) << "the right pane is drawn";
   EXPECT_NE(left, right) << "the two panes show their own meshes";
+}
+
+// File > Export view (Ctrl+E) asks for the picture's size in the save dialog: typed into its width and height
+// fields, it is the size of the file written, of both panes side by side in compare mode and of the one view
+// otherwise. The fields start at the size on screen.
+TEST(CompareMode, TheExportDialogWritesTheSizeTypedIntoIt) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+  ASSERT_TRUE(window->openScene(QString()));
+  const std::string folder = rt::test::scratchDir("compare-export-size");
+  struct Case {
+    bool compare;
+    QSize size;
+    const char* name;
+  };
+  for (const Case& c : {Case{true, QSize(1400, 500), "both.png"}, Case{false, QSize(700, 650), "one.png"}}) {
+    if (c.compare) window->setCompareChoice(CompareChoice{"", "", "finer"});
+    window->setCompareMode(c.compare);
+    ASSERT_TRUE(window->waitUntilIdle());
+    const QString path = QString::fromStdString(folder + "/" + c.name);
+    QFile::remove(path);
+    QSize proposed;
+    test::whenModal([&](QWidget* dialog) {
+      auto* width = dialog->findChild<QSpinBox*>("exportWidth");
+      auto* height = dialog->findChild<QSpinBox*>("exportHeight");
+      auto* name = dialog->findChild<QLineEdit*>("fileNameEdit");
+      if (!width || !height || !name) {
+        dialog->close();
+        return;
+      }
+      proposed = QSize(width->value(), height->value());
+      for (const auto& [box, value] :
+           {std::pair{width, c.size.width()}, std::pair{height, c.size.height()}}) {
+        box->setFocus();
+        box->selectAll();
+        QTest::keyClicks(box, QString::number(value));
+      }
+      name->setFocus();
+      name->setText(path);
+      QTest::keyClick(name, Qt::Key_Return);
+      if (dialog->isVisible()) dialog->close();
+    });
+    window->activateWindow();
+    QApplication::setActiveWindow(window.get());
+    QTest::keyClick(window.get(), Qt::Key_E, Qt::ControlModifier);
+    ASSERT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
+    EXPECT_EQ(proposed, window->viewExportSize()) << c.name << ": the fields start at the size on screen";
+    const QImage image(path);
+    ASSERT_FALSE(image.isNull()) << c.name << ": not written (no size fields in the dialog?)";
+    EXPECT_EQ(image.size(), c.size) << c.name;
+    if (c.compare) {
+      const int half = c.size.width() / 2;
+      const QImage left = image.copy(0, 0, half, c.size.height());
+      const QImage right = image.copy(half, 0, half, c.size.height());
+      EXPECT_GT(pixelStatistics(left).meanLuminance, 10) << "the left pane is drawn";
+      EXPECT_GT(pixelStatistics(right).meanLuminance, 10) << "the right pane is drawn";
+      EXPECT_NE(left, right) << "the two panes show their own meshes";
+    }
+  }
 }

@@ -2,11 +2,14 @@
 // parameter panel reachable and the chart's tick labels whole.
 #include <gtest/gtest.h>
 
+#include <QAction>
 #include <QApplication>
 #include <QDebug>
 #include <QDockWidget>
+#include <QFontMetrics>
 #include <QFontMetricsF>
 #include <QScrollArea>
+#include <QSplitter>
 #include <QTest>
 #include <cmath>
 
@@ -77,4 +80,46 @@ TEST(ProjectorSize, ChartLabelsFitAShortWindow) {
         << "labels of the residual axis at window height " << height
         << " would be elided: " << chart->residualLabels() << " labels in " << room << " px";
   }
+}
+
+// At 1024 x 768 the step's text keeps a readable width: the contents list folds away (beside it and the
+// parameters the text was a column of about 150 px) and comes back from the View menu; the window made wide
+// again shows the list again.
+TEST(ProjectorSize, TheTextKeepsAReadableWidthAt1024) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  window->show();
+  ASSERT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+  ASSERT_TRUE(window->openLesson("cornell-box", 1));
+  ASSERT_TRUE(window->waitUntilIdle());
+  auto* contents = window->findChild<QDockWidget*>("contentsDock");
+  auto* text = window->findChild<QWidget*>("stepText");
+  ASSERT_NE(contents, nullptr);
+  ASSERT_NE(text, nullptr);
+  EXPECT_TRUE(contents->isVisible());
+  window->resize(1024, 768);
+  QApplication::processEvents();
+  QApplication::processEvents();
+  if (text->width() < 320)
+    qInfo() << "centre" << qobject_cast<QSplitter*>(window->centralWidget())->sizes()
+            << window->findChild<QDockWidget*>("parametersDock")->width()
+            << qobject_cast<QSplitter*>(window->centralWidget())->widget(1)->minimumSizeHint()
+            << qobject_cast<QSplitter*>(window->centralWidget())->widget(0)->minimumSizeHint();
+  // About 45 characters of the text's font a line: a readable column.
+  const int readable = 45 * QFontMetrics(text->font()).averageCharWidth();
+  EXPECT_GE(text->width(), readable) << "the text pane at 1024 px";
+  EXPECT_GE(text->width(), 320);
+  EXPECT_FALSE(contents->isVisible()) << "the contents list folded away";
+  // View > Contents brings it back when the reader wants it.
+  QAction* show = test::menuAction(*window, "View", "Contents");
+  ASSERT_NE(show, nullptr);
+  show->trigger();
+  QApplication::processEvents();
+  EXPECT_TRUE(contents->isVisible());
+  show->trigger();
+  QApplication::processEvents();
+  window->resize(1600, 1000);
+  QApplication::processEvents();
+  QApplication::processEvents();
+  EXPECT_TRUE(contents->isVisible()) << "a wide window shows the list again";
 }
