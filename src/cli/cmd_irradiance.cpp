@@ -9,6 +9,7 @@
 #include "cli/cli_common.h"
 #include "cli/commands.h"
 #include "cli/output_paths.h"
+#include "cli/point_query.h"
 #include "cli/solution.h"
 #include "core/io/point_csv.h"
 #include "core/io/scene_loader.h"
@@ -22,46 +23,14 @@ struct IrradianceArguments {
   std::string scene;
   std::string points;
   std::string output;
-  SolutionArguments solution;
-  TwoPassOptions twoPass;
-  int pathTrace = 0;       // paths per point; 0: the two-pass method
-  bool meshError = true;   // estimate the solution's mesh error from a second solve on a coarser mesh
-  bool breakdown = false;  // write H's parts: direct, first bounce, the rest
+  PointQuery query;         // the two-pass method's settings, mesh error and target error
+  std::string targetError;  // --target-error as written ("0.5%" or 0.005)
+  int pathTrace = 0;        // paths per point; 0: the two-pass method
+  bool breakdown = false;   // write H's parts: direct, first bounce, the rest
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-std::vector<PointEstimate> twoPassEstimates(const Scene& scene, const TracingScene& tracing,
-                                            const MeshOptions& mesh, const IrradianceArguments& a,
-                                            const std::vector<SurfacePoint>& points,
-                                            std::chrono::steady_clock::time_point start) {
-  Pipeline pipeline;
-  const Solution solution = solveOnMesh(scene, mesh, a.solution, pipeline);
-  const double solved = secondsSince(start);
-  TwoPassOptions options = a.twoPass;
-  options.seed = a.solution.seed;
-  const TwoPass twoPass(tracing, solution.mesh, solution.outcome.B,
-                        solution.formFactors ? &solution.formFactors->F : nullptr);
-  std::vector<PointEstimate> estimates = twoPass.estimate(points, options);
-  std::fprintf(stderr,
-               "two-pass: %zu points, solution (%zu elements) %.2f s, direct light and gather %.2f s\n",
-               points.size(), solution.mesh.size(), solved, secondsSince(start) - solved);
-  return estimates;
-}
-
-// The mesh error of the fine solution, estimated from its difference to the coarse one's at each point. With
-// the same seed both passes draw the same rays, so the difference is the meshes' and not noise. If the error
-// falls like h^p in the element size h, e(h) = (e(2h) - e(h)) / (2^p - 1): at most the difference for p >= 1
-// (piecewise-constant radiosity where the light is smooth), at most twice it for p >= 0.58 (along shadow
-// boundaries the elements straddle, where it converges more slowly). Twice the difference is written.
-void addMeshErrors(std::vector<PointEstimate>& fine, const std::vector<PointEstimate>& coarse) {
-  constexpr double kSlowestOrderFactor = 2;
-  for (std::size_t p = 0; p < fine.size(); ++p) {
-    fine[p].HMeshError = kSlowestOrderFactor * (fine[p].H - coarse[p].H).abs();
-    fine[p].BMeshError = kSlowestOrderFactor * (fine[p].B - coarse[p].B).abs();
-  }
 }
 
 void run(const IrradianceArguments& a) {
@@ -76,21 +45,14 @@ void run(const IrradianceArguments& a) {
     PathTracer tracer(scene);
     PathTraceOptions options;
     options.samples = a.pathTrace;
-    options.seed = a.solution.seed;
+    options.seed = a.query.solution.seed;
     estimates = tracer.estimate(points, options);
     std::fprintf(stderr, "path tracing: %zu points x %d paths, %.3g rays, %.2f s\n", points.size(),
                  a.pathTrace, static_cast<double>(tracer.raysCast()), secondsSince(start));
   } else {
-    const MeshOptions mesh = a.solution.mesh.optionsFor(scene);
-    estimates = twoPassEstimates(scene, tracing, mesh, a, points, start);
-    MeshOptions coarser;
-    if (a.meshError && coarserMesh(mesh, coarser)) {
-      const auto coarse = std::chrono::steady_clock::now();
-      std::cerr << "mesh error: the same points on a mesh with elements twice the size\n";
-      addMeshErrors(estimates, twoPassEstimates(scene, tracing, coarser, a, points, coarse));
-    } else if (a.meshError) {
-      std::cerr << "mesh error: not estimated (one element per polygon cannot be made coarser)\n";
-    }
+    const MeshOptions mesh = a.query.solution.mesh.optionsFor(scene);
+    estimates = a.query.targetError > 0 ? estimatesForTarget(scene, tracing, mesh, a.query, points)
+                                        : estimatesWithMeshError(scene, tracing, mesh, a.query, points);
   }
   std::vector<std::string> surfaces(points.size());
   std::size_t nowhere = 0, first = 0;
@@ -110,7 +72,7 @@ void run(const IrradianceArguments& a) {
               << " point(s) lie on no surface facing their normal (the first is point " << first + 1
               << ", line " << first + 2 << " of " << a.points
               << " if the file has no blank lines): their B is written as 0\n";
-  writePointEstimates(a.output, points, estimates, surfaces, a.breakdown);
+  writePointEstimates(a.output, points, estimates, surfaces, a.breakdown, a.query.targetError > 0);
   std::cerr << "irradiance written to " << a.output << " (" << secondsSince(start) << " s in all)\n";
 }
 
@@ -133,25 +95,26 @@ void addIrradianceCommand(CLI::App& app) {
                    "standard error of each (H_r_error...) and the estimate of the mesh's error "
                    "(H_r_mesh_error...)")
       ->required();
-  a->solution.add(*command);
-  command->add_option("--gather-rays", a->twoPass.gatherRays, "Final-gather rays per point")
-      ->capture_default_str()
-      ->check(CLI::Range(16, 1 << 24));
+  a->query.solution.add(*command);
+  auto* gatherRays =
+      command->add_option("--gather-rays", a->query.twoPass.gatherRays, "Final-gather rays per point")
+          ->capture_default_str()
+          ->check(CLI::Range(16, 1 << 24));
   command
-      ->add_option("--shadow-rays", a->twoPass.shadowRays,
+      ->add_option("--shadow-rays", a->query.twoPass.shadowRays,
                    "Shadow rays per point and emitter, only where the shaft test finds a possible blocker")
       ->capture_default_str()
       ->check(CLI::Range(16, 1 << 20));
   command
-      ->add_option("--near-factor", a->twoPass.nearFactor,
+      ->add_option("--near-factor", a->query.twoPass.nearFactor,
                    "Gather hits closer than this many element sizes gather their indirect light anew, one "
                    "bounce further on (default: every hit)")
       ->check(CLI::Range(0.0, std::numeric_limits<double>::infinity()));
-  command->add_option("--near-rays", a->twoPass.nearRays, "Rays of that secondary gather")
+  command->add_option("--near-rays", a->query.twoPass.nearRays, "Rays of that secondary gather")
       ->capture_default_str()
       ->check(CLI::Range(1, 1 << 16));
   command->add_flag(
-      "!--no-mesh-error", a->meshError,
+      "!--no-mesh-error", a->query.meshError,
       "Skip the mesh-error estimate (by default the points are computed a second time on a mesh with "
       "elements twice the size, and the difference is written as H_r_mesh_error...)");
   command->add_flag(
@@ -160,11 +123,29 @@ void addIrradianceCommand(CLI::App& app) {
       "the two-pass method the direct light at its gather's hits), H_r_rest... (the rest), with the standard "
       "errors of the first two; against a path-traced reference with the same columns they show where an "
       "error comes from");
-  command
-      ->add_option("--path-trace", a->pathTrace,
-                   "Path-trace each point with this many paths instead (no mesh, no solve: the reference)")
-      ->check(CLI::Range(32, 1 << 30));
-  command->callback([a] { run(*a); });
+  auto* target =
+      command
+          ->add_option(
+              "--target-error", a->targetError,
+              "Choose the effort for this RMS error of H relative to H (0.5% or 0.005): a pilot pass "
+              "measures the noise and the mesh error, the mesh is refined while its error is over 0.6 "
+              "of the target, and the gather rays are set for the rest; the estimate (two standard "
+              "errors plus the mesh error) is written as H_r_estimate...")
+          ->check([](const std::string& text) {
+            return parseTargetError(text) > 0 ? std::string()
+                                              : "not a relative error in (0, 1): 0.5% or 0.005";
+          });
+  auto* pathTrace =
+      command
+          ->add_option(
+              "--path-trace", a->pathTrace,
+              "Path-trace each point with this many paths instead (no mesh, no solve: the reference)")
+          ->check(CLI::Range(32, 1 << 30));
+  target->excludes(gatherRays)->excludes(pathTrace);
+  command->callback([a] {
+    if (!a->targetError.empty()) a->query.targetError = parseTargetError(a->targetError);
+    run(*a);
+  });
 }
 
 }  // namespace rt::cli

@@ -8,7 +8,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 40> kViews{{
+constexpr std::array<std::pair<View, const char*>, 41> kViews{{
     {View::Scene, "scene"},
     {View::BasisError, "basis-error"},
     {View::FormFactor, "formfactor"},
@@ -49,6 +49,7 @@ constexpr std::array<std::pair<View, const char*>, 40> kViews{{
     {View::Discontinuity, "discontinuity"},
     {View::Glossy, "glossy"},
     {View::TVertices, "t-vertices"},
+    {View::Focus, "focus"},
 }};
 
 }  // namespace
@@ -131,12 +132,15 @@ const std::vector<StageInfo>& stageTable() {
       {Stage::RayTrace,
        "raytrace",
        "B with `solver`; Whitted images of `image-size` (`ray-depth`, `shadow-rays`, `ray-epsilon`, "
-       "`light-size`, `mirrors`, `gloss`, `pixel-samples`) with their rays counted by kind and timed, "
+       "`light-size`, `mirrors`, `gloss`, `pixel-samples`, `aperture`, `focus-distance`) with their rays "
+       "counted by kind and timed, "
        "against "
        "the cost formula; hard against soft shadows; epsilon 0, the step's and too large, with the acne and "
-       "leaks counted; ideal against glossy mirrors; the ray tree of pixel (`pixel-x`, `pixel-y`); "
+       "leaks counted; ideal against glossy mirrors; a pinhole against a lens; the ray tree of pixel "
+       "(`pixel-x`, `pixel-y`); "
        "path-traced images (`paths`) with 0, 1, 2 and any number of bounces",
-       {V::Scene, V::RayTree, V::Shadows, V::Epsilon, V::RayCost, V::Whitted, V::PathBounces, V::Glossy}},
+       {V::Scene, V::RayTree, V::Shadows, V::Epsilon, V::RayCost, V::Whitted, V::PathBounces, V::Glossy,
+        V::Focus}},
       {Stage::Reflection,
        "reflection",
        "the BRDF `brdf-model` with `phong-exponent`, `specular-fraction` and `anisotropy` for light arriving "

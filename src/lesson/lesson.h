@@ -81,6 +81,7 @@ enum class View {
   SamplingError,  // sampling stage: error against rays per variance reduction, log-log, with fitted slopes
   Discontinuity,  // refine stage: the mesh with its critical lines, umbra/penumbra boundaries apart
   Glossy,         // raytrace stage: the mirrors ideal beside the same mirrors glossy (gloss, pixel-samples)
+  Focus,          // raytrace stage: the pinhole picture beside the lens's (aperture, focus-distance)
   BasisError,     // elements stage: error against elements per basis, log-log, with the fitted orders
   TVertices,      // refine stage: the mesh with its T-vertices and the long edges they split
 };
@@ -178,6 +179,8 @@ struct StepParameters {
   double lightSize = 1.0;        // the lights scaled about their centres, power kept
   double gloss = 0.0;            // mirrors' Phong exponent q for glossy reflection (0: ideal mirrors)
   int pixelSamples = 1;          // primary rays per pixel, jittered (antialiasing, and the lobe's average)
+  double aperture = 0.0;         // the camera lens's radius, scene units (0: a pinhole, no depth of field)
+  double focusDistance = 0.0;    // the lens's plane of focus along the view (0: the camera's target)
   int pixelX = 64, pixelY = 64;  // the pixel whose ray tree is drawn
   std::string mirrors;           // surfaces that reflect as mirrors, comma-separated
   // reflection stage: the BRDF shown (core/brdf.h) and the direction light arrives from

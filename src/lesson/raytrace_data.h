@@ -12,12 +12,14 @@
 namespace rt::lesson {
 
 struct RayTraceData {
-  RgbImage whitted;                    // the step's settings
-  RgbImage radiosity;                  // the solution's flat elements through the same camera
-  RgbImage hard;                       // one shadow ray per light, otherwise the step's settings
-  RgbImage epsilonZero, epsilonLarge;  // one shadow ray, epsilon 0 and largeEpsilon
-  RgbImage epsilonStep;                // one shadow ray, the step's epsilon
-  RgbImage idealMirrors;               // the step's settings with gloss 0 (the glossy view)
+  RgbImage whitted;                        // the step's settings
+  RgbImage radiosity;                      // the solution's flat elements through the same camera
+  RgbImage hard;                           // one shadow ray per light, otherwise the step's settings
+  RgbImage epsilonZero, epsilonLarge;      // one shadow ray, epsilon 0 and largeEpsilon
+  RgbImage epsilonStep;                    // one shadow ray, the step's epsilon
+  RgbImage idealMirrors;                   // the step's settings with gloss 0 (the glossy view)
+  RgbImage pinhole;                        // the step's settings through a pinhole (the focus view)
+  double aperture = 0, focusDistance = 0;  // the lens's radius and the plane of focus it used
   double gloss = 0;
   int pixelSamples = 1;
   double epsilon = 0, largeEpsilon = 0;

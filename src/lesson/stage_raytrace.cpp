@@ -2,15 +2,17 @@
 // solution of the same scene. The tracer (core/raytrace) counts the rays it casts by kind, and the stage
 // sets them against the cost formula over a range of depths; it renders the hard and soft shadows of one
 // and of `shadow-rays` shadow rays, the acne and leaks of an epsilon of 0, the step's and a too large one,
-// and records the ray tree of one pixel.
+// renders the step's lens beside a pinhole (depth of field), and records the ray tree of one pixel.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <sstream>
 
 #include "core/pathtrace/image_compare.h"
 #include "core/pathtrace/path_tracer.h"
 #include "core/raytrace/ray_cost.h"
+#include "core/raytrace/thin_lens.h"
 #include "core/raytrace/whitted.h"
 #include "lesson/step_stages.h"
 #include "lesson/traced_pictures.h"
@@ -36,31 +38,70 @@ std::vector<int> mirrorSurfaces(const StageContext& c) {
   return out;
 }
 
-// Means over the pixels whose centre sees `surface` (and, with a column range, lies in it), per channel. Only
-// pixels whose eight neighbours see the same surface count: a supersampled pixel on an edge mixes in its
-// neighbour (the light's, a hundred times brighter).
-Rgb surfaceMeanOf(const RgbImage& image, const std::vector<int>& elements, const Mesh& mesh,
-                  const Scene& scene, const std::string& surface, int fromColumn = 0,
-                  int toColumn = 1 << 30) {
+// The pixels whose centre sees `surface` (and, with a column range, lie in it). With `interior`, only pixels
+// whose eight neighbours see the same surface count: a supersampled pixel on an edge mixes in its neighbour
+// (the light's, a hundred times brighter).
+std::vector<std::size_t> surfacePixels(const RgbImage& image, const std::vector<int>& elements,
+                                       const Mesh& mesh, const Scene& scene, const std::string& surface,
+                                       bool interior, int fromColumn = 0, int toColumn = 1 << 30) {
   const auto surfaceAt = [&](int x, int y) {
     const int e = elements[static_cast<std::size_t>(y) * image.width + x];
     if (e < 0) return -1;
     return scene.patches[static_cast<std::size_t>(mesh.elements[static_cast<std::size_t>(e)].patch)].surface;
   };
-  Rgb sum = Rgb::Zero();
-  int count = 0;
+  std::vector<std::size_t> out;
   for (int y = 1; y + 1 < image.height; ++y)
     for (int x = std::max(1, fromColumn); x < std::min(image.width - 1, toColumn); ++x) {
       const int here = surfaceAt(x, y);
       if (here < 0 || scene.surfaces[static_cast<std::size_t>(here)].name != surface) continue;
       bool inside = true;
-      for (int dy = -1; dy <= 1; ++dy)
+      for (int dy = -1; interior && dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) inside = inside && surfaceAt(x + dx, y + dy) == here;
-      if (!inside) continue;
-      sum += image.at(x, y);
-      ++count;
+      if (inside) out.push_back(static_cast<std::size_t>(y) * image.width + x);
     }
-  return count ? Rgb(sum / count) : Rgb::Zero();
+  return out;
+}
+
+// Means over those pixels, per channel.
+Rgb surfaceMeanOf(const RgbImage& image, const std::vector<int>& elements, const Mesh& mesh,
+                  const Scene& scene, const std::string& surface, int fromColumn = 0,
+                  int toColumn = 1 << 30) {
+  const auto pixels = surfacePixels(image, elements, mesh, scene, surface, true, fromColumn, toColumn);
+  Rgb sum = Rgb::Zero();
+  for (const std::size_t k : pixels) sum += image.pixels[k];
+  return pixels.empty() ? Rgb::Zero() : Rgb(sum / static_cast<double>(pixels.size()));
+}
+
+// The depth of field on each surface: the mean depth along the view of its pixels, the blur disc the lens
+// gives a point there, and the RMS difference of the lens's picture from the pinhole's over its pixels (edges
+// included: that is where a blur shows), relative to the pinhole picture's mean.
+void addFocusValues(StageContext& c, const TracingScene& tracing, const std::vector<int>& elements,
+                    const ThinLens& lens, const RayTraceData& d) {
+  const StepResult& r = c.result;
+  const int size = c.parameters.imageSize;
+  const Vec3 forward = (r.camera.target - r.camera.position).normalized();
+  std::vector<double> depth(static_cast<std::size_t>(size) * size, 0.0);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) {
+      const Vec3 dir = cameraRay(r.camera, size, size, x + 0.5, y + 0.5);
+      const RayHit hit = tracing.rays().firstHitAfter(r.camera.position, dir, 0);
+      if (hit.element >= 0) depth[static_cast<std::size_t>(y) * size + x] = hit.distance * dir.dot(forward);
+    }
+  auto& v = c.result.values;
+  const double mean = imageMean(d.pinhole);
+  for (const Surface& surface : r.scene.surfaces) {
+    const auto pixels = surfacePixels(d.pinhole, elements, tracing.mesh(), r.scene, surface.name, true);
+    if (pixels.empty()) continue;
+    double z = 0, squares = 0;
+    for (const std::size_t k : pixels) {
+      z += depth[k];
+      squares += (d.whitted.pixels[k] - d.pinhole.pixels[k]).matrix().squaredNorm() / 3;
+    }
+    const double n = static_cast<double>(pixels.size());
+    v["depth." + surface.name] = z / n;
+    v["blur-disc." + surface.name] = blurDiscPixels(r.camera, lens, size, z / n);
+    v["focus-difference." + surface.name] = mean > 0 ? std::sqrt(squares / n) / mean : 0.0;
+  }
 }
 
 }  // namespace
@@ -98,6 +139,7 @@ void computeRayTrace(StageContext& c) {
   options.lightScale = p.lightSize;
   options.glossExponent = p.gloss;
   options.pixelSamples = p.pixelSamples;
+  options.lens = {p.aperture, p.focusDistance};
   options.mirrorSurfaces = mirrors;
   options.seed = p.seed.value_or(1);
   options.checkShadows = true;
@@ -119,6 +161,13 @@ void computeRayTrace(StageContext& c) {
     WhittedOptions ideal = options;
     ideal.glossExponent = 0;
     d.idealMirrors = WhittedTracer(tracing, ideal).render(r.camera, size, size).B;
+  }
+  d.aperture = p.aperture;
+  d.focusDistance = focusDistanceOf(r.camera, options.lens);
+  if (wants(View::Focus)) {
+    WhittedOptions pinhole = options;
+    pinhole.lens.radius = 0;
+    d.pinhole = WhittedTracer(tracing, pinhole).render(r.camera, size, size).B;
   }
 
   // One shadow ray per light: the hard shadows, and the epsilon's acne unblurred by the light's area.
@@ -197,6 +246,9 @@ void computeRayTrace(StageContext& c) {
     const double mean = imageMean(d.whitted);
     v["gloss-difference"] = mean > 0 ? rmsDifference(d.whitted, d.idealMirrors) / mean : 0.0;
   }
+  v["aperture"] = p.aperture;
+  v["focus-distance"] = d.focusDistance;
+  if (wants(View::Focus)) addFocusValues(c, tracing, main.element, options.lens, d);
   v["rays.primary"] = static_cast<double>(n.primary);
   v["rays.shadow"] = static_cast<double>(n.shadow);
   v["rays.reflection"] = static_cast<double>(n.reflection);

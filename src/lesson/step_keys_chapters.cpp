@@ -143,6 +143,35 @@ void addChapterKeys(std::vector<StepKey>& t) {
                .step = 4,
                .stages = {Stage::RayTrace},
                .slot = &P::pixelSamples});
+  t.push_back({.name = "aperture",
+               .type = KeyType::Double,
+               .min = 0,
+               .max = 1e6,
+               .defaultText = "0",
+               .label = "Lens radius",
+               .tooltip =
+                   "Raytrace stage: the radius of the camera's lens, in the scene's units. 0 is a pinhole, "
+                   "everything sharp; above 0 each primary ray starts at its own point of the lens and "
+                   "passes through the plane of focus, so only that plane stays sharp (depth of field).",
+               .control = true,
+               .decimals = 1,
+               .step = 5,
+               .stages = {Stage::RayTrace},
+               .slot = &P::aperture});
+  t.push_back({.name = "focus-distance",
+               .type = KeyType::Double,
+               .min = 0,
+               .max = 1e9,
+               .defaultText = "0",
+               .label = "Focus distance",
+               .tooltip = "Raytrace stage: the distance of the lens's plane of focus along the view "
+                          "direction, in the scene's units; points there are sharp. 0 is the distance to "
+                          "the camera's target.",
+               .control = true,
+               .decimals = 0,
+               .step = 50,
+               .stages = {Stage::RayTrace},
+               .slot = &P::focusDistance});
   t.push_back({.name = "pixel-x",
                .type = KeyType::Int,
                .min = 0,

@@ -356,6 +356,7 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
     case View::Whitted:
     case View::PathBounces:
     case View::Glossy:
+    case View::Focus:
       return detail::renderRayTraceView(view, step, r, s, path);
     case View::Lobe:
     case View::PhongSweep:

@@ -96,6 +96,17 @@ std::string renderRayTraceView(lesson::View view, const lesson::Step& step, cons
              "the Phong lobe cos^" +
              q + " about the mirror direction, " + rays + " averaging the lobe";
     }
+    case lesson::View::Focus: {
+      const std::string rays =
+          std::to_string(d.pixelSamples) + (d.pixelSamples == 1 ? " ray per pixel" : " rays per pixel");
+      const std::string lens = "lens radius " + formatted("%.3g", d.aperture) + ", focused at " +
+                               formatted("%.4g", d.focusDistance);
+      writeImagePanelsFigure({{"pinhole", d.pinhole}, {lens, d.whitted}},
+                             stepPictureOptions(step, s, "Depth of field (" + rays + ")"), path);
+      return "The same Whitted picture through a pinhole, everything sharp, and through a lens of radius " +
+             formatted("%.3g", d.aperture) + " focused at distance " + formatted("%.4g", d.focusDistance) +
+             ": each primary ray starts at its own point of the lens, so only the plane of focus stays sharp";
+    }
     case lesson::View::PathBounces: {
       std::vector<ImagePanel> panels;
       for (std::size_t k = 0; k < d.pathBounces.size(); ++k) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numbers>
 
 #include "core/io/rgb_image.h"
 #include "core/raytrace/whitted.h"
@@ -142,6 +143,30 @@ TEST(RayTracingLesson, RaysPerPixelMultiplyThePrimaryRaysAndSmoothThePicture) {
   EXPECT_EQ(one["rays.primary"], one["pixels"]);
   EXPECT_GT(rmsDifference(one.result.raytrace->whitted, r.result.raytrace->whitted),
             0.01 * r["mean.whitted"]);
+}
+
+// The focus figure: through the lens the back wall, on the plane of focus, stays as the pinhole drew it,
+// while the short block in front blurs; the blur discs follow equation (blur-disc); a lens of radius 0 is the
+// pinhole, and focusing on the short block turns the order round.
+TEST(RayTracingLesson, TheLensBlursWhatLiesOffThePlaneOfFocus) {
+  const Ran r = run("focus");
+  ASSERT_TRUE(r.result.raytrace);
+  EXPECT_GT(r["aperture"], 0);
+  EXPECT_LT(r["blur-disc.back_wall"], 1.0) << "sharp: under a pixel";
+  EXPECT_GT(r["blur-disc.short_block"], 3.0) << "blurred over several pixels";
+  EXPECT_GT(r["blur-disc.tall_block"], r["blur-disc.back_wall"]);
+  EXPECT_LT(r["blur-disc.tall_block"], r["blur-disc.short_block"]);
+  const double f = r["focus-distance"], z = r["depth.short_block"], a = r["aperture"];
+  const double pixel = 2 * std::tan(r.result.camera.fovYDegrees * std::numbers::pi / 360) / r["image-size"];
+  EXPECT_NEAR(r["blur-disc.short_block"], 2 * a * std::abs(1 / f - 1 / z) / pixel, 1e-9);
+  EXPECT_GT(r["focus-difference.short_block"], 5 * r["focus-difference.back_wall"]);
+  EXPECT_GT(r["focus-difference.short_block"], 5 * r["focus-difference.tall_block"]);
+  const Ran pinhole = run("focus", [](StepParameters& p) { p.aperture = 0; });
+  EXPECT_EQ(pinhole["focus-difference.short_block"], 0) << "radius 0 is the pinhole";
+  EXPECT_EQ(pinhole["blur-disc.short_block"], 0);
+  const Ran near = run("focus", [&](StepParameters& p) { p.focusDistance = z; });
+  EXPECT_LT(near["blur-disc.short_block"], 0.1);
+  EXPECT_GT(near["focus-difference.back_wall"], near["focus-difference.short_block"]);
 }
 
 // Equation (lobe-density): directions drawn by cos(alpha) = u^(1/(q+1)) have the Phong lobe's mean cosine,

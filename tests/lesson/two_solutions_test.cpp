@@ -53,6 +53,8 @@ TEST_F(TwoSolutions, TheTwoPassImageIsCloserToThePathTracedOneAndNoiseFallsAsOne
   for (const NoisePoint& p : r.pictures->noise) EXPECT_NEAR(p.reported / p.measured, 1.0, 0.35) << p.paths;
   for (const char* t : {"seconds.solve", "seconds.trace", "seconds.two-pass"}) EXPECT_GT(*r.value(t), 0) << t;
   EXPECT_GT(*r.value("rays.path-traced"), *r.value("pixels") * *r.value("paths"));
+  // "the mesh is cut first where the blocks stand on the floor": both blocks' footprints, four sides each.
+  EXPECT_EQ(*r.value("contact-segments"), 8);
 }
 
 TEST_F(TwoSolutions, StepsShowingOtherViewsOfTheSamePicturesTraceThemOnce) {

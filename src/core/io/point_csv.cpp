@@ -106,7 +106,7 @@ std::vector<SurfacePoint> readSurfacePoints(const std::string& path) {
 
 void writePointEstimates(const std::string& path, const std::vector<SurfacePoint>& points,
                          const std::vector<PointEstimate>& estimates,
-                         const std::vector<std::string>& surfaces, bool breakdown) {
+                         const std::vector<std::string>& surfaces, bool breakdown, bool withErrorEstimate) {
   std::ofstream out(path);
   if (!out) throw InputError({path}, "cannot write the output file");
   out << "x,y,z,nx,ny,nz,surface,H_r,H_g,H_b,B_r,B_g,B_b,H_r_error,H_g_error,H_b_error,B_r_error,B_g_error,"
@@ -114,6 +114,7 @@ void writePointEstimates(const std::string& path, const std::vector<SurfacePoint
          "error";
   if (breakdown)
     for (const std::string& name : breakdownNames()) out << ',' << name;
+  if (withErrorEstimate) out << ",H_r_estimate,H_g_estimate,H_b_estimate";
   out << '\n';
   char buffer[1024];
   for (std::size_t p = 0; p < points.size(); ++p) {
@@ -140,6 +141,11 @@ void writePointEstimates(const std::string& path, const std::vector<SurfacePoint
           std::snprintf(buffer, sizeof buffer, ",%.4g", part(c));
           out << buffer;
         }
+    }
+    if (withErrorEstimate) {
+      const Rgb estimate = errorEstimate(e);
+      std::snprintf(buffer, sizeof buffer, ",%.4g,%.4g,%.4g", estimate(0), estimate(1), estimate(2));
+      out << buffer;
     }
     out << '\n';
   }

@@ -20,10 +20,12 @@ std::vector<SurfacePoint> readSurfacePoints(const std::string& path);
 // is 0). The *_error columns are Monte Carlo standard errors; the *_mesh_error columns the estimate of what
 // the radiosity solution's mesh adds (0 where there is no mesh, as for the path tracer). With `breakdown`,
 // H's parts follow (PointEstimate::HDirect...): H_r_direct,...,H_r_bounce,...,H_r_rest,... and the standard
-// errors of the first two (H_r_direct_error,...,H_b_bounce_error).
+// errors of the first two (H_r_direct_error,...,H_b_bounce_error). With `withErrorEstimate`, the error the
+// query reports for H (errorEstimate: H_r_estimate,...) comes last.
 void writePointEstimates(const std::string& path, const std::vector<SurfacePoint>& points,
                          const std::vector<PointEstimate>& estimates,
-                         const std::vector<std::string>& surfaces, bool breakdown = false);
+                         const std::vector<std::string>& surfaces, bool breakdown = false,
+                         bool withErrorEstimate = false);
 
 // Reads a file writePointEstimates wrote (the reference of a comparison), with H's parts where it has them.
 std::vector<PointEstimate> readPointEstimates(const std::string& path);

@@ -32,6 +32,12 @@ struct PointEstimate {
   int element = -1;  // the surface the point lies on (-1: none, and B is 0)
 };
 
+// The error a point query reports beside H: two standard errors (a two-sided 95 % interval for its noise)
+// plus the estimated bound on its mesh's error, per channel.
+inline Rgb errorEstimate(const PointEstimate& e) {
+  return 2.0 * e.HError + e.HMeshError;
+}
+
 // Mean and standard error of the mean of independent RGB values (Welford's update: no cancellation).
 class RgbMean {
  public:

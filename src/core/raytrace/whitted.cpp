@@ -162,11 +162,20 @@ WhittedImage WhittedTracer::render(const Camera& camera, int width, int height) 
       for (int x = 0; x < width; ++x) {
         const auto pixel = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(width) + x;
         Walk walk{PairRandom(options_.seed, pixel, 0x2545f491u), {}, nullptr};
+        // The lens draws from a stream of its own, so that a lens and a pinhole picture share every other
+        // random number: where the lens is in focus the two agree but for rounding.
+        PairRandom lensRandom(options_.seed, pixel, 0x9e3779b9u);
         Rgb sum = Rgb::Zero();
         for (int k = 0; k < samples; ++k) {
           const Vec2 jitter = samples == 1 ? Vec2(0.5, 0.5) : grid.sample(k, walk.random);
           const Vec3 d = cameraRay(camera, width, height, x + jitter.x(), y + jitter.y());
-          sum += radiance(camera.position, d, RayKind::Primary, 0, -1, walk);
+          if (options_.lens.radius > 0) {
+            const double u = lensRandom.uniform(), v = lensRandom.uniform();
+            const LensRay ray = thinLensRay(camera, options_.lens, d, u, v);
+            sum += radiance(ray.origin, ray.direction, RayKind::Primary, 0, -1, walk);
+          } else {
+            sum += radiance(camera.position, d, RayKind::Primary, 0, -1, walk);
+          }
         }
         image.B.at(x, y) = sum / samples;
         const RayHit centre = tracing_.rays().firstHitAfter(

@@ -10,7 +10,8 @@
 // ray finding the surface it leaves at a rounding-error distance: 0 gives shadow acne, too large a value lets
 // light through near contacts. The tracer counts its rays by kind, and can check each shadow ray against
 // the robust visibility test to count the acne and the leaks. Mirrors may be glossy: each reflected ray then
-// samples a Phong lobe about the mirror direction (see phongLobeDirection).
+// samples a Phong lobe about the mirror direction (see phongLobeDirection). The camera may have a thin lens
+// (core/raytrace/thin_lens.h): depth of field.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +20,7 @@
 #include "core/io/rgb_image.h"
 #include "core/pathtrace/tracing_scene.h"
 #include "core/raytrace/ray_tree.h"
+#include "core/raytrace/thin_lens.h"
 
 namespace rt {
 
@@ -32,6 +34,9 @@ struct WhittedOptions {
   // direction drawn from the Phong lobe cos^q about the mirror direction (glossy reflection), so that the
   // primary rays of a pixel average the lobe (distributed ray tracing).
   double glossExponent = 0;
+  // The camera's lens (depth of field): a radius above 0 sends each primary ray from its own point of the
+  // aperture through the plane of focus, so that the pixel's rays average the lens.
+  ThinLens lens;
   std::vector<int> mirrorSurfaces;  // surfaces (indices into the scene's) that reflect as mirrors
   std::uint64_t seed = 1;
   bool checkShadows = false;  // also test each shadow ray robustly: acne and leak counts
