@@ -206,6 +206,8 @@ struct Step {
   std::string figure;                   // base name of the step's figure files
   std::string caption;                  // the first figure's caption, may contain {{placeholders}}
   int captionLine = 0;
+  std::optional<View> captionView;  // the view first listed, whose figure the caption is (a copy of the step
+                                    // that shows fewer views keeps it)
   std::vector<std::string> controls;    // parameter keys the app may let the reader change
   std::map<std::string, Field> fields;  // every key as written, with its line (for late errors)
   // An exercise step's conceptual question: the choices of its ```question block (the step's text asks the

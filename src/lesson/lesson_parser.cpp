@@ -373,6 +373,7 @@ class Parser {
     if (step.views.empty() && !step.figure.empty()) fail(lineOf("figure"), "a figure needs 'views' to show");
     if (step.views.empty() && !step.caption.empty())
       fail(lineOf("caption"), "a caption needs a figure to caption");
+    if (!step.caption.empty()) step.captionView = step.views.front();
     if (p.subdivide && p.maxEdge) fail(lineOf("max-edge"), "give either 'subdivide' or 'max-edge', not both");
     for (View v : step.views) {
       if (!stageOffersView(step.stage, v))

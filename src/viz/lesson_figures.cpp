@@ -405,7 +405,8 @@ std::vector<lesson::RenderedFigure> renderStepFigures(const lesson::Lesson& less
     const std::string path = (std::filesystem::path(dir) / files[k]).string();
     // The picture keeps the view's short title; the book and the figures tab take the lesson's caption.
     const std::string title = renderView(step.views[k], step, result, settings, path);
-    const std::string caption = k == 0 ? lesson::resolvedCaption(lesson, step, result) : std::string();
+    const std::string caption =
+        step.views[k] == step.captionView ? lesson::resolvedCaption(lesson, step, result) : std::string();
     figures.push_back({lesson.id + "/" + files[k], caption.empty() ? title : caption});
   }
   return figures;

@@ -130,6 +130,9 @@ TEST(LessonParser, ACaptionBelongsToTheFirstFigureAndTakesPlaceholders) {
       goodWith("figure: squares-ff\n", "figure: squares-ff\ncaption: F is {{F:.3f}}\n"), "x", "x.md");
   EXPECT_EQ(l.steps[1].caption, "F is {{F:.3f}}");
   EXPECT_EQ(l.steps[1].captionLine, 32);
+  // The first view listed: the app's figures tab, which leaves the 3D scene view out, does not move the
+  // caption onto the next figure.
+  EXPECT_EQ(l.steps[1].captionView, View::Scene);
   StepResult r;
   r.values["F"] = 0.19982;
   EXPECT_EQ(resolvedCaption(l, l.steps[1], r), "F is 0.200");
