@@ -1,6 +1,7 @@
 #include "app/lesson_text_view.h"
 
 #include <functional>
+#include <memory>
 
 #include <QChildEvent>
 #include <QDesktopServices>
@@ -10,6 +11,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QKeyEvent>
+#include <QPointer>
 #include <QTimer>
 #include <QUrl>
 #include <QVBoxLayout>
@@ -75,7 +77,8 @@ LessonTextView::LessonTextView(QWidget* parent) : QWidget(parent) {
     applyStyle();
     const int generation = generation_;
     view_->page()->runJavaScript(typeset::typesetScript(), [this, generation](const QVariant& value) {
-      if (generation != generation_) return;
+      // WebEngine calls back with no value when the page goes first (see ~LessonTextView).
+      if (generation != generation_ || !value.isValid()) return;
       const QJsonObject o = QJsonDocument::fromJson(value.toString().toUtf8()).object();
       formulas_ = o.value("formulas").toInt();
       errors_.clear();
@@ -85,6 +88,16 @@ LessonTextView::LessonTextView(QWidget* parent) : QWidget(parent) {
       emit typeset(formulas_, errors_);
     });
   });
+}
+
+LessonTextView::~LessonTextView() {
+  // WebEngine answers every pending script when its page is deleted. Deleted here, while this object's
+  // members still exist, the answers find a newer generation and leave them alone; deleted later by
+  // QWidget, with the children, they would write into members already destroyed.
+  ++generation_;
+  disconnect(view_, nullptr, this, nullptr);
+  delete view_;
+  view_ = nullptr;
 }
 
 void LessonTextView::setMarkdown(const QString& markdown, bool scrollToEnd) {
@@ -188,15 +201,19 @@ bool LessonTextView::waitUntilShown(int timeoutMs) {
 
 QJsonObject LessonTextView::pageAnswer(const QString& script, int timeoutMs) {
   // The page answers on its own thread's time: wait for it, but never longer than the caller allows.
+  // An answer that comes after the timeout finds the loop gone and is dropped: it must not write into this
+  // frame, which has returned by then.
   QEventLoop loop;
-  QVariant answer;
-  view_->page()->runJavaScript(script, [&](const QVariant& value) {
-    answer = value;
-    loop.quit();
+  const QPointer<QEventLoop> waiting(&loop);
+  auto answer = std::make_shared<QVariant>();
+  view_->page()->runJavaScript(script, [waiting, answer](const QVariant& value) {
+    if (!waiting) return;
+    *answer = value;
+    waiting->quit();
   });
   QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
   loop.exec();
-  return QJsonDocument::fromJson(answer.toString().toUtf8()).object();
+  return QJsonDocument::fromJson(answer->toString().toUtf8()).object();
 }
 
 LessonTextView::MathsState LessonTextView::mathsState(int timeoutMs) {

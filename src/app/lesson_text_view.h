@@ -19,6 +19,7 @@ class LessonTextView : public QWidget {
 
  public:
   explicit LessonTextView(QWidget* parent = nullptr);
+  ~LessonTextView() override;
 
   // Shows Markdown whose maths is ready (lesson::prepareMaths: numbered equations, linked references).
   // `scrollToEnd`: once typeset, the page shows its end (what was just added under the text).
