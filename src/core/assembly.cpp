@@ -1,5 +1,6 @@
 #include "core/assembly.h"
 
+#include <Eigen/LU>
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
@@ -110,6 +111,15 @@ std::optional<double> conditionNumber(const Eigen::MatrixXd& K) {
   const double smallest = s(s.size() - 1);
   if (!(smallest > 0.0)) return std::numeric_limits<double>::infinity();
   return s(0) / smallest;
+}
+
+std::optional<double> infinityConditionNumber(const Eigen::MatrixXd& K) {
+  if (K.rows() > kMaxConditionSize || K.cols() > kMaxConditionSize) return std::nullopt;
+  if (K.size() == 0) return 1.0;
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(K);
+  if (!lu.isInvertible()) return std::numeric_limits<double>::infinity();
+  const auto rowSumNorm = [](const Eigen::MatrixXd& M) { return M.cwiseAbs().rowwise().sum().maxCoeff(); };
+  return rowSumNorm(K) * rowSumNorm(lu.inverse());
 }
 
 }  // namespace rt

@@ -54,5 +54,9 @@ constexpr Eigen::Index kMaxConditionSize = 1500;
 // 2-norm condition number sigma_max / sigma_min by SVD; nullopt when n > kMaxConditionSize. Infinity when
 // singular.
 std::optional<double> conditionNumber(const Eigen::MatrixXd& K);
+// Infinity-norm condition number ||K|| ||K^-1|| (largest absolute row sum), by an LU inverse; nullopt when
+// n > kMaxConditionSize, infinity when singular. It is the norm in which the book bounds it by ρ alone:
+// (1 + m) / (1 - m) with m = max_i ρ_i Σ_j F_ij, met exactly by a closed room of one reflectance.
+std::optional<double> infinityConditionNumber(const Eigen::MatrixXd& K);
 
 }  // namespace rt

@@ -109,10 +109,18 @@ void computeMatrix(StageContext& c) {
     margin = std::min(margin, 1.0 - mesh.reflectance.row(i).maxCoeff() * F->row(i).sum());
   r.values["dominance"] = margin;
   r.values["rho.max"] = mesh.reflectance.maxCoeff();
+  // m = max_i rho_i sum_j F_ij = ||rho F|| in the row-sum norm: it bounds the condition number,
+  // (1 + m) / (1 - m), and a row-sum error e of F scales B by about 1 + e m / (1 - m) in a closed room.
+  const double m = 1.0 - margin;
+  if (m < 1.0) {
+    r.values["condition.bound"] = (1.0 + m) / (1.0 - m);
+    r.values["row-sum-gain"] = m / (1.0 - m);
+  }
   r.values["fill"] = fillFraction(*F);
   const Eigen::MatrixXd K = assembleDense(*F, mesh.reflectance.col(1));
   if (K.rows() <= 300) {
     if (const auto cond = conditionNumber(K)) r.values["condition"] = *cond;
+    if (const auto cond = infinityConditionNumber(K)) r.values["condition.inf"] = *cond;
   }
   r.values["K.diagonal.min"] = K.diagonal().minCoeff();
   r.values["K.diagonal.max"] = K.diagonal().maxCoeff();

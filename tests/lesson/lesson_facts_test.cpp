@@ -268,6 +268,22 @@ TEST_F(LessonFacts, TheNearlySingularRoomReflectsLikeSpectralon) {
   EXPECT_NEAR(*r.value("rho.max"), 0.99, 1e-12);
 }
 
+// numerical-stability, "How far errors can grow": in a closed room of one reflectance the row-sum-norm
+// condition number reaches its bound (1 + rho) / (1 - rho), and a row-sum error is amplified rho / (1 - rho)
+// times; the 2-norm condition number is another, smaller number of the same growth.
+TEST_F(LessonFacts, TheClosedWhiteRoomReachesTheConditionBound) {
+  RUN_OR_SKIP(r, "numerical-stability", "rho-099");
+  const double rho = *r.value("rho.max");
+  EXPECT_NEAR(*r.value("condition.bound"), (1 + rho) / (1 - rho), 1e-6 * (1 + rho) / (1 - rho));
+  EXPECT_NEAR(*r.value("condition.inf"), *r.value("condition.bound"), 1e-6 * *r.value("condition.bound"));
+  EXPECT_NEAR(*r.value("row-sum-gain"), rho / (1 - rho), 1e-6 * rho / (1 - rho));
+  EXPECT_LE(*r.value("condition"), *r.value("condition.inf") * (1 + 1e-9));
+  // "A row-sum error of 1e-5": B = E / (1 - rho (1 + e)) against E / (1 - rho), for an even emission.
+  const double e = 1e-5;
+  const double change = (1 - rho) / (1 - rho * (1 + e)) - 1;
+  EXPECT_NEAR(change / e, *r.value("row-sum-gain"), 0.01 * *r.value("row-sum-gain"));
+}
+
 // The derivations the Solving chapters give, checked on the runs they describe. A run's every iteration is
 // kept (RunOptions::recordHistory), as the app keeps it to replay the run.
 StepResult runWithHistory(const Lesson& lesson, const Step& step) {
