@@ -35,12 +35,6 @@ const std::vector<std::string>& matrixKinds() {
   return values;
 }
 
-std::string joined(const std::vector<std::string>& names, const char* separator = ", ") {
-  std::string out;
-  for (const auto& n : names) out += (out.empty() ? "" : separator) + n;
-  return out;
-}
-
 std::string number(double v) {
   std::ostringstream out;
   out << v;
@@ -568,7 +562,7 @@ void applyStepValue(StepParameters& p, const StepKey& key, const std::string& na
     const bool isMethod = key.choices == &knownMethods, isSolver = key.choices == &knownSolvers;
     const std::string what = isMethod ? "form-factor method" : isSolver ? "solver" : key.name;
     if (std::find(known.begin(), known.end(), v) == known.end())
-      throw InputError(where, "unknown " + what + " '" + v + "' (known: " + joined(known) + ")");
+      throw InputError(where, "unknown " + what + " '" + v + "' (known: " + joinedNames(known) + ")");
     return v;
   };
   if (key.name == "reflectance") {
@@ -652,10 +646,10 @@ std::string stepKeyTableMarkdown() {
         value = "true or false";
         break;
       case KeyType::Choice:
-        value = "one of " + joined(k.allowed(), ", ");
+        value = "one of " + joinedNames(k.allowed());
         break;
       case KeyType::Choices:
-        value = "list of " + joined(k.allowed(), ", ");
+        value = "list of " + joinedNames(k.allowed());
         break;
       case KeyType::Ints:
         value = "list of whole numbers in [" + number(k.min) + ", " + number(k.max) + "]";
@@ -674,7 +668,7 @@ std::string stepKeyTableMarkdown() {
     for (Stage s : k.stages) stages.push_back(toString(s));
     const std::string name = k.name == "reflectance" ? "reflectance.<surface>" : k.name;
     out << "| `" << name << "` | " << value << " | " << (k.defaultText.empty() ? "-" : k.defaultText) << " | "
-        << (k.control ? "yes" : "") << " | " << (stages.empty() ? "all" : joined(stages, ", ")) << " | "
+        << (k.control ? "yes" : "") << " | " << (stages.empty() ? "all" : joinedNames(stages)) << " | "
         << k.tooltip << " |\n";
   }
   return out.str();

@@ -98,4 +98,10 @@ Vec3 parseVec3(const std::string& text, const SourceLocation& where, const std::
   return v;
 }
 
+std::string joinedNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
 }  // namespace rt::lesson

@@ -16,6 +16,8 @@ double parseDouble(const std::string& text, const SourceLocation& where, const s
 bool parseBool(const std::string& text, const SourceLocation& where, const std::string& key);
 // "a, b, c" or "a b c": trimmed, empty items dropped.
 std::vector<std::string> parseList(const std::string& text);
+// "a, b, c": the names an error message offers.
+std::string joinedNames(const std::vector<std::string>& names);
 std::vector<int> parseIntList(const std::string& text, const SourceLocation& where, const std::string& key,
                               int min, int max);
 // One number (grey) or three (r g b), each in [min, max].
