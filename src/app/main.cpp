@@ -20,6 +20,28 @@ void nameTheApplication() {
   QCoreApplication::setApplicationVersion("0.1.0");
 }
 
+// Shows the window: writes the screenshot and returns, or runs until the reader closes it. The exit status.
+int runWindow(rt::app::MainWindow& window, const rt::app::AppOptions& options) {
+  if (!options.screenshot.isEmpty()) {
+    window.setBlockingComputations(true);
+    window.show();
+    if (!window.start()) {
+      std::fprintf(stderr, "radiosity-textbook: %s\n", qPrintable(window.lastError()));
+      return 1;
+    }
+    rt::app::saveScreenshot(window, options.screenshot);
+    if (!window.lastError().isEmpty()) {
+      std::fprintf(stderr, "radiosity-textbook: %s\n", qPrintable(window.lastError()));
+      return 1;
+    }
+    std::fprintf(stderr, "screenshot written to %s\n", qPrintable(options.screenshot));
+    return 0;
+  }
+  window.show();
+  QTimer::singleShot(0, &window, [&window] { window.start(); });
+  return QApplication::exec();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -48,28 +70,16 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  int status = 0;
   try {
-    rt::app::MainWindow window(options);
-    if (!options.screenshot.isEmpty()) {
-      window.setBlockingComputations(true);
-      window.show();
-      if (!window.start()) {
-        std::fprintf(stderr, "radiosity-textbook: %s\n", qPrintable(window.lastError()));
-        return 1;
-      }
-      rt::app::saveScreenshot(window, options.screenshot);
-      if (!window.lastError().isEmpty()) {
-        std::fprintf(stderr, "radiosity-textbook: %s\n", qPrintable(window.lastError()));
-        return 1;
-      }
-      std::fprintf(stderr, "screenshot written to %s\n", qPrintable(options.screenshot));
-      return 0;
+    {
+      rt::app::MainWindow window(options);
+      status = runWindow(window, options);
     }
-    window.show();
-    QTimer::singleShot(0, &window, [&window] { window.start(); });
-    return QApplication::exec();
+    rt::typeset::releaseDeletedWebViews();  // before the application goes
   } catch (const std::exception& e) {
     std::fprintf(stderr, "radiosity-textbook: %s\n", e.what());
     return 1;
   }
+  return status;
 }

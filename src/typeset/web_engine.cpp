@@ -30,6 +30,14 @@ void prepareWebEngine() {
   QLoggingCategory::setFilterRules("qt.webenginecontext.info=false\nqt.webenginecontext.debug=false");
 }
 
+void releaseDeletedWebViews() {
+  // Deleting one part queues the deletion of others, and Chromium answers on its own threads: a few rounds.
+  for (int round = 0; round < 4; ++round) {
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 25);
+  }
+}
+
 QString katexDirectory() {
   const QString configured = qEnvironmentVariable("RT_KATEX_DIR");
   return configured.isEmpty() ? QString(RT_KATEX_DIR) : configured;

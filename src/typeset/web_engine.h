@@ -17,6 +17,12 @@ namespace rt::typeset {
 // (a container, a build machine), Chromium's sandbox cannot start and must be turned off.
 void prepareWebEngine();
 
+// Call after the last web view is deleted and before the QApplication goes (the window closed, a test's
+// window gone): a deleted view leaves parts of itself to deleteLater, and WebEngine must delete them while
+// its profile and the application still exist. Left to the application's destructor, they were deleted
+// after Chromium's teardown and corrupted the heap at exit.
+void releaseDeletedWebViews();
+
 // KaTeX's folder (katex.min.js, katex.min.css, fonts/): $RT_KATEX_DIR, or the one found when building.
 QString katexDirectory();
 // The script that replaces every <x-equation> element of the page by KaTeX's rendering. It returns (and

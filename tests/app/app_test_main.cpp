@@ -37,6 +37,12 @@ void reexecUnderXvfb(const std::vector<std::string>& original) {
   execvp("xvfb-run", raw.data());  // returns only on failure: the tests then skip
 }
 
+// After each test, whose window is gone by then, what its web view left to deleteLater goes while the
+// application exists (typeset::releaseDeletedWebViews).
+class ReleaseWebViews : public testing::EmptyTestEventListener {
+  void OnTestEnd(const testing::TestInfo&) override { rt::typeset::releaseDeletedWebViews(); }
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -64,6 +70,7 @@ int main(int argc, char** argv) {
   QApplication::setOrganizationName("RadiosityTextbookTests");
   QApplication::setApplicationName(QString("app_tests-%1").arg(QApplication::applicationPid()));
   rt::app::test::installWarningCollector();
+  testing::UnitTest::GetInstance()->listeners().Append(new ReleaseWebViews);
   const int status = RUN_ALL_TESTS();
   QFile::remove(QSettings().fileName());
   return status;
