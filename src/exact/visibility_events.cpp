@@ -14,6 +14,9 @@ namespace {
 struct Edge {
   Vec3 a, b;
   bool receiver;
+  // The occluder parts the edge bounds (indices into blockingParts(); -1: none, or more than two). Both set
+  // for a crease, the edge of two non-coplanar parts (a prism's side and its cap, two neighbouring sides).
+  int face = -1, otherFace = -1;
 };
 
 struct Vertex {
@@ -64,10 +67,15 @@ std::vector<Edge> boundaryEdges(const std::vector<Polygon>& parts, double eps) {
       }
       if (inner) continue;
       bool duplicate = false;  // the same edge of two non-coplanar occluders (a crease): one is enough
-      for (const Edge& e : edges)
-        duplicate =
-            duplicate || (near(e.a, b, eps) && near(e.b, a, eps)) || (near(e.a, a, eps) && near(e.b, b, eps));
-      if (!duplicate) edges.push_back({a, b, false});
+      for (Edge& e : edges)
+        if ((near(e.a, b, eps) && near(e.b, a, eps)) || (near(e.a, a, eps) && near(e.b, b, eps))) {
+          duplicate = true;
+          if (e.otherFace < 0)
+            e.otherFace = static_cast<int>(i);
+          else
+            e.face = -1;  // bounds three parts or more: no crease to reason about
+        }
+      if (!duplicate) edges.push_back({a, b, false, static_cast<int>(i), -1});
     }
   }
   return edges;
@@ -127,15 +135,38 @@ bool chord(const Polygon& polygon, const Vec3& normal, const Vec3& p, const Vec3
   return lo < hi;
 }
 
+// The side of the plane (through `origin`, normal n) that the convex part lies on when the plane holds one
+// of its edges: the sign of its farthest corner (0: in the plane).
+int sideOf(const Polygon& part, const Vec3& origin, const Vec3& n, double eps) {
+  double far = 0;
+  for (const Vec3& c : part) {
+    const double d = n.dot(c - origin);
+    if (std::abs(d) > std::abs(far)) far = d;
+  }
+  return far > eps ? 1 : far < -eps ? -1 : 0;
+}
+
 // The part of the source domain where vertex v and edge [a, b] line up as seen from x: the line where the
 // plane through v, a, b meets the source plane, restricted to the double wedge at v spanned by a and b.
-void addEvent(const Vertex& v, const Edge& e, const Polygon& domain, const Vec3& s0, const Vec3& ns,
-              double eps, std::vector<EventSegment>& out) {
+// From x on that plane, the plane through x and the edge is the same plane; when it has the two parts of a
+// crease on opposite sides, the edge is no silhouette edge from x (the line of sight along it passes
+// between them, into the solid), its shadow no boundary of the shadows, and the alignment no event. A
+// convex solid's vertex and edge line up so unless they share a face: of the thousands of vertex-edge
+// planes of a prism, only its face planes are left.
+void addEvent(const Vertex& v, const Edge& e, const std::vector<Polygon>& parts, const Polygon& domain,
+              const Vec3& s0, const Vec3& ns, double eps, std::vector<EventSegment>& out) {
   if (near(v.p, e.a, eps) || near(v.p, e.b, eps)) return;
   const Vec3 u = e.a - v.p, w = e.b - v.p;
   const Vec3 n = u.cross(w);
   const double nn = n.squaredNorm();
   if (nn <= 1e-18 * u.squaredNorm() * w.squaredNorm()) return;  // v on the edge's line
+  if (e.face >= 0 && e.otherFace >= 0) {
+    const Vec3 unit = n / std::sqrt(nn);
+    if (sideOf(parts[static_cast<std::size_t>(e.face)], e.a, unit, eps) *
+            sideOf(parts[static_cast<std::size_t>(e.otherFace)], e.a, unit, eps) <
+        0)
+      return;
+  }
   Vec3 d = n.cross(ns);
   if (d.squaredNorm() <= 1e-18 * nn) return;  // the plane is parallel to the source plane
   d.normalize();
@@ -181,13 +212,13 @@ std::vector<EventSegment> visibilityEvents(const PairGeometry& pair) {
   std::vector<Vertex> vertices = cornerVertices(edges, eps);
   const std::size_t occluderEdges = edges.size(), occluderVertices = vertices.size();
   for (std::size_t k = 0; k < receiver.size(); ++k) {
-    edges.push_back({receiver[k], receiver[(k + 1) % receiver.size()], true});
+    edges.push_back({receiver[k], receiver[(k + 1) % receiver.size()], true, -1, -1});
     vertices.push_back({receiver[k], true});
   }
   for (std::size_t i = 0; i < vertices.size(); ++i)
     for (std::size_t j = 0; j < edges.size(); ++j)
       if (i < occluderVertices || j < occluderEdges)
-        addEvent(vertices[i], edges[j], pair.integrationDomain, s0, ns, eps, events);
+        addEvent(vertices[i], edges[j], parts, pair.integrationDomain, s0, ns, eps, events);
   return events;
 }
 

@@ -7,7 +7,9 @@
 // The events found are the vertex-edge ones (EV, VE: a vertex and an edge, of the receiver or of the
 // occluders, line up as seen from x), which are straight lines in the source plane. Edges that can never be
 // on the boundary of the occluders' shadow (an edge shared by two coplanar occluders: the inner mesh lines of
-// a block face) and vertices in the middle of a straight boundary are left out. Edge-edge-edge events
+// a block face) and vertices in the middle of a straight boundary are left out, and so is an edge two
+// occluders share at an angle wherever the event's plane passes between them (a convex solid's vertex and
+// edge then line up only in its face planes). Edge-edge-edge events
 // (conics) are not split along; the adaptive refinement still finds them, only more slowly.
 #pragma once
 
