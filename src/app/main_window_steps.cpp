@@ -27,6 +27,7 @@
 #include "app/residual_chart.h"
 #include "app/scene_settings.h"
 #include "app/scene_view.h"
+#include "app/step_figures.h"
 #include "app/wording.h"
 #include "core/formfactor/formfactor_method.h"
 #include "core/io/scene_loader.h"
@@ -249,10 +250,13 @@ void MainWindow::requestComputation() {
     LessonLibrary* library = library_.get();
     const int l = lesson_, s = step_;
     const lesson::StepParameters parameters = parameters_;
-    job = [library, l, s, parameters, compare, choice](Progress& progress) {
+    const QString folder = figures_->newFolder();
+    job = [library, l, s, parameters, compare, choice, folder](Progress& progress) {
       PipelineResult result = library->runStep(l, s, parameters, choice, progress);
       // Compare mode with nothing chosen still fills the right pane (the same result), so both panes show.
       if (compare && !result.compared) result.compared = std::make_shared<PipelineResult>(result);
+      const lesson::Lesson& lesson = library->lessons()[static_cast<std::size_t>(l)];
+      addStepFigures(result, lesson, lesson.steps[static_cast<std::size_t>(s)], parameters, folder, progress);
       return result;
     };
   } else if (mode_ == Mode::Scene) {
@@ -415,6 +419,8 @@ void MainWindow::showResult(std::shared_ptr<const PipelineResult> result) {
       // The figures are drawn with the reader's parameters (a matrix kind, a display key), as the step ran.
       lesson::Step shown = *step;
       shown.parameters = parameters_;
+      // Drawn on the worker thread with the step; else (a blocking computation) drawn here.
+      figures_->keep(pendingKey_, r.figures);
       if (figures_->showStep(lesson, shown, *stepResult, pendingKey_) > 0 && newStep)
         tabs_->setCurrentWidget(figures_);
     } catch (const std::exception& e) {
