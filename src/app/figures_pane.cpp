@@ -66,6 +66,19 @@ int FiguresPane::showImages(const QStringList& files, const QStringList& caption
   return count_;
 }
 
+QSize FiguresPane::drawSize() const {
+  constexpr int kLargest = 900, kSmallest = 480, kHigh = 680;
+  const QMargins margins = layout_->contentsMargins();
+  const int scrollBar = style()->pixelMetric(QStyle::PM_ScrollBarExtent);
+  const int wide = viewport()->width() - margins.left() - margins.right() - scrollBar;
+  // A caption of two lines above the figure.
+  const int high = viewport()->height() - margins.top() - margins.bottom() - 2 * fontMetrics().lineSpacing() -
+                   2 * layout_->spacing();
+  const int shown = static_cast<int>(std::min(wide, high * kLargest / kHigh) * devicePixelRatioF());
+  const int width = fill_ ? kLargest : std::clamp(shown, kSmallest, kLargest);
+  return {width, width * kHigh / kLargest};
+}
+
 QString FiguresPane::newFolder() {
   return folder_.isValid() ? folder_.filePath(QString::number(++serial_)) : QString();
 }
@@ -89,8 +102,8 @@ int FiguresPane::showStep(const lesson::Lesson& lesson, const lesson::Step& step
     drawn_.splice(drawn_.begin(), drawn_, kept);
   } else {
     const QString folder = figureStep(step).views.empty() ? QString() : newFolder();
-    figures = std::make_shared<StepFigures>(folder.isEmpty() ? StepFigures{}
-                                                             : drawStepFigures(lesson, step, result, folder));
+    figures = std::make_shared<StepFigures>(
+        folder.isEmpty() ? StepFigures{} : drawStepFigures(lesson, step, result, folder, drawSize()));
     keep(key, figures);  // figures drawn without a key are not kept
   }
   if (!figures->error.isEmpty()) throw std::runtime_error(figures->error.toStdString());

@@ -36,6 +36,10 @@ class FiguresPane : public QScrollArea {
   void keep(const QString& key, std::shared_ptr<const StepFigures> figures);
   // A new folder for drawStepFigures (the files of the figures on screen stay where they are).
   QString newFolder();
+  // The size to draw a figure at: as large as the pane shows one, in device pixels, from 480 x 363 up to
+  // 900 x 680 (the largest when it fills the main pane). A software renderer's frame costs in proportion to
+  // its pixels, and a figure drawn larger than the pane is only scaled down to fit.
+  QSize drawSize() const;
   // Shows figure images kept from an earlier run (a restored session's long step), under their captions.
   int showImages(const QStringList& files, const QStringList& captions);
   void clear();

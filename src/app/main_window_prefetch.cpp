@@ -49,10 +49,12 @@ void MainWindow::prefetchNextStep() {
   prefetched_ = {key, l, s, lesson_, step_};
   LessonLibrary* library = library_.get();
   const QString folder = figures_->newFolder();
-  prefetch_->start([library, l, s, parameters, folder](Progress& progress) {
+  const QSize size = figures_->drawSize();
+  prefetch_->start([library, l, s, parameters, folder, size](Progress& progress) {
     PipelineResult result = library->runStep(l, s, parameters, CompareChoice{}, progress);
     const lesson::Lesson& lesson = library->lessons()[static_cast<std::size_t>(l)];
-    addStepFigures(result, lesson, lesson.steps[static_cast<std::size_t>(s)], parameters, folder, progress);
+    addStepFigures(result, lesson, lesson.steps[static_cast<std::size_t>(s)], parameters, folder, size,
+                   progress);
     return result;
   });
 }

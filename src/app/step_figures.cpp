@@ -19,13 +19,13 @@ lesson::Step figureStep(const lesson::Step& step) {
 }
 
 StepFigures drawStepFigures(const lesson::Lesson& lesson, const lesson::Step& step,
-                            const lesson::StepResult& result, const QString& folder) {
+                            const lesson::StepResult& result, const QString& folder, QSize size) {
   StepFigures drawn;
   const lesson::Step others = figureStep(step);
   if (others.views.empty()) return drawn;
   viz::StepFigureSettings settings;
-  settings.width = 900;
-  settings.height = 680;
+  settings.width = size.width();
+  settings.height = size.height();
   std::vector<lesson::RenderedFigure> figures;
   try {
     const std::lock_guard lock(renderMutex());
@@ -47,14 +47,15 @@ StepFigures drawStepFigures(const lesson::Lesson& lesson, const lesson::Step& st
 }
 
 void addStepFigures(PipelineResult& result, const lesson::Lesson& lesson, const lesson::Step& step,
-                    const lesson::StepParameters& parameters, const QString& folder, Progress& progress) {
+                    const lesson::StepParameters& parameters, const QString& folder, QSize size,
+                    Progress& progress) {
   if (!result.stepResult || folder.isEmpty() || figureStep(step).views.empty()) return;
   if (progress.cancelled()) throw Cancelled();
   progress.report(1.0, "drawing the figures");
   lesson::Step shown = step;
   shown.parameters = parameters;
   result.figures = std::make_shared<StepFigures>(drawStepFigures(
-      lesson, shown, *std::static_pointer_cast<const lesson::StepResult>(result.stepResult), folder));
+      lesson, shown, *std::static_pointer_cast<const lesson::StepResult>(result.stepResult), folder, size));
 }
 
 }  // namespace rt::app

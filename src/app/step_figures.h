@@ -5,6 +5,7 @@
 #pragma once
 
 #include <QImage>
+#include <QSize>
 #include <QString>
 #include <QStringList>
 #include <vector>
@@ -26,14 +27,16 @@ struct StepFigures {
 lesson::Step figureStep(const lesson::Step& step);
 
 // Draws `step`'s figures (figureStep) from `result` into `folder` (created; one folder per call, since the
-// files of the figures on screen must stay). Safe on any thread (it holds renderMutex()).
+// files of the figures on screen must stay), `size` pixels each. Safe on any thread (it holds
+// renderMutex()).
 StepFigures drawStepFigures(const lesson::Lesson& lesson, const lesson::Step& step,
-                            const lesson::StepResult& result, const QString& folder);
+                            const lesson::StepResult& result, const QString& folder, QSize size);
 
 // A computed lesson step's figures into result.figures, drawn with the step's `parameters` (the reader's, as
 // the step ran); nothing for a step without figures. Throws Cancelled when the computation was cancelled
 // before they were drawn.
 void addStepFigures(PipelineResult& result, const lesson::Lesson& lesson, const lesson::Step& step,
-                    const lesson::StepParameters& parameters, const QString& folder, Progress& progress);
+                    const lesson::StepParameters& parameters, const QString& folder, QSize size,
+                    Progress& progress);
 
 }  // namespace rt::app
