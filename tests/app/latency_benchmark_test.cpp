@@ -6,6 +6,7 @@
 // a machine's speed). Run it idle, under Xvfb:
 //   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/release/tests/app_tests
 //     --gtest_also_run_disabled_tests --gtest_filter='AppLatencyBenchmark.*'
+// RT_LATENCY_LESSONS=id,id,... times only those lessons.
 #include <gtest/gtest.h>
 
 #include <QApplication>
