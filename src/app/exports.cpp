@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/render_lock.h"
 #include "core/io/matrix_export.h"
 #include "core/solvers/radiosity_system.h"
 #include "viz/lesson_figures.h"
@@ -53,6 +54,7 @@ std::string latexDocument(const std::string& bmatrix, long long columns) {
 
 void exportSceneFigure(const Mesh& mesh, const Camera& camera, const viz::SceneViewData& data,
                        const viz::SceneViewOptions& options, const std::string& path) {
+  const std::lock_guard lock(renderMutex());
   viz::writeSceneFigure(mesh, camera, data, options, path);
 }
 
@@ -97,6 +99,7 @@ std::vector<std::string> exportStepFigures(const lesson::Lesson& lesson, const l
   settings.width = 1200;
   settings.height = 900;
   settings.format = format;
+  const std::lock_guard lock(renderMutex());
   viz::renderStepFigures(lesson, figures, result, folder, settings);
   std::vector<std::string> paths;
   for (std::string file : figures.figureFiles())

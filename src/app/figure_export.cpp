@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "app/lesson_session.h"
+#include "app/render_lock.h"
 #include "core/input_error.h"
 #include "core/progress.h"
 #include "core/vector_state.h"
@@ -109,6 +110,7 @@ void LessonFigureExport::drawStep(int s, const std::shared_ptr<const lesson::Ste
   settings.width = size_.width();
   settings.height = size_.height();
   try {
+    const std::lock_guard lock(renderMutex());
     written_ += static_cast<int>(
         viz::renderStepFigures(lesson, step, *result, folder_.toStdString(), settings).size());
   } catch (const std::exception& e) {

@@ -7,8 +7,7 @@
 #include <QStyle>
 #include <QVBoxLayout>
 #include <algorithm>
-
-#include "viz/lesson_figures.h"
+#include <stdexcept>
 
 namespace rt::app {
 
@@ -67,38 +66,28 @@ int FiguresPane::showImages(const QStringList& files, const QStringList& caption
   return count_;
 }
 
-FiguresPane::Drawn FiguresPane::draw(const lesson::Lesson& lesson, const lesson::Step& step,
-                                     const lesson::StepResult& result) {
-  Drawn drawn;
-  lesson::Step others = step;
-  others.views.clear();
-  for (lesson::View v : step.views)
-    // The walkthrough is flown in the 3D view (CameraPathPlayer), not drawn as frames here.
-    if (v != lesson::View::Scene && v != lesson::View::Walkthrough) others.views.push_back(v);
-  if (others.views.empty() || !folder_.isValid()) return drawn;
-  // A fresh folder per call: the files of the previous step may still be on screen while these are written.
-  const QString dir = folder_.filePath(QString::number(++serial_));
-  viz::StepFigureSettings settings;
-  settings.width = 900;
-  settings.height = 680;
-  const auto figures = viz::renderStepFigures(lesson, others, result, dir.toStdString(), settings);
-  const auto files = others.figureFiles();
-  for (std::size_t k = 0; k < files.size(); ++k) {
-    const QString path = QDir(dir).filePath(QString::fromStdString(files[k]));
-    QPixmap image(path);
-    if (image.isNull()) continue;  // vector-only formats are not shown here
-    drawn.images.push_back(image);
-    drawn.files << path;
-    drawn.captions << (k < figures.size() ? QString::fromStdString(figures[k].caption) : QString());
-  }
-  return drawn;
+QSize FiguresPane::drawSize() const {
+  constexpr int kLargest = 900, kSmallest = 480, kHigh = 680;
+  const QMargins margins = layout_->contentsMargins();
+  const int scrollBar = style()->pixelMetric(QStyle::PM_ScrollBarExtent);
+  const int wide = viewport()->width() - margins.left() - margins.right() - scrollBar;
+  // A caption of two lines above the figure.
+  const int high = viewport()->height() - margins.top() - margins.bottom() - 2 * fontMetrics().lineSpacing() -
+                   2 * layout_->spacing();
+  const int shown = static_cast<int>(std::min(wide, high * kLargest / kHigh) * devicePixelRatioF());
+  const int width = fill_ ? kLargest : std::clamp(shown, kSmallest, kLargest);
+  return {width, width * kHigh / kLargest};
 }
 
-void FiguresPane::remember(Drawn drawn) {
-  if (drawn.key.isEmpty()) return;
-  drawn_.remove_if([&](const Drawn& d) { return d.key == drawn.key; });
-  drawn_.push_front(std::move(drawn));
-  if (drawn_.size() > kDrawnKept) drawn_.pop_back();
+QString FiguresPane::newFolder() {
+  return folder_.isValid() ? folder_.filePath(QString::number(++serial_)) : QString();
+}
+
+void FiguresPane::keep(const QString& key, std::shared_ptr<const StepFigures> figures) {
+  if (key.isEmpty() || !figures) return;
+  drawn_.remove_if([&](const Drawn& d) { return d.key == key; });
+  drawn_.push_front({key, std::move(figures)});
+  while (drawn_.size() > kDrawnKept) drawn_.pop_back();
 }
 
 int FiguresPane::showStep(const lesson::Lesson& lesson, const lesson::Step& step,
@@ -107,30 +96,22 @@ int FiguresPane::showStep(const lesson::Lesson& lesson, const lesson::Step& step
   const auto kept = key.isEmpty() ? drawn_.end()
                                   : std::find_if(drawn_.begin(), drawn_.end(),
                                                  [&](const Drawn& d) { return d.key == key; });
+  std::shared_ptr<const StepFigures> figures;
   if (kept != drawn_.end()) {
+    figures = kept->figures;
     drawn_.splice(drawn_.begin(), drawn_, kept);
   } else {
-    Drawn drawn = draw(lesson, step, result);
-    drawn.key = key;
-    drawn_.push_front(std::move(drawn));
+    const QString folder = figureStep(step).views.empty() ? QString() : newFolder();
+    figures = std::make_shared<StepFigures>(
+        folder.isEmpty() ? StepFigures{} : drawStepFigures(lesson, step, result, folder, drawSize()));
+    keep(key, figures);  // figures drawn without a key are not kept
   }
-  const Drawn& d = drawn_.front();
-  for (std::size_t k = 0; k < d.images.size(); ++k) addFigure(d.images[k], d.files[k], d.captions[k]);
+  if (!figures->error.isEmpty()) throw std::runtime_error(figures->error.toStdString());
+  for (std::size_t k = 0; k < figures->images.size(); ++k)
+    addFigure(QPixmap::fromImage(figures->images[k]), figures->files[static_cast<qsizetype>(k)],
+              figures->captions[static_cast<qsizetype>(k)]);
   fitFigures();
-  // Figures drawn without a key are not kept.
-  if (key.isEmpty()) drawn_.pop_front();
-  while (drawn_.size() > kDrawnKept) drawn_.pop_back();
   return count_;
-}
-
-void FiguresPane::prepare(const lesson::Lesson& lesson, const lesson::Step& step,
-                          const lesson::StepResult& result, const QString& key) {
-  if (key.isEmpty() ||
-      std::any_of(drawn_.begin(), drawn_.end(), [&](const Drawn& d) { return d.key == key; }))
-    return;
-  Drawn drawn = draw(lesson, step, result);
-  drawn.key = key;
-  remember(std::move(drawn));
 }
 
 void FiguresPane::resizeEvent(QResizeEvent* event) {

@@ -10,6 +10,9 @@
 #include <list>
 #include <vector>
 
+#include <memory>
+
+#include "app/step_figures.h"
 #include "lesson/lesson.h"
 #include "lesson/step_result.h"
 
@@ -28,10 +31,15 @@ class FiguresPane : public QScrollArea {
   // when their key comes back, instead of being drawn again.
   int showStep(const lesson::Lesson& lesson, const lesson::Step& step, const lesson::StepResult& result,
                const QString& key = QString());
-  // Draws the figures showStep would draw for `key` into memory without showing them (a step computed
-  // ahead): showStep with that key then shows them at once.
-  void prepare(const lesson::Lesson& lesson, const lesson::Step& step, const lesson::StepResult& result,
-               const QString& key);
+  // Keeps figures drawn elsewhere (on the worker thread, with the step's computation) under `key`: showStep
+  // with that key then shows them at once.
+  void keep(const QString& key, std::shared_ptr<const StepFigures> figures);
+  // A new folder for drawStepFigures (the files of the figures on screen stay where they are).
+  QString newFolder();
+  // The size to draw a figure at: as large as the pane shows one, in device pixels, from 480 x 363 up to
+  // 900 x 680 (the largest when it fills the main pane). A software renderer's frame costs in proportion to
+  // its pixels, and a figure drawn larger than the pane is only scaled down to fit.
+  QSize drawSize() const;
   // Shows figure images kept from an earlier run (a restored session's long step), under their captions.
   int showImages(const QStringList& files, const QStringList& captions);
   void clear();
@@ -53,10 +61,6 @@ class FiguresPane : public QScrollArea {
  private:
   void fitFigures();
   bool addFigure(const QString& path, const QString& caption);
-  // Draws the step's figures other than the 3D view into a new folder: files, captions and images.
-  struct Drawn;
-  Drawn draw(const lesson::Lesson& lesson, const lesson::Step& step, const lesson::StepResult& result);
-  void remember(Drawn drawn);
   void addFigure(const QPixmap& pixmap, const QString& path, const QString& caption);
   struct Figure {
     QLabel* caption;
@@ -65,11 +69,10 @@ class FiguresPane : public QScrollArea {
   };
   std::vector<Figure> figures_;
   QStringList files_, captions_;
-  // The figures drawn under the last keys given to showStep, the most recent first.
+  // The figures drawn under the last keys given to showStep or keep, the most recent first.
   struct Drawn {
     QString key;
-    std::vector<QPixmap> images;
-    QStringList files, captions;
+    std::shared_ptr<const StepFigures> figures;
   };
   std::list<Drawn> drawn_;
   QTemporaryDir folder_;

@@ -19,6 +19,7 @@
 #include "app/lesson_session.h"
 #include "app/main_window.h"
 #include "app/progress_strip.h"
+#include "app/render_lock.h"
 #include "app/scene_view.h"
 #include "app/wording.h"
 #include "lesson/step_result.h"
@@ -38,6 +39,7 @@ QImage paneImage(const SceneView& view, const Mesh& mesh, QSize size) {
   viz::SceneViewOptions options = view.viewOptions();
   options.image.width = size.width();
   options.image.height = size.height();
+  const std::lock_guard lock(renderMutex());
   auto window = viz::makeOffscreenWindow(options.image.width, options.image.height);
   viz::addSceneView(window, mesh, view.currentCamera(), view.viewData(), options);
   int width = 0, height = 0;

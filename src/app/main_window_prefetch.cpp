@@ -1,6 +1,6 @@
-// MainWindow: the next step computed ahead while the reader reads this one. Its result joins the recent
-// results and its figures are drawn into the figures pane's memory, so that Page Down shows it as a revisit
-// is shown: from memory, without waiting for the computation or the figures.
+// MainWindow: the next step computed ahead while the reader reads this one, its figures drawn with it on the
+// worker thread. Its result joins the recent results and its figures the figures pane's memory, so that Page
+// Down shows it as a revisit is shown: from memory, without waiting for the computation or the figures.
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QThread>
@@ -9,6 +9,7 @@
 #include "app/figures_pane.h"
 #include "app/lesson_session.h"
 #include "app/main_window.h"
+#include "app/step_figures.h"
 #include "lesson/step_result.h"
 
 namespace rt::app {
@@ -47,25 +48,22 @@ void MainWindow::prefetchNextStep() {
   if (recent_.find(key)) return;
   prefetched_ = {key, l, s, lesson_, step_};
   LessonLibrary* library = library_.get();
-  prefetch_->start([library, l, s, parameters](Progress& progress) {
-    return library->runStep(l, s, parameters, CompareChoice{}, progress);
+  const QString folder = figures_->newFolder();
+  const QSize size = figures_->drawSize();
+  prefetch_->start([library, l, s, parameters, folder, size](Progress& progress) {
+    PipelineResult result = library->runStep(l, s, parameters, CompareChoice{}, progress);
+    const lesson::Lesson& lesson = library->lessons()[static_cast<std::size_t>(l)];
+    addStepFigures(result, lesson, lesson.steps[static_cast<std::size_t>(s)], parameters, folder, size,
+                   progress);
+    return result;
   });
 }
 
 void MainWindow::keepPrefetched(std::shared_ptr<const PipelineResult> result) {
   const Prefetched p = prefetched_;
   recent_.keep(p.key, result);
-  const auto stepResult = std::static_pointer_cast<const lesson::StepResult>(result->stepResult);
-  // The figures are drawn (on this thread: the offscreen windows need the X server it owns) only if the
-  // reader is still on the step it was computed after; else it only joins the results in memory.
-  if (stepResult && mode_ == Mode::Lesson && lesson_ == p.afterLesson && step_ == p.afterStep) {
-    try {
-      const auto& lesson = library_->lessons()[static_cast<std::size_t>(p.lesson)];
-      figures_->prepare(lesson, lesson.steps[static_cast<std::size_t>(p.step)], *stepResult, p.key);
-    } catch (const std::exception&) {
-      // Drawn again, with its error shown, when the reader opens the step.
-    }
-  }
+  // Its figures were drawn on the worker thread with it: Page Down shows them at once.
+  figures_->keep(p.key, result->figures);
   prefetchNextStep();  // the reader may have moved on meanwhile: the step next to where the reader is now
 }
 

@@ -13,6 +13,8 @@
 
 namespace rt::app {
 
+struct StepFigures;
+
 struct PipelineResult {
   std::shared_ptr<const Scene> scene;  // with the overrides applied
   std::shared_ptr<const Mesh> mesh;
@@ -37,6 +39,9 @@ struct PipelineResult {
       stepResult;  // a lesson::StepResult (kept opaque so that core users need no lesson)
   // Compare mode: the same scene with the compared settings (another solver or form-factor method).
   std::shared_ptr<const PipelineResult> compared;
+  // A lesson step's figures other than the 3D view, drawn on the worker thread with the step (StepFigures,
+  // app/step_figures.h); null when they were not drawn there.
+  std::shared_ptr<const StepFigures> figures;
 
   bool valid() const { return mesh != nullptr; }
 };

@@ -1,5 +1,7 @@
 #include "app/vtk_widget.h"
 
+#include "app/render_lock.h"
+
 #include <vtkCommand.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGenericRenderWindowInteractor.h>
@@ -170,7 +172,10 @@ void VtkWidget::paintGL() {
   // VTK draws into a framebuffer of its own, which Qt never discards: a paint that Qt asks for (an expose,
   // a grab) copies the last frame again, and only a changed scene is rendered, a frame at a million elements
   // costing a good part of a second in a software renderer.
-  if (renderPending_) renderWindow_->Render();
+  if (renderPending_) {
+    const std::lock_guard lock(renderMutex());
+    renderWindow_->Render();
+  }
   renderPending_ = false;
   state->Pop();
 

@@ -72,6 +72,9 @@ std::string base64(const unsigned char* data, std::size_t size) {
 vtkSmartPointer<vtkImageData> grab(vtkRenderWindow* window) {
   window->Render();
   auto filter = vtkSmartPointer<vtkWindowToImageFilter>::New();
+  // The frame just rendered is read as it is: the filter's own render would draw it a second time (a
+  // construction figure's depth peeling costs a tenth of a second per frame in a software renderer).
+  filter->ShouldRerenderOff();
   filter->SetInput(window);
   filter->SetInputBufferTypeToRGB();
   filter->ReadFrontBufferOff();
@@ -203,6 +206,7 @@ void writeContextView(vtkContextView* view, const std::string& path, const std::
                       const std::string& description, const std::function<void(std::string& svg)>& amendSvg) {
   const FigureFormat format = figureFormatOf(path);
   vtkRenderWindow* window = view->GetRenderWindow();
+  // A chart lays itself out in its first frame and is drawn in that layout in the next (grab's).
   window->Render();
   if (format == FigureFormat::Png) {
     writePng(grab(window), path);

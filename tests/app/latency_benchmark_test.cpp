@@ -6,6 +6,7 @@
 // a machine's speed). Run it idle, under Xvfb:
 //   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/release/tests/app_tests
 //     --gtest_also_run_disabled_tests --gtest_filter='AppLatencyBenchmark.*'
+// RT_LATENCY_LESSONS=id,id,... times only those lessons.
 #include <gtest/gtest.h>
 
 #include <QApplication>
@@ -17,6 +18,7 @@
 #include <QTest>
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <string>
 #include <vector>
@@ -107,6 +109,9 @@ TEST(AppLatencyBenchmark, DISABLED_StepsRevisitsAndControls) {
   std::printf("| lesson | step | next | revisit | control |\n");
   for (int l = 0; l < static_cast<int>(lessons.size()); ++l) {
     const auto& lesson = lessons[static_cast<std::size_t>(l)];
+    if (const char* only = std::getenv("RT_LATENCY_LESSONS");
+        only && ("," + std::string(only) + ",").find("," + lesson.id + ",") == std::string::npos)
+      continue;
     ASSERT_TRUE(window->openStep(l, 0));
     window->waitUntilIdle(600000);
     const auto& steps = lesson.steps;
