@@ -8,7 +8,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 41> kViews{{
+constexpr std::array<std::pair<View, const char*>, 42> kViews{{
     {View::Scene, "scene"},
     {View::BasisError, "basis-error"},
     {View::FormFactor, "formfactor"},
@@ -50,6 +50,7 @@ constexpr std::array<std::pair<View, const char*>, 41> kViews{{
     {View::Glossy, "glossy"},
     {View::TVertices, "t-vertices"},
     {View::Focus, "focus"},
+    {View::Motion, "motion"},
 }};
 
 }  // namespace
@@ -132,15 +133,17 @@ const std::vector<StageInfo>& stageTable() {
       {Stage::RayTrace,
        "raytrace",
        "B with `solver`; Whitted images of `image-size` (`ray-depth`, `shadow-rays`, `ray-epsilon`, "
-       "`light-size`, `mirrors`, `gloss`, `pixel-samples`, `aperture`, `focus-distance`) with their rays "
+       "`light-size`, `mirrors`, `gloss`, `pixel-samples`, `aperture`, `focus-distance`, `moving`, `motion`) "
+       "with their rays "
        "counted by kind and timed, "
        "against "
        "the cost formula; hard against soft shadows; epsilon 0, the step's and too large, with the acne and "
-       "leaks counted; ideal against glossy mirrors; a pinhole against a lens; the ray tree of pixel "
+       "leaks counted; ideal against glossy mirrors; a pinhole against a lens; still against moving; the ray "
+       "tree of pixel "
        "(`pixel-x`, `pixel-y`); "
        "path-traced images (`paths`) with 0, 1, 2 and any number of bounces",
        {V::Scene, V::RayTree, V::Shadows, V::Epsilon, V::RayCost, V::Whitted, V::PathBounces, V::Glossy,
-        V::Focus}},
+        V::Focus, V::Motion}},
       {Stage::Reflection,
        "reflection",
        "the BRDF `brdf-model` with `phong-exponent`, `specular-fraction` and `anisotropy` for light arriving "

@@ -82,6 +82,7 @@ enum class View {
   Discontinuity,  // refine stage: the mesh with its critical lines, umbra/penumbra boundaries apart
   Glossy,         // raytrace stage: the mirrors ideal beside the same mirrors glossy (gloss, pixel-samples)
   Focus,          // raytrace stage: the pinhole picture beside the lens's (aperture, focus-distance)
+  Motion,         // raytrace stage: the scene standing still beside it with `moving` in motion (motion)
   BasisError,     // elements stage: error against elements per basis, log-log, with the fitted orders
   TVertices,      // refine stage: the mesh with its T-vertices and the long edges they split
 };
@@ -183,6 +184,8 @@ struct StepParameters {
   double focusDistance = 0.0;    // the lens's plane of focus along the view (0: the camera's target)
   int pixelX = 64, pixelY = 64;  // the pixel whose ray tree is drawn
   std::string mirrors;           // surfaces that reflect as mirrors, comma-separated
+  std::string moving;            // surfaces that move while the shutter is open, comma-separated
+  double motion = 0.0;           // how far they move then, along the scene's x axis (scene units)
   // reflection stage: the BRDF shown (core/brdf.h) and the direction light arrives from
   std::string brdfModel = "phong";
   double phongExponent = 16.0;    // q

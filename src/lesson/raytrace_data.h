@@ -20,6 +20,8 @@ struct RayTraceData {
   RgbImage idealMirrors;                   // the step's settings with gloss 0 (the glossy view)
   RgbImage pinhole;                        // the step's settings through a pinhole (the focus view)
   double aperture = 0, focusDistance = 0;  // the lens's radius and the plane of focus it used
+  RgbImage still;                          // the step's settings without motion (the motion view)
+  double motion = 0;                       // how far the moving surfaces travel while the shutter is open
   double gloss = 0;
   int pixelSamples = 1;
   double epsilon = 0, largeEpsilon = 0;

@@ -2,11 +2,13 @@
 // solution of the same scene. The tracer (core/raytrace) counts the rays it casts by kind, and the stage
 // sets them against the cost formula over a range of depths; it renders the hard and soft shadows of one
 // and of `shadow-rays` shadow rays, the acne and leaks of an epsilon of 0, the step's and a too large one,
-// renders the step's lens beside a pinhole (depth of field), and records the ray tree of one pixel.
+// renders the step's lens beside a pinhole (depth of field) and its moving surfaces beside the same standing
+// still (motion blur), and records the ray tree of one pixel.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <sstream>
 
 #include "core/pathtrace/image_compare.h"
@@ -20,19 +22,19 @@
 namespace rt::lesson::detail {
 namespace {
 
-// The surfaces named in `mirrors`, as indices into the scene's surfaces.
-std::vector<int> mirrorSurfaces(const StageContext& c) {
+// The surfaces named in the list `key` (`mirrors`, `moving`), as indices into the scene's surfaces.
+std::vector<int> namedSurfaces(const StageContext& c, const std::string& key, const std::string& list) {
   std::vector<int> out;
-  std::istringstream list(c.parameters.mirrors);
+  std::istringstream names(list);
   std::string name;
-  while (std::getline(list, name, ',')) {
+  while (std::getline(names, name, ',')) {
     name.erase(0, name.find_first_not_of(" \t"));
     name.erase(name.find_last_not_of(" \t") + 1);
     if (name.empty()) continue;
     const auto& surfaces = c.result.scene.surfaces;
     const auto found =
         std::find_if(surfaces.begin(), surfaces.end(), [&](const Surface& s) { return s.name == name; });
-    if (found == surfaces.end()) c.fail("mirrors", "the scene has no surface '" + name + "'");
+    if (found == surfaces.end()) c.fail(key, "the scene has no surface '" + name + "'");
     out.push_back(static_cast<int>(found - surfaces.begin()));
   }
   return out;
@@ -72,11 +74,11 @@ Rgb surfaceMeanOf(const RgbImage& image, const std::vector<int>& elements, const
   return pixels.empty() ? Rgb::Zero() : Rgb(sum / static_cast<double>(pixels.size()));
 }
 
-// The depth of field on each surface: the mean depth along the view of its pixels, the blur disc the lens
-// gives a point there, and the RMS difference of the lens's picture from the pinhole's over its pixels (edges
-// included: that is where a blur shows), relative to the pinhole picture's mean.
-void addFocusValues(StageContext& c, const TracingScene& tracing, const std::vector<int>& elements,
-                    const ThinLens& lens, const RayTraceData& d) {
+// Per surface: the mean depth along the view of its pixels, and the RMS difference of the picture `changed`
+// from `still` over its pixels (edges included: that is where a blur shows), relative to `still`'s mean, as
+// `<name>-difference.<surface>`.
+void addDifferenceValues(StageContext& c, const TracingScene& tracing, const std::vector<int>& elements,
+                         const RgbImage& still, const RgbImage& changed, const std::string& name) {
   const StepResult& r = c.result;
   const int size = c.parameters.imageSize;
   const Vec3 forward = (r.camera.target - r.camera.position).normalized();
@@ -88,19 +90,47 @@ void addFocusValues(StageContext& c, const TracingScene& tracing, const std::vec
       if (hit.element >= 0) depth[static_cast<std::size_t>(y) * size + x] = hit.distance * dir.dot(forward);
     }
   auto& v = c.result.values;
-  const double mean = imageMean(d.pinhole);
+  const double mean = imageMean(still);
   for (const Surface& surface : r.scene.surfaces) {
-    const auto pixels = surfacePixels(d.pinhole, elements, tracing.mesh(), r.scene, surface.name, true);
+    const auto pixels = surfacePixels(still, elements, tracing.mesh(), r.scene, surface.name, true);
     if (pixels.empty()) continue;
     double z = 0, squares = 0;
     for (const std::size_t k : pixels) {
       z += depth[k];
-      squares += (d.whitted.pixels[k] - d.pinhole.pixels[k]).matrix().squaredNorm() / 3;
+      squares += (changed.pixels[k] - still.pixels[k]).matrix().squaredNorm() / 3;
     }
     const double n = static_cast<double>(pixels.size());
     v["depth." + surface.name] = z / n;
-    v["blur-disc." + surface.name] = blurDiscPixels(r.camera, lens, size, z / n);
-    v["focus-difference." + surface.name] = mean > 0 ? std::sqrt(squares / n) / mean : 0.0;
+    v[name + "-difference." + surface.name] = mean > 0 ? std::sqrt(squares / n) / mean : 0.0;
+  }
+}
+
+// The depth of field on each surface: its depth and difference from the pinhole's picture, and the blur
+// disc the lens gives a point at that depth.
+void addFocusValues(StageContext& c, const TracingScene& tracing, const std::vector<int>& elements,
+                    const ThinLens& lens, const RayTraceData& d) {
+  addDifferenceValues(c, tracing, elements, d.pinhole, d.whitted, "focus");
+  auto& v = c.result.values;
+  for (const Surface& surface : c.result.scene.surfaces)
+    if (v.count("depth." + surface.name))
+      v["blur-disc." + surface.name] =
+          blurDiscPixels(c.result.camera, lens, c.parameters.imageSize, v["depth." + surface.name]);
+}
+
+// Motion blur: each surface's difference from the still picture, and for the moving ones the distance they
+// travel across the image while the shutter is open, in pixels at the image's centre: the motion across the
+// view over the depth, over the angle of one pixel.
+void addMotionValues(StageContext& c, const TracingScene& tracing, const std::vector<int>& elements,
+                     const std::vector<int>& moving, const Vec3& motion, const RayTraceData& d) {
+  addDifferenceValues(c, tracing, elements, d.still, d.whitted, "motion");
+  const StepResult& r = c.result;
+  auto& v = c.result.values;
+  const Vec3 forward = (r.camera.target - r.camera.position).normalized();
+  const double across = (motion - motion.dot(forward) * forward).norm();
+  const double pixel = 2 * std::tan(r.camera.fovYDegrees * std::numbers::pi / 360) / c.parameters.imageSize;
+  for (const int s : moving) {
+    const std::string& name = r.scene.surfaces[static_cast<std::size_t>(s)].name;
+    if (v.count("depth." + name)) v["motion-pixels." + name] = across / v["depth." + name] / pixel;
   }
 }
 
@@ -114,7 +144,13 @@ void computeRayTrace(StageContext& c) {
     c.fail("pixel-x", "the pixel lies outside the image (image-size " + std::to_string(size) + ")");
   if (p.pixelY >= size)
     c.fail("pixel-y", "the pixel lies outside the image (image-size " + std::to_string(size) + ")");
-  const std::vector<int> mirrors = mirrorSurfaces(c);
+  const std::vector<int> mirrors = namedSurfaces(c, "mirrors", p.mirrors);
+  const std::vector<int> moving = namedSurfaces(c, "moving", p.moving);
+  for (const int s : moving) {
+    const Surface& surface = r.scene.surfaces[static_cast<std::size_t>(s)];
+    if (r.scene.materials[static_cast<std::size_t>(surface.material)].isEmitter())
+      c.fail("moving", "'" + surface.name + "' emits light, and the lights stand still");
+  }
 
   // The radiosity solution, as the solve stage computes it.
   r.method = c.method();
@@ -141,6 +177,8 @@ void computeRayTrace(StageContext& c) {
   options.pixelSamples = p.pixelSamples;
   options.lens = {p.aperture, p.focusDistance};
   options.mirrorSurfaces = mirrors;
+  options.movingSurfaces = moving;
+  options.motion = Vec3(p.motion, 0, 0);
   options.seed = p.seed.value_or(1);
   options.checkShadows = true;
   const auto start = std::chrono::steady_clock::now();
@@ -168,6 +206,12 @@ void computeRayTrace(StageContext& c) {
     WhittedOptions pinhole = options;
     pinhole.lens.radius = 0;
     d.pinhole = WhittedTracer(tracing, pinhole).render(r.camera, size, size).B;
+  }
+  d.motion = p.motion;
+  if (wants(View::Motion)) {
+    WhittedOptions still = options;
+    still.motion = Vec3::Zero();
+    d.still = WhittedTracer(tracing, still).render(r.camera, size, size).B;
   }
 
   // One shadow ray per light: the hard shadows, and the epsilon's acne unblurred by the light's area.
@@ -249,6 +293,8 @@ void computeRayTrace(StageContext& c) {
   v["aperture"] = p.aperture;
   v["focus-distance"] = d.focusDistance;
   if (wants(View::Focus)) addFocusValues(c, tracing, main.element, options.lens, d);
+  v["motion"] = p.motion;
+  if (wants(View::Motion)) addMotionValues(c, tracing, main.element, moving, options.motion, d);
   v["rays.primary"] = static_cast<double>(n.primary);
   v["rays.shadow"] = static_cast<double>(n.shadow);
   v["rays.reflection"] = static_cast<double>(n.reflection);

@@ -206,6 +206,30 @@ void addChapterKeys(std::vector<StepKey>& t) {
                    "are diffuse.",
                .stages = {Stage::RayTrace},
                .slot = &P::mirrors});
+  t.push_back({.name = "moving",
+               .type = KeyType::Text,
+               .label = "Moving surfaces",
+               .tooltip =
+                   "Raytrace stage: the surfaces (comma-separated names) that move while the shutter is "
+                   "open, by `motion`; lights may not move.",
+               .stages = {Stage::RayTrace},
+               .slot = &P::moving});
+  t.push_back({.name = "motion",
+               .type = KeyType::Double,
+               .min = -1e6,
+               .max = 1e6,
+               .defaultText = "0",
+               .label = "Motion",
+               .tooltip =
+                   "Raytrace stage: how far the `moving` surfaces travel along the scene's x axis while "
+                   "the shutter is open, in the scene's units, at a constant speed and centred on where "
+                   "the scene puts them. Each primary ray sees them at its own time in the shutter "
+                   "interval (motion blur); 0 stands still.",
+               .control = true,
+               .decimals = 0,
+               .step = 20,
+               .stages = {Stage::RayTrace},
+               .slot = &P::motion});
   t.push_back(
       {.name = "brdf-model",
        .type = KeyType::Choice,

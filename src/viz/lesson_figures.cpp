@@ -357,6 +357,7 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
     case View::PathBounces:
     case View::Glossy:
     case View::Focus:
+    case View::Motion:
       return detail::renderRayTraceView(view, step, r, s, path);
     case View::Lobe:
     case View::PhongSweep:

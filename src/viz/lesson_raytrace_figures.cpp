@@ -107,6 +107,18 @@ std::string renderRayTraceView(lesson::View view, const lesson::Step& step, cons
              formatted("%.3g", d.aperture) + " focused at distance " + formatted("%.4g", d.focusDistance) +
              ": each primary ray starts at its own point of the lens, so only the plane of focus stays sharp";
     }
+    case lesson::View::Motion: {
+      const std::string rays =
+          std::to_string(d.pixelSamples) + (d.pixelSamples == 1 ? " ray per pixel" : " rays per pixel");
+      const std::string moving = step.parameters.moving.empty() ? "nothing" : step.parameters.moving;
+      const std::string motion = formatted("%.4g", d.motion);
+      writeImagePanelsFigure({{"standing still", d.still}, {moving + " moving " + motion, d.whitted}},
+                             stepPictureOptions(step, s, "Motion blur (" + rays + ")"), path);
+      return "The same Whitted picture with everything standing still, and with " + moving + " moving by " +
+             motion +
+             " along x while the shutter is open: each primary ray sees it at its own time, so the rays of a "
+             "pixel average its path";
+    }
     case lesson::View::PathBounces: {
       std::vector<ImagePanel> panels;
       for (std::size_t k = 0; k < d.pathBounces.size(); ++k) {

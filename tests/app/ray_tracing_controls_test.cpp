@@ -6,6 +6,7 @@
 #include <QDoubleSpinBox>
 #include <QSpinBox>
 #include <QTest>
+#include <cmath>
 
 #include "app/figures_pane.h"
 #include "app/lesson_session.h"
@@ -101,5 +102,84 @@ TEST(RayTraceControls, TheGlossExponentAndTheRaysPerPixelChangeThePicture) {
   EXPECT_DOUBLE_EQ(test::stepValue(*window, "pixel-samples"), 1.0);
   EXPECT_EQ(test::stepValue(*window, "rays.primary"), test::stepValue(*window, "pixels"));
   EXPECT_NE(window->figuresPane()->grab().toImage(), before) << "the figure was not redrawn";
+  EXPECT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
+}
+
+// The focus step: the lens's radius and its focus distance are number fields. A radius of 0 is the pinhole,
+// and the short block in front of the plane of focus turns sharp, in the picture and in its measured blur;
+// focusing on the short block instead turns the order round, the back wall now the blurred one.
+TEST(RayTraceControls, TheLensRadiusAndTheFocusDistanceChangeThePictureAndTheBlur) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  const int step = stepWithFigure(*window, "focus");
+  ASSERT_GE(step, 0);
+  ASSERT_TRUE(window->openLesson("ray-tracing", step)) << window->lastError().toStdString();
+  auto* aperture = qobject_cast<QDoubleSpinBox*>(window->parameterPanel()->editor("aperture"));
+  auto* focus = qobject_cast<QDoubleSpinBox*>(window->parameterPanel()->editor("focus-distance"));
+  ASSERT_NE(aperture, nullptr) << "aperture is offered as a number field";
+  ASSERT_NE(focus, nullptr) << "focus-distance is offered as a number field";
+  const double front = test::stepValue(*window, "focus-difference.short_block");
+  const double disc = test::stepValue(*window, "blur-disc.short_block");
+  EXPECT_GT(front, 0) << "the short block lies off the plane of focus";
+  EXPECT_GT(disc, 1);
+  const QImage picture = window->figuresPane()->grab().toImage();
+
+  test::typeInto(aperture, "0");
+  EXPECT_TRUE(window->parameterPanel()->lastRefusal().isEmpty())
+      << window->parameterPanel()->lastRefusal().toStdString();
+  EXPECT_DOUBLE_EQ(window->parameterPanel()->parameters().aperture, 0.0);
+  EXPECT_DOUBLE_EQ(test::stepValue(*window, "aperture"), 0.0);
+  EXPECT_EQ(test::stepValue(*window, "focus-difference.short_block"), 0.0) << "radius 0 is the pinhole";
+  EXPECT_EQ(test::stepValue(*window, "blur-disc.short_block"), 0.0);
+  EXPECT_NE(window->figuresPane()->grab().toImage(), picture) << "the figure was not redrawn";
+
+  test::typeInto(aperture, "40");
+  EXPECT_DOUBLE_EQ(test::stepValue(*window, "focus-difference.short_block"), front);
+  const QImage focusedFar = window->figuresPane()->grab().toImage();
+  const double near = test::stepValue(*window, "depth.short_block");
+  ASSERT_GT(near, 0);
+  test::typeInto(focus, QString::number(std::round(near)));
+  EXPECT_TRUE(window->parameterPanel()->lastRefusal().isEmpty())
+      << window->parameterPanel()->lastRefusal().toStdString();
+  EXPECT_NEAR(test::stepValue(*window, "focus-distance"), near, 1.0);
+  EXPECT_LT(test::stepValue(*window, "blur-disc.short_block"), 0.1 * disc) << "the short block is in focus";
+  EXPECT_GT(test::stepValue(*window, "focus-difference.back_wall"),
+            test::stepValue(*window, "focus-difference.short_block"))
+      << "focused near, the back wall blurs instead";
+  EXPECT_NE(window->figuresPane()->grab().toImage(), focusedFar) << "the figure was not redrawn";
+  EXPECT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
+}
+
+// The motion step: how far the short block slides while the shutter is open is a number field. 0 stands it
+// still, in the picture and in the streak's length and measured blur; a longer slide blurs more.
+TEST(RayTraceControls, TheMotionChangesThePictureAndTheStreak) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  const int step = stepWithFigure(*window, "motion");
+  ASSERT_GE(step, 0);
+  ASSERT_TRUE(window->openLesson("ray-tracing", step)) << window->lastError().toStdString();
+  auto* motion = qobject_cast<QDoubleSpinBox*>(window->parameterPanel()->editor("motion"));
+  ASSERT_NE(motion, nullptr) << "motion is offered as a number field";
+  const double streak = test::stepValue(*window, "motion-pixels.short_block");
+  const double blur = test::stepValue(*window, "motion-difference.short_block");
+  const double moved = motion->value();
+  EXPECT_GT(moved, 0);
+  EXPECT_GT(streak, 1);
+  EXPECT_GT(blur, 0);
+  const QImage picture = window->figuresPane()->grab().toImage();
+
+  test::typeInto(motion, "0");
+  EXPECT_TRUE(window->parameterPanel()->lastRefusal().isEmpty())
+      << window->parameterPanel()->lastRefusal().toStdString();
+  EXPECT_DOUBLE_EQ(window->parameterPanel()->parameters().motion, 0.0);
+  EXPECT_EQ(test::stepValue(*window, "motion-pixels.short_block"), 0.0);
+  EXPECT_EQ(test::stepValue(*window, "motion-difference.short_block"), 0.0) << "motion 0 stands still";
+  const QImage still = window->figuresPane()->grab().toImage();
+  EXPECT_NE(still, picture) << "the figure was not redrawn";
+
+  test::typeInto(motion, QString::number(2 * moved));
+  EXPECT_NEAR(test::stepValue(*window, "motion-pixels.short_block"), 2 * streak, 1e-6 * streak);
+  EXPECT_GT(test::stepValue(*window, "motion-difference.short_block"), blur);
+  EXPECT_NE(window->figuresPane()->grab().toImage(), still) << "the figure was not redrawn";
   EXPECT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
 }

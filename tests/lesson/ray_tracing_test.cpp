@@ -169,6 +169,40 @@ TEST(RayTracingLesson, TheLensBlursWhatLiesOffThePlaneOfFocus) {
   EXPECT_GT(near["focus-difference.back_wall"], near["focus-difference.short_block"]);
 }
 
+// The motion figure: the short block slides while the shutter is open; its pixels and the floor under its
+// shadow differ from the still picture's, the walls far from it not at all; its streak follows equation
+// (motion-streak), a motion of 0 is the still picture and a longer motion blurs more.
+TEST(RayTracingLesson, AMovingBlockBlursAndTheStandingOnesStaySharp) {
+  const Ran r = run("motion");
+  ASSERT_TRUE(r.result.raytrace);
+  EXPECT_GT(r["motion"], 0);
+  const double z = r["depth.short_block"];
+  const double pixel = 2 * std::tan(r.result.camera.fovYDegrees * std::numbers::pi / 360) / r["image-size"];
+  const Vec3 forward = (r.result.camera.target - r.result.camera.position).normalized();
+  const double across = (Vec3(r["motion"], 0, 0) - r["motion"] * forward.x() * forward).norm();
+  EXPECT_NEAR(r["motion-pixels.short_block"], across / z / pixel, 1e-9);
+  EXPECT_GT(r["motion-pixels.short_block"], 10.0) << "a streak over many pixels";
+  EXPECT_GT(r["motion-difference.short_block"], 2 * r["motion-difference.tall_block"]);
+  EXPECT_GT(r["motion-difference.short_block"], 0.05);
+  EXPECT_GT(r["motion-difference.floor"], 0.05) << "the block's shadow moves with it";
+  EXPECT_EQ(r["motion-difference.left_wall"], 0) << "far from the block the pictures agree exactly";
+  EXPECT_EQ(r["motion-difference.ceiling"], 0);
+  EXPECT_EQ(r["rays.primary"], r["pixels"] * r["pixel-samples"]) << "the time costs no extra rays";
+  const Ran still = run("motion", [](StepParameters& p) { p.motion = 0; });
+  EXPECT_EQ(still["motion-difference.short_block"], 0) << "motion 0 stands still";
+  EXPECT_EQ(still["motion-pixels.short_block"], 0);
+  const Ran longer = run("motion", [](StepParameters& p) { p.motion *= 2; });
+  EXPECT_NEAR(longer["motion-pixels.short_block"], 2 * r["motion-pixels.short_block"], 1e-9);
+  EXPECT_GT(longer["motion-difference.short_block"], r["motion-difference.short_block"]);
+}
+
+// A light may not move: the lights stand still in the tracer, so the stage refuses.
+TEST(RayTracingLesson, AMovingLightIsRefused) {
+  const std::string error =
+      test::inputErrorOf([] { run("motion", [](StepParameters& p) { p.moving = "light"; }); });
+  EXPECT_NE(error.find("emits light"), std::string::npos) << error;
+}
+
 // Equation (lobe-density): directions drawn by cos(alpha) = u^(1/(q+1)) have the Phong lobe's mean cosine,
 // (q + 1) / (q + 2), and are unit vectors about the axis.
 TEST(RayTracingLesson, TheLobeDirectionsFollowThePhongDensity) {

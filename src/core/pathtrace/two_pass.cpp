@@ -158,7 +158,8 @@ Rgb TwoPass::direct(const SurfacePoint& point, int element, const TwoPassOptions
 }
 
 Rgb TwoPass::gather(const SurfacePoint& point, int element, const TwoPassOptions& options,
-                    std::uint64_t index, Rgb& error, Rgb* bounce, Rgb* bounceError) const {
+                    std::uint64_t index, Rgb& error, Rgb* bounce, Rgb* bounceError,
+                    double* harmonicDistance) const {
   const int ignore = element >= 0 ? patchElement_[static_cast<std::size_t>(tracing_.patchOf(element))] : -1;
   // A point on no known surface starts a hair above its plane, so that its own surface cannot catch its rays.
   const Vec3 origin =
@@ -171,6 +172,7 @@ Rgb TwoPass::gather(const SurfacePoint& point, int element, const TwoPassOptions
   constexpr int kPaddedRays = 8;
   const int padded = 1 + 2 * std::min(options.nearRays, kPaddedRays);
   RgbMean mean, firstBounce;
+  double inverseDistances = 0;
   for (int b = 0; b < batches; ++b) {
     PairRandom random(options.seed, index, 0xffffff00u + static_cast<std::uint64_t>(b));
     const PaddedStrata strata(perBatch, padded, random);
@@ -179,6 +181,7 @@ Rgb TwoPass::gather(const SurfacePoint& point, int element, const TwoPassOptions
       const Vec2 uv = grid.sample(k, random);
       const Vec3 direction = cosineDirection(point.normal, uv.x(), uv.y());
       const RayHit hit = solutionRays_->firstHit(origin, direction, ignore);
+      if (hit.element >= 0 && hit.distance > 0) inverseDistances += 1 / hit.distance;
       if (hit.element < 0 || !hit.frontSide) continue;
       // What leaves the hit element besides its own emission: the emission is the direct part, done above.
       const auto row = static_cast<Eigen::Index>(hit.element);
@@ -205,6 +208,9 @@ Rgb TwoPass::gather(const SurfacePoint& point, int element, const TwoPassOptions
     firstBounce.add(bounceSum / perBatch);
   }
   error = mean.standardError();
+  if (harmonicDistance)
+    *harmonicDistance = inverseDistances > 0 ? batches * perBatch / inverseDistances
+                                             : std::numeric_limits<double>::infinity();
   if (bounce) *bounce = firstBounce.mean();
   if (bounceError) *bounceError = firstBounce.standardError();
   return mean.mean();

@@ -68,7 +68,8 @@ class TwoPass {
   // The two-pass picture (two_pass_image.cpp): per pixel, the point the pixel's centre ray reaches first, and
   // B there, E + rho H. The direct part of H is exact at every pixel; the gathered part, which varies slowly
   // along a surface, is gathered (options.gatherRays rays) at every gatherSpacing-th pixel of each row and
-  // column and interpolated between those of the same patch. Back sides and nothing are black.
+  // column, more densely where other surfaces are near (renderGatherRefinement), and interpolated between
+  // those of the same patch. Back sides and nothing are black.
   RgbImage render(const Camera& camera, int width, int height, const TwoPassOptions& options,
                   int gatherSpacing = 1) const;
 
@@ -78,9 +79,12 @@ class TwoPass {
 
  private:
   // The gathered (indirect) irradiance and its standard error; `bounce` (when given) receives the part of it
-  // that is the direct light taken at the gather's hits, and its standard error.
+  // that is the direct light taken at the gather's hits, and its standard error; `harmonicDistance` (when
+  // given) the harmonic mean of the distances the gather's rays travel (a miss counts as infinitely far):
+  // the scale over which the gathered light may change along the surface (Ward, Rubinstein and Clear 1988).
   Rgb gather(const SurfacePoint& point, int element, const TwoPassOptions& options, std::uint64_t index,
-             Rgb& error, Rgb* bounce = nullptr, Rgb* bounceError = nullptr) const;
+             Rgb& error, Rgb* bounce = nullptr, Rgb* bounceError = nullptr,
+             double* harmonicDistance = nullptr) const;
   // The indirect irradiance at a point of solution element `element`: cosine rays from the batch's padded
   // strata (those of path `path`) taking, where they hit, the direct light at the hit point and the element's
   // indirect light (B - E without form factors).

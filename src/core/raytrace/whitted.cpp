@@ -23,6 +23,8 @@ struct WhittedTracer::Walk {
   PairRandom random;
   WhittedStats stats;
   RayTree* tree = nullptr;
+  double time =
+      0.5;  // in the shutter interval [0, 1); the moving surfaces stand where the scene has them at 1/2
 };
 
 Vec3 phongLobeDirection(const Vec3& axis, double q, double u, double v) {
@@ -55,11 +57,50 @@ WhittedTracer::WhittedTracer(const TracingScene& tracing, const WhittedOptions& 
   }
   const Mesh& mesh = tracing_.mesh();
   mirror_.assign(mesh.size(), 0);
+  moving_.assign(mesh.size(), 0);
+  const auto listed = [](const std::vector<int>& list, int surface) {
+    return std::find(list.begin(), list.end(), surface) != list.end();
+  };
   for (std::size_t k = 0; k < mesh.size(); ++k) {
     const int surface = tracing_.scene().patches[static_cast<std::size_t>(mesh.elements[k].patch)].surface;
-    mirror_[k] = std::find(options_.mirrorSurfaces.begin(), options_.mirrorSurfaces.end(), surface) !=
-                 options_.mirrorSurfaces.end();
+    mirror_[k] = listed(options_.mirrorSurfaces, surface);
+    moving_[k] = listed(options_.movingSurfaces, surface);
   }
+}
+
+// The first hit beyond `tnear` on the moving surfaces only (`moving`) or on the standing ones only: hits on
+// the others are stepped over, by a millionth of the scene, until one of the wanted kind or none is left.
+RayHit WhittedTracer::firstHitAmong(const Vec3& origin, const Vec3& direction, double tnear,
+                                    bool moving) const {
+  const RayScene& rays = tracing_.rays();
+  const double step = 1e-6 * rays.sceneSize();
+  RayHit hit = rays.firstHitAfter(origin, direction, tnear);
+  for (int k = 0;
+       k < 256 && hit.element >= 0 && (moving_[static_cast<std::size_t>(hit.element)] != 0) != moving; ++k)
+    hit = rays.firstHitAfter(origin, direction, hit.distance + step);
+  return hit;
+}
+
+RayHit WhittedTracer::firstHit(const Vec3& origin, const Vec3& direction, double tnear,
+                               const Walk& walk) const {
+  if (!moves()) return tracing_.rays().firstHitAfter(origin, direction, tnear);
+  // A surface displaced by s is hit by the ray from o where the surface at rest is hit by the ray from o - s,
+  // at the same distance.
+  const Vec3 shift = (walk.time - 0.5) * options_.motion;
+  const RayHit standing = firstHitAmong(origin, direction, tnear, false);
+  const RayHit moving = firstHitAmong(origin - shift, direction, tnear, true);
+  if (moving.element < 0) return standing;
+  return standing.element < 0 || moving.distance < standing.distance ? moving : standing;
+}
+
+bool WhittedTracer::clearAt(const Vec3& x, const Vec3& y, int light, const Walk& walk) const {
+  if (!moves()) return tracing_.rays().visibleAfter(x, y, options_.epsilon, light);
+  const Vec3 d = y - x;
+  const double r = d.norm();
+  if (!(r > 0)) return true;
+  const RayHit hit = firstHit(x, d / r, options_.epsilon, walk);
+  // The light's own plane (and a surface flush with it) is reached at r up to rounding.
+  return hit.element < 0 || hit.element == light || hit.distance >= r * (1 - 1e-4);
 }
 
 // Direct light: for each light, the mean over its shadow rays of E cos cos A / (pi r^2) V, the point-to-area
@@ -79,12 +120,13 @@ Rgb WhittedTracer::direct(const Vec3& x, int element, int parent, Walk& walk) co
         y = pointOnPolygon(light.polygon, uv.x(), uv.y());
       }
       ++walk.stats.rays.shadow;
-      const bool clear = rays.visibleAfter(x, y, options_.epsilon, light.element);
+      const bool clear = clearAt(x, y, light.element, walk);
       const Vec3 d = y - x;
       const double r2 = d.squaredNorm(), r = std::sqrt(r2);
       const double cosX = r > 0 ? n.dot(d) / r : 0, cosY = r > 0 ? -light.normal.dot(d) / r : 0;
       const bool facing = cosX > 0 && cosY > 0;
-      if (facing && options_.checkShadows) {
+      // The robust test knows the scene at rest only.
+      if (facing && options_.checkShadows && !moves()) {
         const bool truth = rays.visible(x, y, element, light.element);
         (truth ? walk.stats.lit : walk.stats.blocked) += 1;
         if (truth && !clear) ++walk.stats.acne;
@@ -94,7 +136,7 @@ Rgb WhittedTracer::direct(const Vec3& x, int element, int parent, Walk& walk) co
         RayNode node{RayKind::Shadow, parent, walk.tree->nodes[static_cast<std::size_t>(parent)].depth, x, y};
         node.blocked = !clear;
         if (!clear) {
-          const RayHit hit = rays.firstHitAfter(x, d / r, options_.epsilon);
+          const RayHit hit = firstHit(x, d / r, options_.epsilon, walk);
           node.element = hit.element;
           if (hit.element >= 0) node.end = x + hit.distance * d / r;
         }
@@ -114,7 +156,7 @@ Rgb WhittedTracer::radiance(const Vec3& origin, const Vec3& direction, RayKind k
   const Mesh& mesh = tracing_.mesh();
   ++(kind == RayKind::Primary ? walk.stats.rays.primary : walk.stats.rays.reflection);
   // The eye is on no surface: only the rays that leave a surface need the epsilon.
-  const RayHit hit = rays.firstHitAfter(origin, direction, kind == RayKind::Primary ? 0.0 : options_.epsilon);
+  const RayHit hit = firstHit(origin, direction, kind == RayKind::Primary ? 0.0 : options_.epsilon, walk);
   int self = -1;
   if (walk.tree) {
     RayNode node{kind, parent, depth, origin, origin + 0.3 * rays.sceneSize() * direction, hit.element};
@@ -165,8 +207,11 @@ WhittedImage WhittedTracer::render(const Camera& camera, int width, int height) 
         // The lens draws from a stream of its own, so that a lens and a pinhole picture share every other
         // random number: where the lens is in focus the two agree but for rounding.
         PairRandom lensRandom(options_.seed, pixel, 0x9e3779b9u);
+        // The shutter's times too, so that a moving and a still picture differ only where things move.
+        PairRandom timeRandom(options_.seed, pixel, 0x85ebca6bu);
         Rgb sum = Rgb::Zero();
         for (int k = 0; k < samples; ++k) {
+          if (moves()) walk.time = timeRandom.uniform();
           const Vec2 jitter = samples == 1 ? Vec2(0.5, 0.5) : grid.sample(k, walk.random);
           const Vec3 d = cameraRay(camera, width, height, x + jitter.x(), y + jitter.y());
           if (options_.lens.radius > 0) {

@@ -11,7 +11,8 @@
 // light through near contacts. The tracer counts its rays by kind, and can check each shadow ray against
 // the robust visibility test to count the acne and the leaks. Mirrors may be glossy: each reflected ray then
 // samples a Phong lobe about the mirror direction (see phongLobeDirection). The camera may have a thin lens
-// (core/raytrace/thin_lens.h): depth of field.
+// (core/raytrace/thin_lens.h): depth of field. Some surfaces may move while the shutter is open: each primary
+// ray then sees the scene at its own time (motion blur).
 #pragma once
 
 #include <cstdint>
@@ -37,9 +38,15 @@ struct WhittedOptions {
   // The camera's lens (depth of field): a radius above 0 sends each primary ray from its own point of the
   // aperture through the plane of focus, so that the pixel's rays average the lens.
   ThinLens lens;
+  // Motion blur: the surfaces listed move by `motion` (scene units) while the shutter is open, from -motion/2
+  // to +motion/2 about where the scene puts them, at a constant velocity. Each primary ray draws its own
+  // time in the shutter interval and every ray of its tree sees the moving surfaces there, shadow rays
+  // included (so their shadows move too). The moving surfaces must not emit: the lights stay where they are.
+  std::vector<int> movingSurfaces;
+  Vec3 motion = Vec3::Zero();
   std::vector<int> mirrorSurfaces;  // surfaces (indices into the scene's) that reflect as mirrors
   std::uint64_t seed = 1;
-  bool checkShadows = false;  // also test each shadow ray robustly: acne and leak counts
+  bool checkShadows = false;  // also test each shadow ray robustly: acne and leak counts (at rest only)
 };
 
 struct WhittedStats {
@@ -91,11 +98,19 @@ class WhittedTracer {
   Rgb radiance(const Vec3& origin, const Vec3& direction, RayKind kind, int depth, int parent,
                Walk& walk) const;
   Rgb direct(const Vec3& point, int element, int parent, Walk& walk) const;
+  bool moves() const { return options_.motion != Vec3::Zero() && !options_.movingSurfaces.empty(); }
+  // The first hit after `tnear` at the walk's time: the scene at rest without motion; with it, the nearer
+  // of the first standing surface and the first moving one, the latter found by moving the ray instead.
+  RayHit firstHit(const Vec3& origin, const Vec3& direction, double tnear, const Walk& walk) const;
+  RayHit firstHitAmong(const Vec3& origin, const Vec3& direction, double tnear, bool moving) const;
+  // Whether the shadow ray from x to the point y of light element `light` is clear, at the walk's time.
+  bool clearAt(const Vec3& x, const Vec3& y, int light, const Walk& walk) const;
 
   const TracingScene& tracing_;
   WhittedOptions options_;
   std::vector<Light> lights_;
   std::vector<char> mirror_;  // per element of the tracing mesh
+  std::vector<char> moving_;  // per element of the tracing mesh
 };
 
 }  // namespace rt
