@@ -84,6 +84,7 @@ enum class View {
   Focus,          // raytrace stage: the pinhole picture beside the lens's (aperture, focus-distance)
   BasisError,     // elements stage: error against elements per basis, log-log, with the fitted orders
   TVertices,      // refine stage: the mesh with its T-vertices and the long edges they split
+  Walks,          // compare stage: the first walks of the step's walk solvers drawn in the scene
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.
