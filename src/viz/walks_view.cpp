@@ -7,9 +7,9 @@
 #include <vtkTextActor.h>
 
 #include <algorithm>
-#include <array>
 #include <stdexcept>
 
+#include "viz/colour_map.h"
 #include "viz/faded_scene.h"
 #include "viz/vtk_geometry.h"
 #include "viz/vtk_render.h"
@@ -17,13 +17,11 @@
 namespace rt::viz {
 namespace {
 
-// Okabe and Ito's colours, told apart by readers with any colour vision.
-constexpr std::array<Colour, 6> kWalkColours{{{0.902, 0.624, 0.0},
-                                              {0.337, 0.706, 0.914},
-                                              {0.0, 0.62, 0.451},
-                                              {0.941, 0.894, 0.259},
-                                              {0.8, 0.475, 0.655},
-                                              {0.835, 0.369, 0.0}}};
+// One colour per walk: the Okabe-Ito palette without its black, which marks absorption.
+Colour walkColour(std::size_t walk) {
+  const Rgb8 c = qualitativeColour(static_cast<int>(walk % 7));
+  return {c[0] / 255.0, c[1] / 255.0, c[2] / 255.0};
+}
 
 void checkWalks(const Mesh& mesh, const std::vector<WalksPanel>& panels) {
   if (panels.empty()) throw std::invalid_argument("the walks view needs at least one solver's walks");
@@ -48,7 +46,7 @@ void addWalks(vtkRenderer* renderer, const WalksPanel& panel, double scale) {
   std::vector<Vec3> absorbedAt;
   for (std::size_t w = 0; w < panel.walks.size(); ++w) {
     const RecordedWalk& walk = panel.walks[w];
-    const Colour& colour = kWalkColours[w % kWalkColours.size()];
+    const Colour colour = walkColour(w);
     std::vector<Vec3> segments;
     for (std::size_t k = 0; k + 1 < walk.points.size(); ++k) {
       segments.push_back(walk.points[k]);
