@@ -35,6 +35,7 @@ struct SolveArguments {
   SolutionArguments s;  // mesh, form factors, solver: shared with the commands built on a solution
   std::string output;
   std::string ply;
+  std::string nodes;  // a linear basis's node values as CSV
   std::string image;
   CameraArgument camera;
   int width = 1024, height = 1024;
@@ -75,9 +76,15 @@ void writeImage(const SolveArguments& a, const Scene& scene, const Mesh& mesh, c
 #endif
 }
 
-// The solved mesh for ParaView and Blender: per-vertex values as the viewer's smooth display computes them
-// when the visualisation library is built, each element's own value at its corners otherwise.
-void writePly(const Mesh& mesh, const RgbField& B, const std::string& path) {
+// The solved mesh for ParaView and Blender. A linear basis's vertices carry its solution at the element
+// corners, the node values themselves; a constant basis's carry the values the viewer's smooth display
+// computes when the visualisation library is built, each element's own value at its corners otherwise.
+void writePly(const Mesh& mesh, const RgbField& B, const std::string& path, const RgbField& corners = {}) {
+  if (corners.rows() > 0) {
+    writeRadiosityPly(mesh, B, corners, path);
+    std::cerr << "mesh with the linear basis's node values written to " << path << "\n";
+    return;
+  }
 #ifdef RT_HAVE_VIZ
   writeRadiosityPly(mesh, B, viz::smoothCornerValues(mesh, B).values, path);
 #else
@@ -104,11 +111,19 @@ void runRefined(const SolveArguments& a, const Scene& scene) {
 }
 
 // The outputs of both ways of solving.
-// `corners`: a linear basis's values at the element corners (empty for a constant basis): the image draws
-// them as they are; the CSV holds the element averages.
+// `corners`, `nodal`: a linear basis's values at the element corners and at its nodes (empty for a constant
+// basis): the image and the PLY's vertices hold them as they are, --nodes writes the nodes; the CSV holds
+// the element averages.
 void writeOutputs(const SolveArguments& a, const Scene& scene, const Mesh& mesh, const RgbField& B,
-                  const RgbField& corners = {}) {
-  if (!a.ply.empty()) writePly(mesh, B, a.ply);
+                  const RgbField& corners = {}, const RgbField& nodal = {}) {
+  if (!a.ply.empty()) writePly(mesh, B, a.ply, corners);
+  if (!a.nodes.empty()) {
+    std::ofstream out(a.nodes);
+    if (!out) throw InputError({a.nodes}, "cannot write the node values");
+    out << nodalCsv(scene, mesh, buildLinearBasis(mesh), nodal);
+    if (!out) throw InputError({a.nodes}, "error while writing the node values");
+    std::cerr << "node values written to " << a.nodes << "\n";
+  }
   if (!a.output.empty()) {
     writeRadiosityCsv(scene, mesh, B, a.output);
     std::cerr << "radiosity written to " << a.output << "\n";
@@ -138,7 +153,9 @@ void checkStatus(const SolveArguments& a, SolverStatus status, double error, int
 }
 
 void run(const SolveArguments& a) {
-  checkOutputPaths({a.output, a.image, a.ply});  // before the expensive part, not after it
+  checkOutputPaths({a.output, a.image, a.ply, a.nodes});  // before the expensive part, not after it
+  if (!a.nodes.empty() && a.s.basis != "linear")
+    throw CLI::ValidationError("--nodes", "node values are a linear basis's: add --basis linear");
   Scene scene = loadSceneReportingWarnings(a.scene);
   a.camera.applyTo(scene);
   requireLight(scene);
@@ -191,7 +208,7 @@ void run(const SolveArguments& a) {
   settings.solver = solverName;
   settings.automatic = solverName.empty() && !a.formFactorsGiven;
   const SolveOutcome outcome = solveMesh(mesh, settings, pipeline);
-  writeOutputs(a, scene, mesh, outcome.B, outcome.corners);
+  writeOutputs(a, scene, mesh, outcome.B, outcome.corners, outcome.nodal);
 }
 
 }  // namespace
@@ -232,8 +249,11 @@ void addSolveCommand(CLI::App& app) {
                       "the centroid and the unit normal)");
   command->add_option(
       "--ply", a->ply,
-      "Write the solved mesh as PLY (ParaView, Blender): B per face and per vertex (smooth), with "
-      "display colours");
+      "Write the solved mesh as PLY (ParaView, Blender): B per face and per vertex (smooth; with --basis "
+      "linear, the linear function's node values), with display colours");
+  command->add_option("--nodes", a->nodes,
+                      "--basis linear: write B per node as CSV (node,patch,surface,weight,B_r,B_g,B_b,x,y,z,"
+                      "nx,ny,nz: the node's share of area, its position and its patch's unit normal)");
   command->add_option("--image", a->image,
                       "Render the solved scene from its camera to a PNG (needs an X server)");
   command->add_option("--width", a->width, "Image width")->capture_default_str();

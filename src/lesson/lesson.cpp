@@ -8,7 +8,7 @@
 namespace rt::lesson {
 namespace {
 
-constexpr std::array<std::pair<View, const char*>, 42> kViews{{
+constexpr std::array<std::pair<View, const char*>, 43> kViews{{
     {View::Scene, "scene"},
     {View::BasisError, "basis-error"},
     {View::FormFactor, "formfactor"},
@@ -51,6 +51,7 @@ constexpr std::array<std::pair<View, const char*>, 42> kViews{{
     {View::TVertices, "t-vertices"},
     {View::Focus, "focus"},
     {View::Motion, "motion"},
+    {View::Walks, "walks"},
 }};
 
 }  // namespace
@@ -94,8 +95,9 @@ const std::vector<StageInfo>& stageTable() {
        {V::Scene, V::FormFactor, V::Matrix, V::Convergence, V::Walkthrough}},
       {Stage::Compare,
        "compare",
-       "several `solvers`, `methods` or `subdivisions`; the stochastic solvers' noise against their rays",
-       {V::Scene, V::FormFactor, V::Matrix, V::Convergence, V::Error, V::Noise}},
+       "several `solvers`, `methods` or `subdivisions`; the stochastic solvers' noise against their rays; "
+       "the first walks of the walk solvers, as they followed them",
+       {V::Scene, V::FormFactor, V::Matrix, V::Convergence, V::Error, V::Noise, V::Walks}},
       {Stage::Bounces,
        "bounces",
        "B after 0..`bounces` bounces, and the exact B",

@@ -85,6 +85,7 @@ enum class View {
   Motion,         // raytrace stage: the scene standing still beside it with `moving` in motion (motion)
   BasisError,     // elements stage: error against elements per basis, log-log, with the fitted orders
   TVertices,      // refine stage: the mesh with its T-vertices and the long edges they split
+  Walks,          // compare stage: the first walks of the step's walk solvers drawn in the scene
 };
 
 // A row of the table of stages: its name, what it computes and the views it can show.

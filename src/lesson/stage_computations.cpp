@@ -9,8 +9,10 @@
 #include "core/io/matrix_export.h"
 #include "core/refine/refine.h"
 #include "core/solvers/energy.h"
+#include "core/solvers/random_walks.h"
 #include "core/solvers/solver.h"
 #include "core/solvers/solver_support.h"
+#include "lesson/step_settings.h"
 #include "lesson/step_stages.h"
 
 namespace rt::lesson::detail {
@@ -40,6 +42,41 @@ double maxRelativeDifference(const Mesh& mesh, const RgbField& B, const RgbField
 
 double totalPower(const RgbField& X, const Eigen::VectorXd& areas) {
   return (X.array().colwise() * areas.array()).sum();
+}
+
+// The walks a walks view draws: how many of each solver's first walks.
+constexpr long kDrawnWalks = 6;
+
+// The first walks of the step's first discrete walk solver and of its photon-density solver, recorded with
+// the step's solver options, so that they are the walks those solvers began with.
+void recordDrawnWalks(StageContext& c, const RadiositySystem& withF, const RadiositySystem& traced) {
+  StepResult& r = c.result;
+  bool discrete = false;
+  for (const std::string& s : c.parameters.solvers) {
+    const bool photons = s == "photon-density";
+    if (!photons && s != "random-walk" && s != "random-walk-absorption") continue;
+    if (!photons && discrete) continue;  // the absorption estimator scores the same walks
+    discrete = discrete || !photons;
+    DrawnWalks drawn{s, {}};
+    if (recordWalks(s, photons ? traced : withF, solverOptionsFor(c.parameters), kDrawnWalks, drawn.walks) !=
+        SolverStatus::Success)
+      c.fail("solvers", "the walks of " + s + " could not be recorded");
+    double landings = 0, absorbed = 0, escaped = 0;
+    for (const RecordedWalk& walk : drawn.walks) {
+      landings += static_cast<double>(walk.landings.size());
+      absorbed += walk.end == RecordedWalk::End::Absorbed ? 1 : 0;
+      escaped += walk.end == RecordedWalk::End::Escaped ? 1 : 0;
+    }
+    r.values["drawn-landings." + s] = landings;
+    r.values["drawn-absorbed." + s] = absorbed;
+    r.values["drawn-escaped." + s] = escaped;
+    r.walks.push_back(std::move(drawn));
+  }
+  if (r.walks.empty())
+    c.fail("views",
+           "the walks view draws the walks of random-walk, random-walk-absorption or photon-density; "
+           "the step's solvers include none of them");
+  r.values["drawn-walks"] = static_cast<double>(kDrawnWalks);
 }
 
 }  // namespace
@@ -206,6 +243,8 @@ void computeCompare(StageContext& c) {
       }
       r.B = B;
     }
+    if (std::find(c.step.views.begin(), c.step.views.end(), View::Walks) != c.step.views.end())
+      recordDrawnWalks(c, withF, traced);
     if (r.runs.size() >= 2 && r.runs[1].iterations > 0)
       r.values["speedup"] = static_cast<double>(r.runs[0].iterations) / r.runs[1].iterations;
   }

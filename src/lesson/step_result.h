@@ -13,6 +13,7 @@
 #include "core/pipeline/pipeline.h"
 #include "core/refine/refine.h"
 #include "core/scene.h"
+#include "core/solvers/random_walks.h"
 #include "core/solvers/sampling_study.h"
 #include "homework/exercise.h"
 #include "lesson/elements_data.h"
@@ -35,6 +36,12 @@ struct SolverRun {
   std::vector<int> shooters;                          // shooting solvers: the element of each shot
   // Stochastic solvers, one entry per iteration: the rays so far and the relative standard error of B.
   std::vector<double> rays, standardErrors;
+};
+
+// The first walks of a walk solver of a compare step, as the solver followed them (recordWalks).
+struct DrawnWalks {
+  std::string solver;
+  std::vector<RecordedWalk> walks;
 };
 
 // One point of a run-time-against-error sweep.
@@ -68,6 +75,8 @@ struct StepResult {
   std::vector<SolverRun> runs;
   std::vector<BenchmarkPoint> benchmark;
   std::vector<Variant> variants;
+  // Compare stage with the walks view: one discrete walk solver's first walks and the photons' first ones.
+  std::vector<DrawnWalks> walks;
   int sourceElement = 0;         // the element hemicube / Nusselt / rays / formfactor views look from
   std::vector<int> highlighted;  // element indices
   std::string exportedMatrix;    // path of the exported matrix, when the step asked for one

@@ -12,7 +12,7 @@
 namespace rt::viz {
 
 vtkSmartPointer<vtkRenderer> addFadedScene(const Mesh& mesh, const Camera& camera, const FigureSize& size,
-                                           vtkRenderWindow* window) {
+                                           vtkRenderWindow* window, const double* viewport) {
   SceneViewOptions sceneOptions;
   sceneOptions.colouring = SceneColouring::Reflectance;
   sceneOptions.image.showEdges = true;
@@ -20,7 +20,7 @@ vtkSmartPointer<vtkRenderer> addFadedScene(const Mesh& mesh, const Camera& camer
   const ScenePaint paint = paintScene(mesh, {}, sceneOptions);
   const double full[4] = {0, 0, 1, 1};
   vtkSmartPointer<vtkRenderer> renderer =
-      makeSceneRenderer(mesh, camera, paint, sceneOptions, size.height, full);
+      makeSceneRenderer(mesh, camera, paint, sceneOptions, size.height, viewport ? viewport : full);
   vtkActorCollection* actors = renderer->GetActors();
   actors->InitTraversal();
   while (vtkActor* actor = actors->GetNextActor()) actor->GetProperty()->SetOpacity(0.3);

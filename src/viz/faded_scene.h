@@ -14,8 +14,9 @@ class vtkRenderWindow;
 
 namespace rt::viz {
 
-// Adds the faded scene's renderer (the whole window) to `window` and returns it.
+// Adds the faded scene's renderer to `window` over `viewport` (xmin, ymin, xmax, ymax in normalised window
+// coordinates; null: the whole window) and returns it.
 vtkSmartPointer<vtkRenderer> addFadedScene(const Mesh& mesh, const Camera& camera, const FigureSize& size,
-                                           vtkRenderWindow* window);
+                                           vtkRenderWindow* window, const double* viewport = nullptr);
 
 }  // namespace rt::viz

@@ -24,6 +24,7 @@
 #include "viz/nusselt_view.h"
 #include "viz/rays_view.h"
 #include "viz/scene_view.h"
+#include "viz/walks_view.h"
 
 namespace rt::viz {
 
@@ -386,6 +387,27 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
     }
     case View::BasisError:
       return detail::renderBasisErrorView(r, s, path);
+    case View::Walks: {
+      if (r.walks.empty()) throw std::runtime_error(path + ": the step recorded no walks");
+      std::vector<WalksPanel> panels;
+      for (const lesson::DrawnWalks& drawn : r.walks) {
+        std::size_t landings = 0, absorbed = 0;
+        for (const RecordedWalk& walk : drawn.walks) {
+          landings += walk.landings.size();
+          absorbed += walk.end == RecordedWalk::End::Absorbed ? 1 : 0;
+        }
+        const bool photons = drawn.solver == "photon-density";
+        panels.push_back({std::string(photons ? "Continuous walks (photons)" : "Discrete walks (rows of F)") +
+                              ": the first " + std::to_string(drawn.walks.size()) + " of " + drawn.solver +
+                              ", " + std::to_string(landings) + " landings, " + std::to_string(absorbed) +
+                              " absorbed",
+                          drawn.walks});
+      }
+      WalksViewOptions o;
+      o.size = {s.width, s.height, 96.0};
+      writeWalksFigure(r.mesh, r.camera, panels, o, path);
+      return "The first walks of each walk solver, as it followed them";
+    }
   }
   return "";
 }

@@ -9,8 +9,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/progress.h"
 #include "core/solvers/local_lines_solver.h"
 #include "lesson/step_runner.h"
+#include "lesson/step_settings.h"
 #include "lesson_test_support.h"
 
 namespace rt::lesson {
@@ -165,6 +167,49 @@ TEST(StochasticLesson, ContinuousWalksAgreeWithTheDiscreteOnesWithinTheirNoise) 
   const double floor = *r.value("B.floor.direct");
   EXPECT_NEAR(*r.value("B.floor.photon-density"), floor, 3.0 * *r.value("tolerance") * floor);
   EXPECT_NEAR(*r.value("B.floor.random-walk"), floor, 3.0 * *r.value("tolerance") * floor);
+}
+
+// The walks the figure draws are the first walks of the step's own solvers: with the step's options, a solver
+// whose first batch is those walks reports the power they carried, and their counts are the text's.
+TEST(StochasticLesson, TheDrawnWalksAreTheFirstWalksOfTheStepsSolvers) {
+  if (!test::hasMethod("quadrature")) GTEST_SKIP() << "quadrature is not in this build";
+  const Lesson lesson = test::shippedLesson("stochastic");
+  const Step& step = test::stepWithFigure(lesson, "photon-walks");
+  const StepResult r = runStep("photon-walks").result;
+  ASSERT_EQ(r.walks.size(), 2u);
+  EXPECT_EQ(r.walks[0].solver, "random-walk");
+  EXPECT_EQ(r.walks[1].solver, "photon-density");
+  ASSERT_TRUE(r.F);
+  const RadiositySystem withF = RadiositySystem::fromMesh(r.mesh, *r.F);
+  const RadiositySystem traced = RadiositySystem::fromGeometry(r.mesh);
+  for (const DrawnWalks& drawn : r.walks) {
+    const std::string& s = drawn.solver;
+    const auto count = static_cast<long>(drawn.walks.size());
+    ASSERT_EQ(count, static_cast<long>(*r.value("drawn-walks"))) << s;
+    double landings = 0, absorbed = 0, escaped = 0, absorbedPower = 0, escapedPower = 0;
+    for (const RecordedWalk& walk : drawn.walks) {
+      landings += static_cast<double>(walk.landings.size());
+      absorbed += walk.end == RecordedWalk::End::Absorbed ? 1 : 0;
+      escaped += walk.end == RecordedWalk::End::Escaped ? 1 : 0;
+      absorbedPower += walk.absorbedPower;
+      escapedPower += walk.escapedPower;
+    }
+    EXPECT_EQ(landings, *r.value("drawn-landings." + s)) << s;
+    EXPECT_EQ(absorbed, *r.value("drawn-absorbed." + s)) << s;
+    EXPECT_EQ(escaped, *r.value("drawn-escaped." + s)) << s;
+    EXPECT_EQ(absorbed + escaped, count) << s << ": every walk ends";
+    EXPECT_GT(landings, count) << s << ": some walks land more than once";
+    // The solver itself, with the step's options, in batches of the drawn walks: its first batch.
+    SolverOptions options = solverOptionsFor(step.parameters);
+    options.raysPerIteration = count;
+    options.maxIterations = 1;
+    const SolveOutcome outcome =
+        solveRadiosity(s == "photon-density" ? traced : withF, s, options, true, noProgress());
+    ASSERT_FALSE(outcome.history.empty()) << s;
+    const IterationRecord& first = outcome.history.front();
+    EXPECT_NEAR(first.absorbedPower, absorbedPower / count, 1e-9 * first.emittedPower) << s;
+    EXPECT_NEAR(first.escapedPower, escapedPower / count, 1e-9 * first.emittedPower) << s;
+  }
 }
 
 TEST(StochasticLesson, SobolLinesAndTheControlVariateBeatPlainLinesAtEqualRays) {

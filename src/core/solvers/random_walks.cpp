@@ -16,7 +16,8 @@ long defaultWalks(const RadiositySystem& system, const SolverOptions& options) {
 }
 
 SolverStatus walkSolve(const RadiositySystem& system, RgbField& B, const SolverOptions& options,
-                       const IterationSink& sink, RgbField* standardError, WalkJumps& jumps, long batch) {
+                       const IterationSink& sink, RgbField* standardError, WalkJumps& jumps, long batch,
+                       const WalkObserver& observer) {
   B = system.emission;
   const auto n = static_cast<Eigen::Index>(system.size());
   if (standardError) *standardError = RgbField::Zero(n, 3);
@@ -64,16 +65,29 @@ SolverStatus walkSolve(const RadiositySystem& system, RgbField& B, const SolverO
       if (sourcePower <= 0.0) continue;
       Eigen::RowVector3d weight = system.emission.row(source) * A(source) * (emitted / sourcePower);
       WalkPosition at = jumps.start(static_cast<int>(source), random);
+      RecordedWalk path;
+      if (observer) {
+        path.source = static_cast<int>(source);
+        path.points.push_back(at.point);
+      }
       int step = 0;
       for (; step < kMaxSteps; ++step) {
         const WalkPosition next = jumps.jump(at, random);
         const int hit = next.element;
         if (hit < 0) {
           escaped += weight.sum();
+          path.escapedPower += weight.sum();
+          path.end = RecordedWalk::End::Escaped;
           break;
         }
         const Eigen::RowVector3d reflected = weight.cwiseProduct(rho.row(hit));
         absorbed += weight.sum() - reflected.sum();
+        if (observer) {
+          path.landings.push_back(hit);
+          path.points.push_back(next.point);
+          path.weights.push_back(weight);
+          path.absorbedPower += weight.sum() - reflected.sum();
+        }
         const double q = survival(hit);
         const bool survives = q > 0.0 && random.uniform() < q;
         if (!absorption) score(hit, reflected);
@@ -86,7 +100,11 @@ SolverStatus walkSolve(const RadiositySystem& system, RgbField& B, const SolverO
       }
       // A walk cut off by the limit scored nothing under the absorption estimator: the estimate of a system
       // that (nearly) never absorbs is not to be trusted, whatever its standard error says.
-      if (step == kMaxSteps) truncated = true;
+      if (step == kMaxSteps) {
+        truncated = true;
+        path.end = RecordedWalk::End::Cut;
+      }
+      if (observer) observer(std::move(path));
       for (const auto& [element, value] : scores) {
         sum.row(element) += value;
         sumSquares.row(element) += value.cwiseProduct(value);
@@ -152,6 +170,41 @@ class TracedJumps : public WalkJumps {
 };
 
 }  // namespace
+
+SolverStatus recordWalks(const std::string& solver, const RadiositySystem& system,
+                         const SolverOptions& options, long count, std::vector<RecordedWalk>& walks) {
+  walks.clear();
+  const bool continuous = solver == "photon-density";
+  if ((!continuous && solver != "random-walk" && solver != "random-walk-absorption") || count < 1)
+    return SolverStatus::InvalidInput;
+  const SolverStatus valid = solver_detail::validate(system, !continuous);
+  if (valid != SolverStatus::Success) return valid;
+  const Mesh* mesh = system.mesh;
+  if (continuous && (!mesh || mesh->size() != system.size())) return SolverStatus::InvalidInput;
+  // One batch of `count` walks: the random numbers run through the walks in order, so these are the first
+  // `count` walks of the solver's own first batch, however large that is.
+  SolverOptions one = options;
+  one.maxIterations = 1;
+  one.walkEstimator = solver == "random-walk-absorption" ? SolverOptions::WalkEstimator::Absorption
+                                                         : SolverOptions::WalkEstimator::Collision;
+  const bool centroids = !continuous && mesh && mesh->size() == system.size();
+  const WalkObserver keep = [&](RecordedWalk&& walk) {
+    if (centroids) {
+      walk.points.front() = mesh->elements[static_cast<std::size_t>(walk.source)].centroid;
+      for (std::size_t k = 0; k < walk.landings.size(); ++k)
+        walk.points[k + 1] = mesh->elements[static_cast<std::size_t>(walk.landings[k])].centroid;
+    }
+    walks.push_back(std::move(walk));
+  };
+  RgbField B;
+  std::unique_ptr<WalkJumps> jumps;
+  if (continuous)
+    jumps = std::make_unique<TracedJumps>(*mesh);
+  else
+    jumps = solver_detail::rowJumps(*system.F);
+  const SolverStatus status = solver_detail::walkSolve(system, B, one, {}, nullptr, *jumps, count, keep);
+  return status == SolverStatus::NoConvergence ? SolverStatus::Success : status;
+}
 
 SolverStatus photonDensity(const RadiositySystem& system, RgbField& B, const SolverOptions& options,
                            const IterationSink& sink, RgbField* standardError) {

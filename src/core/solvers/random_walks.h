@@ -18,11 +18,37 @@
 // of B) is <= options.tolerance. Deterministic for options.seed.
 #pragma once
 
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "core/solvers/solver.h"
 #include "core/solvers/solver_support.h"
 #include "core/vec.h"
 
 namespace rt {
+
+// One walk as a walk solver followed it: the source it left, every element it landed on with the weight it
+// carried there (before the reflection), and how it ended. `points` holds the start and each landing: the
+// traced points of a continuous walk; for a discrete walk, which has no point on an element, the element's
+// centroid (where the mesh is known; the origin otherwise).
+struct RecordedWalk {
+  enum class End { Absorbed, Escaped, Cut };
+  int source = -1;
+  std::vector<int> landings;
+  std::vector<Vec3> points;                 // landings.size() + 1
+  std::vector<Eigen::RowVector3d> weights;  // per landing
+  End end = End::Absorbed;
+  double escapedPower = 0, absorbedPower = 0;  // all channels, as the solver counts them
+};
+
+// The first `count` walks the walk solver `solver` (random-walk, random-walk-absorption: discrete, over
+// system.F; photon-density: continuous, over system.mesh) follows with `options`: the same random numbers,
+// so the same walks, as its first batch whatever its batch size. InvalidInput for another solver or a
+// system the solver refuses.
+SolverStatus recordWalks(const std::string& solver, const RadiositySystem& system,
+                         const SolverOptions& options, long count, std::vector<RecordedWalk>& walks);
 
 // Continuous random walks with the collision estimator: the photon-density solver. system.mesh is required
 // (InvalidInput without it); system.F is never read.
@@ -45,9 +71,17 @@ class WalkJumps {
   virtual WalkPosition jump(const WalkPosition& from, Random& random) = 0;
 };
 
+// Told of every walk as it ends (recordWalks).
+using WalkObserver = std::function<void(RecordedWalk&&)>;
+
 // The walks and their estimators (options.walkEstimator), in batches of `batch` walks.
 SolverStatus walkSolve(const RadiositySystem& system, RgbField& B, const SolverOptions& options,
-                       const IterationSink& sink, RgbField* standardError, WalkJumps& jumps, long batch);
+                       const IterationSink& sink, RgbField* standardError, WalkJumps& jumps, long batch,
+                       const WalkObserver& observer = {});
+
+// Discrete walks' jumps: the next element drawn from the row of F of the one the walk stands on
+// (stochastic_solvers.cpp).
+std::unique_ptr<WalkJumps> rowJumps(const FormFactorMatrix& F);
 
 // The walks of one batch when options.raysPerIteration is 0: 100 per element, at least 1000.
 long defaultWalks(const RadiositySystem& system, const SolverOptions& options);

@@ -142,6 +142,10 @@ SolverStatus randomWalk(const RadiositySystem& system, RgbField& B, const Solver
   return walkSolve(system, B, options, sink, standardError, jumps, defaultWalks(system, options));
 }
 
+std::unique_ptr<WalkJumps> solver_detail::rowJumps(const FormFactorMatrix& F) {
+  return std::make_unique<RowJumps>(F);
+}
+
 SolverStatus randomWalkAbsorption(const RadiositySystem& system, RgbField& B, const SolverOptions& options,
                                   const IterationSink& sink, RgbField* standardError) {
   SolverOptions absorption = options;
