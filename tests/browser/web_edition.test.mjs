@@ -350,6 +350,11 @@ for (const file of pages) {
     for (const [name, text] of Object.entries(r.phases)) console.log(`  ${name} change: ${text}`);
     check(r.reports >= 2 && r.gap < 0.3, `playground: ${r.elements} elements computed with the page responsive and the progress shown`,
           `${r.reports} progress reports, the page unanswered at most ${r.gap.toFixed(3)} s`);
+    // The targets of a control change with the form factors kept: 0.5 s up to 1,000 elements, 3 s up to 5,000.
+    const target = r.elements <= 1000 ? 0.5 : 3;
+    const slowest = Math.max(r.light, r.reflectance, r.solver);
+    check(r.reused && slowest <= target, `playground: ${r.elements} elements, a change of the light, a reflectance or the solver within ${target} s`,
+          `slowest ${slowest.toFixed(3)} s`);
   }
   check(errors.length === 0, 'playground: no page errors', errors.slice(0, 3).join(' | '));
   await page.close();
