@@ -2,7 +2,8 @@
 // of a step computed in the browser by the WebAssembly core (radiosity-core.js): rotate and zoom with the
 // mouse, a scrubber with play through the solver's iterations beside the residual chart, and one widget per
 // control of the step, built from the rows of the lesson layer's table of step keys that the core hands out
-// (the app's parameter panel builds its widgets from the same rows). A change solves again in a Web Worker,
+// (the app's parameter panel builds its widgets from the same rows), and compare mode: the step beside itself
+// with another method or solver from those rows. A change solves again in a Web Worker,
 // so that the page stays responsive, with a progress bar; the form factors stay cached in the core when only
 // the light or a reflectance changed.
 // RT_LIVE[KEY] (the page's <lesson>-live.js) holds the step: its scene files, its stage, its parameters as
@@ -424,7 +425,16 @@
         this.refusal.textContent = '';
         this.good = tried;
         this.exposure = this.exposure || result.exposure;
-        if (this.compareWith) await this.solveCompare();
+        if (this.compareWith) {
+          try {
+            await this.solveCompare();
+          } catch (error) {
+            // The view keeps its own solution; the text says why nothing stands beside it.
+            this.compareView.hidden = true;
+            this.compareResult = null;
+            this.compareNumbers.textContent = 'Not compared: ' + error.message;
+          }
+        }
         this.take(result, (performance.now() - started) / 1000);
         this.phases = Object.assign({ total: (performance.now() - started) / 1000 }, result.phases);
       }, (error) => {
