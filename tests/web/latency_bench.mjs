@@ -1,7 +1,8 @@
 // The web edition's control-change latency, measured in node on the WebAssembly core (docs/benchmarks.md):
 // for meshes of about 1,000 and 5,000 elements, the first run (mesh, form factors, solve: the core's own
-// seconds for the form factors and the solve) and then a change of the light (the last solution scaled), of a
-// reflectance and of the solver (both with the form factors kept: solve only). The pages add the copies out
+// seconds for the form factors and the solve) and then a change of the light, of a reflectance and of the
+// solver, each with the form factors kept (solve only; through the settings JSON a light change solves again,
+// where the pages' steps scale the last solution). The pages add the copies out
 // of the core, the transfer from the worker and the repaint (tests/browser measures those).
 // Usage: node latency_bench.mjs <radiosity-core.js> <repository>
 import { createRequire } from 'node:module';
