@@ -253,6 +253,31 @@ for (const file of pages) {
       const whole = await page.evaluateHandle((k) => window.rtLiveViews[k].renderer.domElement.closest('.live-view'), k);
       await whole.screenshot({ path: path.join(shots, `${path.basename(file, '.html')}-${k + 1}-compare.png`) });
     }
+
+    // A step that shows an element's hemicube: its faces drawn live, and another element gives other faces.
+    if (await page.evaluate((k) => Boolean(window.rtLiveViews[k].hemicubeCanvas), k)) {
+      const faces = (k, element) => page.evaluate(async (k, element) => {
+        const view = window.rtLiveViews[k];
+        if (element !== null) {
+          view.hemicubeFrom.value = String(element);
+          await view.drawHemicube();
+        }
+        const c = view.hemicubeCanvas;
+        const data = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+        let drawn = 0, sum = 0;
+        for (let i = 0; i < data.length; i += 4) {
+          if (data[i] + data[i + 1] + data[i + 2] < 3 * 250) ++drawn;
+          sum = (sum * 31 + data[i] + 3 * data[i + 1] + 7 * data[i + 2]) % 1000000007;
+        }
+        return { drawn: drawn / (data.length / 4), sum, from: view.hemicubeFrom.value };
+      }, k, element);
+      const first = await faces(k, null);
+      const holder = await page.evaluateHandle((k) => window.rtLiveViews[k].hemicubeCanvas, k);
+      await holder.screenshot({ path: path.join(shots, `${path.basename(file, '.html')}-${k + 1}-hemicube.png`) });
+      const other = await faces(k, Number(first.from) + 9);
+      check(first.drawn > 0.1 && other.sum !== first.sum, `${label}: the hemicube's faces are drawn live and follow the element chosen`,
+            `element ${first.from}: ${(100 * first.drawn).toFixed(1)} % drawn; element ${other.from}: other pixels`);
+    }
   }
   check(errors.length === 0, `${file}: no console errors`, errors.slice(0, 3).join(' | '));
   await page.screenshot({ path: path.join(shots, `${path.basename(file, '.html')}-page.png`), fullPage: false });

@@ -73,6 +73,7 @@
       if (op === 'solve') return solve(s, a.step, a.exposure, id);
       if (s.ran !== JSON.stringify(a.step)) runStep(s, a.step, () => {});
       if (op === 'row') return [s.session.formFactorRow(a.element)];
+      if (op === 'hemicube') return [s.session.hemicubeFigure(a.element, a.resolution, a.width, a.height)];
       if (op === 'csv') return [s.session.csv()];
       if (op === 'matrix') return [s.session.formFactorFile(a.format)];
       throw new Error('unknown request ' + op);
@@ -126,6 +127,51 @@
       for (let c = 0; c < 3; ++c) {
         const v = rgb8[3 * e + c] / 255;
         for (let k = 0; k < 3; ++k) out[9 * t + 3 * k + c] = v;
+      }
+    }
+  }
+
+  // A 2D figure of the core's viz layer (polygons, lines and text in pixels, origin bottom-left; the module
+  // hands it out as JSON) painted on a canvas.
+  function paintDrawing(canvas, d) {
+    canvas.width = d.width;
+    canvas.height = d.height;
+    const g = canvas.getContext('2d');
+    const rgb = (c) => 'rgb(' + c.join(',') + ')';
+    g.fillStyle = rgb(d.background);
+    g.fillRect(0, 0, d.width, d.height);
+    const align = ['left', 'center', 'right'], baseline = ['bottom', 'middle', 'top'];
+    for (const shape of d.shapes) {
+      const points = shape.points.map(([x, y]) => [x, d.height - y]);
+      if (shape.kind === 'text') {
+        g.save();
+        g.translate(points[0][0], points[0][1]);
+        g.rotate((-shape.angle * Math.PI) / 180);
+        g.font = (shape.bold ? 'bold ' : '') + shape.fontSize + 'px sans-serif';
+        g.textAlign = align[shape.hAlign];
+        g.textBaseline = baseline[shape.vAlign];
+        g.fillStyle = rgb(shape.fill);
+        g.fillText(shape.text, 0, 0);
+        g.restore();
+        continue;
+      }
+      g.beginPath();
+      points.forEach(([x, y], k) => (k ? g.lineTo(x, y) : g.moveTo(x, y)));
+      if (shape.kind === 'polygon') g.closePath();
+      if (shape.kind === 'polygon' && shape.filled) {
+        g.fillStyle = rgb(shape.fill);
+        g.fill();
+        // Neighbouring pixels of a face share their edges: a hairline of their colour hides the seam.
+        if (!(shape.strokeWidth > 0)) {
+          g.strokeStyle = g.fillStyle;
+          g.lineWidth = 0.5;
+          g.stroke();
+        }
+      }
+      if (shape.strokeWidth > 0) {
+        g.strokeStyle = rgb(shape.stroke);
+        g.lineWidth = shape.strokeWidth;
+        g.stroke();
       }
     }
   }
@@ -263,6 +309,16 @@
       this.compareNumbers = element('div', { class: 'live-numbers live-compare-numbers' }, panel);
       this.picked = element('div', { class: 'live-picked', text: 'Click an element to see its B and its row of F.' },
                             panel);
+      // A step that shows an element's hemicube: its five faces unfolded, the lesson's figure drawn live by the
+      // core, from the element chosen here at the step's resolution.
+      if (this.step.hemicube) {
+        const holder = element('div', { class: 'live-hemicube' }, container);
+        const label = element('label', { class: 'live-row', text: 'Hemicube of element ' }, holder);
+        this.hemicubeFrom = element('input', { type: 'number', min: '0', step: '1', class: 'live-hemicube-from',
+                                               value: String(this.step.hemicube.from) }, label);
+        this.hemicubeCanvas = element('canvas', { class: 'live-hemicube-faces' }, holder);
+        this.hemicubeFrom.addEventListener('change', () => this.drawHemicube());
+      }
       // A click (not a drag) picks the element under the pointer.
       const canvas = this.renderer.domElement;
       canvas.addEventListener('pointerdown', (e) => (this.down = [e.clientX, e.clientY]));
@@ -363,6 +419,17 @@
       this.compareView.hidden = false;
     }
 
+    // The faces from the element the widget names (kept within the mesh) at the step's resolution.
+    async drawHemicube() {
+      const last = Math.max(0, this.summary.elements - 1);
+      const from = Math.min(last, Math.max(0, Math.round(Number(this.hemicubeFrom.value) || 0)));
+      this.hemicubeFrom.max = String(last);
+      this.hemicubeFrom.value = String(from);
+      const resolution = Number(this.parameters.resolution || this.step.hemicube.resolution);
+      const figure = await this.request('hemicube', { element: from, resolution, width: 880, height: 800 });
+      if (figure) paintDrawing(this.hemicubeCanvas, JSON.parse(figure));
+    }
+
     // What a view's step computes with, for its caption.
     describe(summary, parameters) {
       return (summary.method ? summary.method + ', ' : '') + summary.solver +
@@ -436,6 +503,7 @@
           }
         }
         this.take(result, (performance.now() - started) / 1000);
+        if (this.hemicubeCanvas) await this.drawHemicube();
         this.phases = Object.assign({ total: (performance.now() - started) / 1000 }, result.phases);
       }, (error) => {
         this.refusal.textContent = 'Not applied: ' + error.message;
