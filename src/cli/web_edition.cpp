@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -36,15 +37,26 @@ void copyAsset(const fs::path& from, const fs::path& to, const std::string& reme
   fs::copy_file(from, to, fs::copy_options::overwrite_existing);
 }
 
-// The steps the web core computes as the desktop does, with a 3D view of the scene: solve and bounces steps
-// (a bounces step of no bounce shows the emission alone, which has no iteration to scrub), and the steps
-// that compute F by a method, whose live view solves with that F.
+// The element a hemicube view is seen from, where the step names it by its index.
+std::optional<int> hemicubeElement(const lesson::Step& step) {
+  if (step.parameters.from.empty() || step.parameters.from.size() > 9 ||
+      step.parameters.from.find_first_not_of("0123456789") != std::string::npos)
+    return std::nullopt;
+  return std::stoi(step.parameters.from);
+}
+
+// The steps the web core computes as the desktop does, with a 3D view of the scene or an element's hemicube:
+// solve and bounces steps (a bounces step of no bounce shows the emission alone, which has no iteration to
+// scrub), and the steps that compute F by a method, whose live view solves with that F.
 bool isLive(const lesson::Step& step) {
   using lesson::Stage;
   const bool solves =
       step.stage == Stage::Solve || (step.stage == Stage::Bounces && step.parameters.bounces > 0) ||
       step.stage == Stage::FormFactors || step.stage == Stage::Hemicube || step.stage == Stage::Nusselt;
-  const bool shown = std::find(step.views.begin(), step.views.end(), lesson::View::Scene) != step.views.end();
+  auto shows = [&](lesson::View view) {
+    return std::find(step.views.begin(), step.views.end(), view) != step.views.end();
+  };
+  const bool shown = shows(lesson::View::Scene) || (shows(lesson::View::Hemicube) && hemicubeElement(step));
   return solves && shown && !step.scene.empty();
 }
 
@@ -65,6 +77,9 @@ Json liveStep(const lesson::Step& step, const std::string& scenesDir) {
            {"stage", lesson::toString(web::liveStage(step))},
            {"parameters", Json::parse(web::stepParametersJson(step))},
            {"controls", web::liveControls(step)}};
+  const auto from = hemicubeElement(step);
+  if (from && std::find(step.views.begin(), step.views.end(), lesson::View::Hemicube) != step.views.end())
+    out["hemicube"] = {{"from", *from}, {"resolution", step.parameters.resolution.value_or(64)}};
   const Surface* chosen = nullptr;
   for (const Surface& s : scene.surfaces) {
     if (scene.materials[std::size_t(s.material)].isEmitter()) continue;

@@ -162,10 +162,4 @@ Drawing hemicubeFacesDrawing(const HemicubeFaces& faces, std::size_t elements,
   d.text(total, {legendX, y - 2.0 * font}, 0.85 * font, Drawing::Align::Start, Drawing::Align::Centre);
   return d;
 }
-
-void writeHemicubeFacesFigure(const HemicubeFaces& faces, std::size_t elements,
-                              const HemicubeViewOptions& options, const std::string& path) {
-  writeDrawing(hemicubeFacesDrawing(faces, elements, options), path);
-}
-
 }  // namespace rt::viz

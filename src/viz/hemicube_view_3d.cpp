@@ -110,4 +110,11 @@ void writeHemicube3dFigure(const Mesh& mesh, const HemicubeFaces& faces, const H
   writeRenderWindow(window, path, options.size.dpi);
 }
 
+// Here, beside the other VTK writer, so that hemicube_view.cpp stays free of VTK (the web module draws the
+// same figure from hemicubeFacesDrawing).
+void writeHemicubeFacesFigure(const HemicubeFaces& faces, std::size_t elements,
+                              const HemicubeViewOptions& options, const std::string& path) {
+  writeDrawing(hemicubeFacesDrawing(faces, elements, options), path);
+}
+
 }  // namespace rt::viz

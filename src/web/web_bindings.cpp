@@ -5,7 +5,10 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <nlohmann/json.hpp>
+
 #include "viz/display_pipeline.h"
+#include "viz/hemicube_view.h"
 #include "web/web_session.h"
 #include "web/web_step.h"
 
@@ -76,6 +79,48 @@ val displayColours(const rt::web::WebSession& s, int k, double exposure, const s
   return copied(out);
 }
 
+// A 2D figure of the viz layer (viz/drawing.h: polygons, lines and text in pixels, origin bottom-left) as
+// JSON, which live_view.js paints on a canvas: the book's figure, drawn by the same code, live.
+std::string drawingJson(const rt::viz::Drawing& d) {
+  using Json = nlohmann::json;
+  auto colour = [](const rt::viz::Rgb8& c) { return Json::array({c[0], c[1], c[2]}); };
+  Json shapes = Json::array();
+  for (const auto& shape : d.shapes) {
+    if (shape.kind == rt::viz::Drawing::Kind::Image) continue;  // no figure drawn live has one
+    Json points = Json::array();
+    for (const rt::Vec2& p : shape.points) points.push_back(Json::array({p.x(), p.y()}));
+    Json out{{"kind", shape.kind == rt::viz::Drawing::Kind::Text       ? "text"
+                      : shape.kind == rt::viz::Drawing::Kind::Polyline ? "polyline"
+                                                                       : "polygon"},
+             {"points", points},
+             {"filled", shape.filled},
+             {"fill", colour(shape.fill)},
+             {"stroke", colour(shape.stroke)},
+             {"strokeWidth", shape.strokeWidth}};
+    if (shape.kind == rt::viz::Drawing::Kind::Text) {
+      out["text"] = shape.text;
+      out["fontSize"] = shape.fontSize;
+      out["hAlign"] = static_cast<int>(shape.hAlign);
+      out["vAlign"] = static_cast<int>(shape.vAlign);
+      out["bold"] = shape.bold;
+      out["angle"] = shape.angleDegrees;
+    }
+    shapes.push_back(std::move(out));
+  }
+  return Json{
+      {"width", d.width}, {"height", d.height}, {"background", colour(d.background)}, {"shapes", shapes}}
+      .dump();
+}
+
+// The hemicube lesson's figure of one element's faces (viz/hemicube_view.h), "" when there is none.
+std::string hemicubeFigure(const rt::web::WebSession& s, int element, int resolution, int width, int height) {
+  const rt::HemicubeFaces faces = s.hemicube(element, resolution);
+  if (faces.resolution < 2) return "";
+  rt::viz::HemicubeViewOptions options;
+  options.size = {width, height, 96.0};
+  return drawingJson(rt::viz::hemicubeFacesDrawing(faces, static_cast<std::size_t>(s.elements()), options));
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(radiosity_core) {
@@ -100,6 +145,7 @@ EMSCRIPTEN_BINDINGS(radiosity_core) {
                 }))
       .function("displayExposure", &displayExposure)
       .function("displayColours", &displayColours)
+      .function("hemicubeFigure", &hemicubeFigure)
       .function("elements", &WebSession::elements)
       .function("iterations", &WebSession::iterations)
       .function("csv", &WebSession::csv)

@@ -233,6 +233,12 @@ std::vector<double> WebSession::formFactorRow(int i) const {
   return out;
 }
 
+HemicubeFaces WebSession::hemicube(int element, int resolution) const {
+  // The resolution within the step-key table's range for `resolution`.
+  if (!solved_ || element < 0 || element >= elements() || resolution < 2 || resolution > 1024) return {};
+  return renderHemicube(*output_.mesh, element, resolution);
+}
+
 std::vector<double> WebSession::residuals() const {
   std::vector<double> out;
   if (!solved_) return out;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/formfactor/hemicube.h"
 #include "core/io/matrix_export.h"
 #include "core/pipeline/pipeline.h"
 #include "core/progress.h"
@@ -47,6 +48,9 @@ class WebSession {
   std::vector<double> emission() const;
   // Row i of F (empty without F: a solver that traces its own rays stores none).
   std::vector<double> formFactorRow(int i) const;
+  // The hemicube of `element` at `resolution` on the mesh of the last run, what the hemicube lesson's figure
+  // unfolds (resolution 0: no run, or an element or resolution out of range).
+  HemicubeFaces hemicube(int element, int resolution) const;
   // The relative residual after each recorded iteration.
   std::vector<double> residuals() const;
   // B per element as `radiosity solve --output` writes it.

@@ -32,6 +32,9 @@ int BoxTree::build(int first, int count) {
   }
   nodes_[static_cast<std::size_t>(index)].box = box;
   if (count <= kLeafSize) {
+    // A leaf's boxes in index order: nth_element leaves each half in an order of its standard library's
+    // choosing, and the order a query visits them in is the order of the callers' sums.
+    std::sort(order_.begin() + first, order_.begin() + first + count);
     nodes_[static_cast<std::size_t>(index)].first = first;
     nodes_[static_cast<std::size_t>(index)].count = count;
     return index;
@@ -39,9 +42,12 @@ int BoxTree::build(int first, int count) {
   int axis = 0;
   centres.diagonal().maxCoeff(&axis);
   const auto begin = order_.begin() + first, middle = begin + count / 2, end = begin + count;
+  // Equal centres (a regular mesh has many) in index order: the halves are then the same sets with every
+  // standard library, and so is the tree (libstdc++ natively, libc++ in WebAssembly).
   std::nth_element(begin, middle, end, [&](int a, int b) {
-    return boxes_[static_cast<std::size_t>(a)].center()[axis] <
-           boxes_[static_cast<std::size_t>(b)].center()[axis];
+    const double ca = boxes_[static_cast<std::size_t>(a)].center()[axis],
+                 cb = boxes_[static_cast<std::size_t>(b)].center()[axis];
+    return ca < cb || (ca == cb && a < b);
   });
   const int left = build(first, count / 2);
   const int right = build(first + count / 2, count - count / 2);

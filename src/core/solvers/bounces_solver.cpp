@@ -10,6 +10,7 @@ SolverStatus neumannSeries(const RadiositySystem& system, RgbField& B, const Sol
   const SolverStatus valid = validate(system, true);
   if (valid != SolverStatus::Success) return valid;
   if (terms) terms->push_back(system.emission);
+  const GatherRecorder record(system);
   const Stopwatch clock;
   RgbField term = system.emission;
   for (int k = 1, cap = sweepCap(options); k <= cap; ++k) {
@@ -17,7 +18,7 @@ SolverStatus neumannSeries(const RadiositySystem& system, RgbField& B, const Sol
     if (!term.allFinite()) return SolverStatus::NumericalIssue;
     B += term;
     if (terms) terms->push_back(term);
-    IterationRecord r = gatherRecord(system, B, k, clock.seconds());
+    IterationRecord r = record(B, (*system.F) * B, k, clock.seconds());
     const double residual = r.residual;
     if (sink) sink(std::move(r));
     if (residual <= options.tolerance) return SolverStatus::Success;

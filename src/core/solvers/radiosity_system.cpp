@@ -21,7 +21,11 @@ RadiositySystem RadiositySystem::fromGeometry(const Mesh& mesh) {
 
 double RadiositySystem::relativeResidual(const RgbField& B) const {
   if (!F) return std::numeric_limits<double>::quiet_NaN();
-  const RgbField KB = B - (reflectance.array() * ((*F) * B).array()).matrix();
+  return relativeResidual(B, (*F) * B);
+}
+
+double RadiositySystem::relativeResidual(const RgbField& B, const RgbField& FB) const {
+  const RgbField KB = B - (reflectance.array() * FB.array()).matrix();
   const double e = emission.norm();
   const double r = (KB - emission).norm();
   return e > 0 ? r / e : r;

@@ -23,6 +23,8 @@ struct RadiositySystem {
   // ||K B - E|| / ||E|| over all channels (Frobenius), K = I - diag(rho) F. Without F it cannot be
   // computed: NaN.
   double relativeResidual(const RgbField& B) const;
+  // The same with F B given (a solver that has the product at hand saves the pass over F).
+  double relativeResidual(const RgbField& B, const RgbField& FB) const;
 };
 
 }  // namespace rt

@@ -26,15 +26,22 @@ double totalEmittedPower(const RadiositySystem& system) {
   return emittedPower(system).sum();
 }
 
-IterationRecord gatherRecord(const RadiositySystem& system, const RgbField& B, int iteration,
-                             double seconds) {
+GatherRecorder::GatherRecorder(const RadiositySystem& system)
+    : system_(system), emitted_(totalEmittedPower(system)) {
+  const FormFactorMatrix& F = *system.F;
+  absorbing_ = system.areas.asDiagonal() * (F * (1.0 - system.reflectance.array()).matrix());
+  escaping_ = (system.areas.array() * (1.0 - F.rowwise().sum().array())).matrix();
+}
+
+IterationRecord GatherRecorder::operator()(const RgbField& B, const RgbField& FB, int iteration,
+                                           double seconds) const {
   IterationRecord r;
   r.iteration = iteration;
   r.B = B;
-  r.residual = system.relativeResidual(B);
-  r.emittedPower = totalEmittedPower(system);
-  r.absorbedPower = absorbedPower(system, B).sum();
-  r.escapedPower = escapedPower(system, B).sum();
+  r.residual = system_.relativeResidual(B, FB);
+  r.emittedPower = emitted_;
+  r.absorbedPower = (B.array() * absorbing_.array()).sum();
+  r.escapedPower = (B.transpose() * escaping_).sum();
   r.seconds = seconds;
   return r;
 }

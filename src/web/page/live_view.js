@@ -2,7 +2,8 @@
 // of a step computed in the browser by the WebAssembly core (radiosity-core.js): rotate and zoom with the
 // mouse, a scrubber with play through the solver's iterations beside the residual chart, and one widget per
 // control of the step, built from the rows of the lesson layer's table of step keys that the core hands out
-// (the app's parameter panel builds its widgets from the same rows). A change solves again in a Web Worker,
+// (the app's parameter panel builds its widgets from the same rows), and compare mode: the step beside itself
+// with another method or solver from those rows. A change solves again in a Web Worker,
 // so that the page stays responsive, with a progress bar; the form factors stay cached in the core when only
 // the light or a reflectance changed.
 // RT_LIVE[KEY] (the page's <lesson>-live.js) holds the step: its scene files, its stage, its parameters as
@@ -44,10 +45,12 @@
     // pipeline (exposure, tone map and gamma as the step sets them; `exposure` kept from the view's first
     // solve, so that more light shows brighter).
     function solve(s, step, exposure, id) {
+      const started = performance.now();
       const summary = runStep(s, step, (fraction, stage) => self.postMessage({ id, progress: fraction, stage }));
       const p = step.parameters;
       const toneMap = p['tone-map'] || 'linear', gamma = p.gamma !== 'false';
       if (!exposure) exposure = s.session.displayExposure(Number(p.exposure || 0), toneMap);
+      const ran = performance.now();
       const history = [], colours = [];
       for (let k = 0; k < summary.iterations; ++k) {
         history.push(s.session.radiosity(k));
@@ -57,6 +60,8 @@
                        finalColours: s.session.displayColours(-1, exposure, toneMap, gamma),
                        residuals: s.session.residuals(), positions: s.session.trianglePositions(),
                        triangleElements: s.session.triangleElements() };
+      // Where the time went (the page adds the transfer and the repaint): the core's run and the copies out.
+      result.phases = { run: (ran - started) / 1000, copies: (performance.now() - ran) / 1000 };
       const buffers = [result.final, result.finalColours, result.residuals, result.positions, result.triangleElements,
                        ...history, ...colours];
       return [result, buffers.map((b) => b.buffer)];
@@ -68,6 +73,7 @@
       if (op === 'solve') return solve(s, a.step, a.exposure, id);
       if (s.ran !== JSON.stringify(a.step)) runStep(s, a.step, () => {});
       if (op === 'row') return [s.session.formFactorRow(a.element)];
+      if (op === 'hemicube') return [s.session.hemicubeFigure(a.element, a.resolution, a.width, a.height)];
       if (op === 'csv') return [s.session.csv()];
       if (op === 'matrix') return [s.session.formFactorFile(a.format)];
       throw new Error('unknown request ' + op);
@@ -121,6 +127,51 @@
       for (let c = 0; c < 3; ++c) {
         const v = rgb8[3 * e + c] / 255;
         for (let k = 0; k < 3; ++k) out[9 * t + 3 * k + c] = v;
+      }
+    }
+  }
+
+  // A 2D figure of the core's viz layer (polygons, lines and text in pixels, origin bottom-left; the module
+  // hands it out as JSON) painted on a canvas.
+  function paintDrawing(canvas, d) {
+    canvas.width = d.width;
+    canvas.height = d.height;
+    const g = canvas.getContext('2d');
+    const rgb = (c) => 'rgb(' + c.join(',') + ')';
+    g.fillStyle = rgb(d.background);
+    g.fillRect(0, 0, d.width, d.height);
+    const align = ['left', 'center', 'right'], baseline = ['bottom', 'middle', 'top'];
+    for (const shape of d.shapes) {
+      const points = shape.points.map(([x, y]) => [x, d.height - y]);
+      if (shape.kind === 'text') {
+        g.save();
+        g.translate(points[0][0], points[0][1]);
+        g.rotate((-shape.angle * Math.PI) / 180);
+        g.font = (shape.bold ? 'bold ' : '') + shape.fontSize + 'px sans-serif';
+        g.textAlign = align[shape.hAlign];
+        g.textBaseline = baseline[shape.vAlign];
+        g.fillStyle = rgb(shape.fill);
+        g.fillText(shape.text, 0, 0);
+        g.restore();
+        continue;
+      }
+      g.beginPath();
+      points.forEach(([x, y], k) => (k ? g.lineTo(x, y) : g.moveTo(x, y)));
+      if (shape.kind === 'polygon') g.closePath();
+      if (shape.kind === 'polygon' && shape.filled) {
+        g.fillStyle = rgb(shape.fill);
+        g.fill();
+        // Neighbouring pixels of a face share their edges: a hairline of their colour hides the seam.
+        if (!(shape.strokeWidth > 0)) {
+          g.strokeStyle = g.fillStyle;
+          g.lineWidth = 0.5;
+          g.stroke();
+        }
+      }
+      if (shape.strokeWidth > 0) {
+        g.strokeStyle = rgb(shape.stroke);
+        g.lineWidth = shape.strokeWidth;
+        g.stroke();
       }
     }
   }
@@ -225,16 +276,19 @@
 
     build(container) {
       container.classList.add('live-ready');
-      const view = element('div', { class: 'live-canvas' }, container);
-      this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
-      this.renderer.setPixelRatio(1);
-      this.renderer.setSize(container.clientWidth || 640, Math.round((container.clientWidth || 640) * 0.75));
-      view.appendChild(this.renderer.domElement);
+      // The view, and beside it (compare mode) the same step with another method or solver.
+      const views = element('div', { class: 'live-canvases' }, container);
+      const view = element('div', { class: 'live-canvas' }, views);
+      this.caption = element('div', { class: 'live-caption' }, view);
+      this.renderer = this.makeRenderer(container, view);
       this.scene = new THREE.Scene();
       this.scene.background = new THREE.Color(0x202020);
       this.camera = new THREE.PerspectiveCamera(40, 4 / 3, 0.001, 1e7);
       this.controls = new THREE.OrbitControls(this.camera, this.renderer.domElement);
       this.controls.addEventListener('change', () => this.render());
+      this.compareView = element('div', { class: 'live-canvas live-compare-canvas' }, views);
+      this.compareView.hidden = true;
+      this.compareCaption = element('div', { class: 'live-caption' }, this.compareView);
 
       const panel = element('div', { class: 'live-panel' }, container);
       const scrub = element('div', { class: 'live-row' }, panel);
@@ -252,8 +306,19 @@
       busy.hidden = true;
       this.refusal = element('div', { class: 'live-error live-refusal' }, panel);
       this.numbers = element('div', { class: 'live-numbers' }, panel);
+      this.compareNumbers = element('div', { class: 'live-numbers live-compare-numbers' }, panel);
       this.picked = element('div', { class: 'live-picked', text: 'Click an element to see its B and its row of F.' },
                             panel);
+      // A step that shows an element's hemicube: its five faces unfolded, the lesson's figure drawn live by the
+      // core, from the element chosen here at the step's resolution.
+      if (this.step.hemicube) {
+        const holder = element('div', { class: 'live-hemicube' }, container);
+        const label = element('label', { class: 'live-row', text: 'Hemicube of element ' }, holder);
+        this.hemicubeFrom = element('input', { type: 'number', min: '0', step: '1', class: 'live-hemicube-from',
+                                               value: String(this.step.hemicube.from) }, label);
+        this.hemicubeCanvas = element('canvas', { class: 'live-hemicube-faces' }, holder);
+        this.hemicubeFrom.addEventListener('change', () => this.drawHemicube());
+      }
       // A click (not a drag) picks the element under the pointer.
       const canvas = this.renderer.domElement;
       canvas.addEventListener('pointerdown', (e) => (this.down = [e.clientX, e.clientY]));
@@ -263,6 +328,15 @@
       });
       this.scrubber.addEventListener('input', () => this.show(Number(this.scrubber.value)));
       this.play.addEventListener('click', () => this.toggle());
+    }
+
+    makeRenderer(container, holder) {
+      const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+      renderer.setPixelRatio(1);
+      // The drawing buffer's size only: the style sheet sizes the canvas, one or two to the width.
+      renderer.setSize(container.clientWidth || 640, Math.round((container.clientWidth || 640) * 0.75), false);
+      holder.appendChild(renderer.domElement);
+      return renderer;
     }
 
     buildControls() {
@@ -280,6 +354,86 @@
         this.shown.push([row, key, input]);
         input.addEventListener('change', () => this.edited(row, key, input));
       }
+      this.buildCompare();
+    }
+
+    // Compare mode: the step again with another form-factor method or solver, the choices those of the same
+    // rows of the step-key table as the widgets (the app's compare mode sets two methods or solvers side by
+    // side), both computed in the worker and coloured at one exposure, so that brighter means more light.
+    buildCompare() {
+      const rows = this.rows.filter((row) => (row.name === 'method' || row.name === 'solver') && row.choices);
+      if (rows.length === 0) return;
+      const label = element('label', { class: 'live-row', text: 'Compare with ',
+                                       title: 'The same step beside this one, with another method or solver' },
+                            this.form);
+      const select = element('select', { class: 'live-compare' }, label);
+      element('option', { value: '', text: 'nothing' }, select);
+      for (const row of rows)
+        for (const choice of row.choices)
+          element('option', { value: row.name + '=' + choice, text: row.label + ': ' + choice }, select);
+      this.compareSelect = select;
+      select.addEventListener('change', () => this.compare(select.value));
+    }
+
+    // Shows the step with `choice` ("solver=jacobi", "method=analytic") beside this view; '' ends it.
+    async compare(choice) {
+      this.compareWith = choice;
+      this.compareSelect.value = choice;
+      if (!choice) {
+        this.compareView.hidden = true;
+        this.compareResult = null;
+        this.compareNumbers.textContent = '';
+        this.caption.textContent = '';
+        return;
+      }
+      return this.solve();
+    }
+
+    // The compared step's parameters: this view's, with the chosen key's value.
+    compareParameters() {
+      const [key, value] = this.compareWith.split('=');
+      return Object.assign({}, this.parameters, { [key]: value });
+    }
+
+    async solveCompare() {
+      const parameters = this.compareParameters();
+      const result = await this.request('solve', { exposure: this.exposure,
+                                                   step: { stage: this.step.stage || 'solve', parameters } });
+      if (!this.compareRenderer) {
+        this.compareRenderer = this.makeRenderer(this.renderer.domElement.closest('.live-view'), this.compareView);
+        this.compareScene = new THREE.Scene();
+        this.compareScene.background = this.scene.background;
+        this.compareMesh = new THREE.Mesh(new THREE.BufferGeometry(), this.mesh.material);
+        this.compareScene.add(this.compareMesh);
+        // Either view turns both: one camera, two controls on its target.
+        const controls = new THREE.OrbitControls(this.camera, this.compareRenderer.domElement);
+        controls.target = this.controls.target;
+        controls.addEventListener('change', () => this.render());
+      }
+      const geometry = this.compareMesh.geometry;
+      geometry.setAttribute('position', new THREE.BufferAttribute(result.positions, 3));
+      this.compareColours = new Float32Array(result.positions.length);
+      geometry.setAttribute('color', new THREE.BufferAttribute(this.compareColours, 3));
+      geometry.computeBoundingSphere();
+      this.compareResult = result;
+      this.compareView.hidden = false;
+    }
+
+    // The faces from the element the widget names (kept within the mesh) at the step's resolution.
+    async drawHemicube() {
+      const last = Math.max(0, this.summary.elements - 1);
+      const from = Math.min(last, Math.max(0, Math.round(Number(this.hemicubeFrom.value) || 0)));
+      this.hemicubeFrom.max = String(last);
+      this.hemicubeFrom.value = String(from);
+      const resolution = Number(this.parameters.resolution || this.step.hemicube.resolution);
+      const figure = await this.request('hemicube', { element: from, resolution, width: 880, height: 800 });
+      if (figure) paintDrawing(this.hemicubeCanvas, JSON.parse(figure));
+    }
+
+    // What a view's step computes with, for its caption.
+    describe(summary, parameters) {
+      return (summary.method ? summary.method + ', ' : '') + summary.solver +
+             (parameters.subdivide ? ', subdivide ' + parameters.subdivide : '');
     }
 
     // What a widget shows: the step's value, or the default the method or solver then uses (as the app).
@@ -334,10 +488,23 @@
         ++this.progressReports;
         this.progress.value = fraction;
         this.progressLabel.textContent = stage + ' ' + Math.round(100 * fraction) + ' %';
-      }).then((result) => {
+      }).then(async (result) => {
         this.refusal.textContent = '';
         this.good = tried;
+        this.exposure = this.exposure || result.exposure;
+        if (this.compareWith) {
+          try {
+            await this.solveCompare();
+          } catch (error) {
+            // The view keeps its own solution; the text says why nothing stands beside it.
+            this.compareView.hidden = true;
+            this.compareResult = null;
+            this.compareNumbers.textContent = 'Not compared: ' + error.message;
+          }
+        }
         this.take(result, (performance.now() - started) / 1000);
+        if (this.hemicubeCanvas) await this.drawHemicube();
+        this.phases = Object.assign({ total: (performance.now() - started) / 1000 }, result.phases);
       }, (error) => {
         this.refusal.textContent = 'Not applied: ' + error.message;
         if (!this.good) throw error;
@@ -414,7 +581,38 @@
           (k < this.residuals.length ? this.residuals[k].toExponential(2) : '-') +
           '; mean B ' + (total / B.length).toFixed(3) + ' W/m² (computed here in ' +
           this.seconds.toFixed(2) + ' s)';
+      this.showCompare(k, B);
       this.render();
+    }
+
+    // The compared step at the same iteration (or its last), and how far its B is from this view's.
+    showCompare(k, B) {
+      const r = this.compareResult;
+      if (!r || this.compareView.hidden) return;
+      const iterations = r.summary.iterations;
+      const j = Math.min(k, iterations - 1);
+      const other = j >= 0 && j < r.history.length ? r.history[j] : r.final;
+      colours(j >= 0 && j < r.colours.length ? r.colours[j] : r.finalColours,
+              r.triangleElements, this.compareColours);
+      this.compareMesh.geometry.attributes.color.needsUpdate = true;
+      this.caption.textContent = this.describe(this.summary, this.parameters);
+      this.compareCaption.textContent = this.describe(r.summary, this.compareParameters());
+      let total = 0, largest = 0, top = 0;
+      for (let i = 0; i < other.length; ++i) total += other[i];
+      if (other.length === B.length) {
+        for (let i = 0; i < B.length; ++i) {
+          largest = Math.max(largest, Math.abs(other[i] - B[i]));
+          top = Math.max(top, Math.abs(B[i]));
+        }
+      }
+      this.compareNumbers.textContent =
+          'Beside it, ' + this.describe(r.summary, this.compareParameters()) + ': ' + r.summary.status + ' after ' +
+          iterations + ' iterations; iteration ' + (j + 1) + ' shown, residual ' +
+          (j >= 0 && j < r.residuals.length ? r.residuals[j].toExponential(2) : '-') + '; mean B ' +
+          (total / other.length).toFixed(3) + ' W/m²' +
+          (other.length === B.length ? '; largest |ΔB| ' + (top > 0 ? (100 * largest / top).toPrecision(3) : '0') +
+                                       ' % of the largest B'
+                                     : ' (another mesh)');
     }
 
     // The element seen at a client position (-1 for none); its B in the iteration shown and its row of F
@@ -466,6 +664,7 @@
 
     render() {
       this.renderer.render(this.scene, this.camera);
+      if (this.compareRenderer && !this.compareView.hidden) this.compareRenderer.render(this.compareScene, this.camera);
     }
   }
 

@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/portable_heap.h"
+
 namespace rt {
 namespace {
 
@@ -55,7 +57,8 @@ double HiddenIntegral::operator()(const SourcePanel* panels, int count, double t
 template <class T, class Split>
 double HiddenIntegral::refine(std::vector<T>& heap, double tolerance, Split&& split) {
   auto byError = [](const T& a, const T& b) { return a.error < b.error; };
-  std::make_heap(heap.begin(), heap.end(), byError);
+  // The same cells in the same order with every standard library (portable_heap.h).
+  portable_heap::make(heap, byError);
   double error = 0, done = 0;
   for (const T& item : heap) error += item.error;
   while (!heap.empty() && error > tolerance) {
@@ -63,7 +66,7 @@ double HiddenIntegral::refine(std::vector<T>& heap, double tolerance, Split&& sp
       work_.budgetReached = true;
       break;
     }
-    std::pop_heap(heap.begin(), heap.end(), byError);
+    portable_heap::pop(heap, byError);
     T worst = std::move(heap.back());
     heap.pop_back();
     error -= worst.error;
@@ -76,7 +79,7 @@ double HiddenIntegral::refine(std::vector<T>& heap, double tolerance, Split&& sp
     done += split(worst, heap);
     for (std::size_t k = before; k < heap.size(); ++k) {
       error += heap[k].error;
-      std::push_heap(heap.begin(), heap.begin() + static_cast<std::ptrdiff_t>(k) + 1, byError);
+      portable_heap::push(heap, k + 1, byError);
     }
   }
   for (const T& item : heap) done += item.value;
