@@ -18,10 +18,7 @@ namespace rt::viz {
 namespace {
 
 Mesh gridRoom() {
-  MeshOptions o;
-  o.mode = MeshOptions::Mode::Count;
-  o.count = 6;
-  return buildMesh(vizt::openRoom(), o);
+  return vizt::openRoomMesh(6);
 }
 
 TEST(ElementPolyData, OneCellPerElementAndAPointPerCorner) {

@@ -72,6 +72,13 @@ Scene openRoom() {
   return scene;
 }
 
+Mesh openRoomMesh(int count) {
+  MeshOptions o;
+  o.mode = MeshOptions::Mode::Count;
+  o.count = count;
+  return buildMesh(openRoom(), o);
+}
+
 RgbField syntheticRadiosity(const Mesh& mesh) {
   RgbField B(static_cast<Eigen::Index>(mesh.size()), 3);
   const Vec3 light(0.5, 1.0, 0.5);

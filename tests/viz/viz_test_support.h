@@ -13,6 +13,8 @@ namespace rt::vizt {
 // A unit room open at the front (+z): white floor, ceiling and back wall, red left and green right walls, a
 // square light in the ceiling. Every patch faces inwards.
 Scene openRoom();
+// openRoom() with each patch split count × count.
+Mesh openRoomMesh(int count);
 // Radiosity that falls off with the distance to the light: smooth, positive, with colour from the
 // reflectances.
 RgbField syntheticRadiosity(const Mesh& mesh);

@@ -12,10 +12,7 @@ namespace rt::viz {
 namespace {
 
 Mesh roomMesh() {
-  MeshOptions o;
-  o.mode = MeshOptions::Mode::Count;
-  o.count = 2;
-  return buildMesh(vizt::openRoom(), o);
+  return vizt::openRoomMesh(2);
 }
 
 RecordedWalk walkOver(const Mesh& mesh, std::vector<int> elements) {
