@@ -37,9 +37,7 @@ add_subdirectory(src/core)
 # name the homework topics, hence rt_homework (core only). The rest of the lesson layer (Markdown, the runner)
 # stays native.
 add_subdirectory(src/homework)
-set(rt_lesson_dir ${PROJECT_SOURCE_DIR}/src/lesson)
-add_library(rt_lesson STATIC ${rt_lesson_dir}/lesson.cpp ${rt_lesson_dir}/lesson_parser.cpp
-            ${rt_lesson_dir}/placeholders.cpp ${rt_lesson_dir}/step_keys.cpp ${rt_lesson_dir}/step_keys_chapters.cpp
-            ${rt_lesson_dir}/step_settings.cpp ${rt_lesson_dir}/value_parsing.cpp)
+include(${PROJECT_SOURCE_DIR}/src/lesson/parser_sources.cmake)
+add_library(rt_lesson STATIC ${RT_LESSON_PARSER_SOURCES} ${PROJECT_SOURCE_DIR}/src/lesson/step_settings.cpp)
 target_link_libraries(rt_lesson PUBLIC rt_core rt_homework PRIVATE rt_warnings nlohmann_json::nlohmann_json)
 add_subdirectory(src/web)
