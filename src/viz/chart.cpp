@@ -77,14 +77,14 @@ std::string formatted(const char* format, double value) {
   return text;
 }
 
-Series fittedPowerLaw(const Series& points, double slope, const std::string& name) {
+Series fittedPowerLaw(const Series& points, double slope, int fitOf) {
   double lx = 0, ly = 0;
   const double count = static_cast<double>(points.x.size());
   for (std::size_t k = 0; k < points.x.size(); ++k) {
     lx += std::log(points.x[k]) / count;
     ly += std::log(points.y[k]) / count;
   }
-  Series fitted{name, {}, {}};
+  Series fitted{points.name + " (fit)", {}, {}, fitOf};
   for (double x : {points.x.front(), points.x.back()}) {
     fitted.x.push_back(x);
     fitted.y.push_back(std::exp(ly + slope * (std::log(x) - lx)));
@@ -111,9 +111,27 @@ void writeLineChart(const std::vector<Series>& series, const ChartOptions& optio
 
   static const int markers[] = {vtkPlotPoints::CIRCLE, vtkPlotPoints::SQUARE, vtkPlotPoints::DIAMOND,
                                 vtkPlotPoints::CROSS, vtkPlotPoints::PLUS};
-  int drawn = 0;
+  // Okabe-Ito without its yellow (too light on white) until the other seven are used; a fit takes its
+  // series' colour and marker slot.
+  static const int order[] = {0, 1, 2, 4, 5, 6, 7, 3};
+  std::vector<std::size_t> slot(series.size(), 0), drawingOrder;
+  for (std::size_t s = 0, next = 0; s < series.size(); ++s)
+    if (series[s].fitOf < 0) slot[s] = next++;
   for (std::size_t s = 0; s < series.size(); ++s) {
+    const int of = series[s].fitOf;
+    if (of >= static_cast<int>(series.size()) || (of >= 0 && series[of].fitOf >= 0))
+      throw std::invalid_argument(path + ": series '" + series[s].name + "' is a fit to no measured series");
+    if (of >= 0) {
+      slot[s] = slot[of];
+      drawingOrder.push_back(s);  // fits first, so that the measured curves are drawn over them
+    }
+  }
+  for (std::size_t s = 0; s < series.size(); ++s)
+    if (series[s].fitOf < 0) drawingOrder.push_back(s);
+  int drawn = 0;
+  for (const std::size_t s : drawingOrder) {
     const Series& one = series[s];
+    const bool fit = one.fitOf >= 0;
     auto x = vtkSmartPointer<vtkDoubleArray>::New();
     x->SetName((one.name + " x").c_str());
     auto y = vtkSmartPointer<vtkDoubleArray>::New();
@@ -132,16 +150,18 @@ void writeLineChart(const std::vector<Series>& series, const ChartOptions& optio
     auto plot = vtkSmartPointer<PageUnitsLine>::New();
     chart->AddPlot(plot);
     plot->SetInputData(table, 0, 1);
-    // Okabe-Ito without its yellow (too light on white) until the other seven are used.
-    static const int order[] = {0, 1, 2, 4, 5, 6, 7, 3};
-    const Rgb8 colour = qualitativeColour(order[s % 8]);
+    const Rgb8 colour = qualitativeColour(order[slot[s] % 8]);
     plot->SetColor(colour[0], colour[1], colour[2], 255);
-    plot->SetWidth(static_cast<float>(2.5 * scale));
+    plot->SetWidth(static_cast<float>((fit ? 1.5 : 2.5) * scale));
+    if (fit) {
+      plot->GetPen()->SetLineType(vtkPen::DASH_LINE);
+      plot->SetLegendVisibility(false);
+    }
     // Markers where they stand apart (two and a half marker widths per point across the figure): packed
     // closer they merge into a band wider than the line.
     const double markerSize = 7.0 * scale;
     const bool spaced = static_cast<double>(x->GetNumberOfTuples()) * 2.5 * markerSize <= options.width;
-    plot->SetMarkerStyle(options.markers && spaced ? markers[s % 5] : vtkPlotPoints::NONE);
+    plot->SetMarkerStyle(options.markers && spaced && !fit ? markers[slot[s] % 5] : vtkPlotPoints::NONE);
     plot->SetMarkerSize(static_cast<float>(markerSize));
     ++drawn;
   }
@@ -163,7 +183,8 @@ void writeLineChart(const std::vector<Series>& series, const ChartOptions& optio
                             static_cast<float>(high[0] - low[0]), static_cast<float>(high[1] - low[1])));
   }
   std::string description = "x: " + options.xLabel + "; y: " + options.yLabel + "; series:";
-  for (const Series& s : series) description += " " + s.name + ",";
+  for (const Series& s : series)
+    if (s.fitOf < 0) description += " " + s.name + ",";
   description.pop_back();
   writeContextView(view, path, options.title, description);
 }

@@ -10,14 +10,19 @@ namespace rt::viz {
 struct Series {
   std::string name;
   std::vector<double> x, y;
+  // The index (in the same chart) of the series this one is fitted to, or -1. A fit is drawn dashed and thin,
+  // in its series' colour and without markers, under the measured curves and without a legend entry of its
+  // own: the measured series' name carries what the fit says (its order or slope).
+  int fitOf = -1;
 };
 
 // printf-style text of one number (a chart's legend or a figure's caption), e.g. formatted("%.2f", slope).
 std::string formatted(const char* format, double value);
 
 // The straight line of log-log slope `slope` through the centre of mass (in log-log) of `points`, drawn over
-// their first and last x: a fitted power law for a chart. `points` must have two or more points.
-Series fittedPowerLaw(const Series& points, double slope, const std::string& name);
+// their first and last x: a fitted power law for a chart, fitted to the series at index `fitOf`. `points`
+// must have two or more points.
+Series fittedPowerLaw(const Series& points, double slope, int fitOf);
 
 struct ChartOptions {
   std::string title, xLabel, yLabel;

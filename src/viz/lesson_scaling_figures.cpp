@@ -82,14 +82,13 @@ std::string renderScalingView(lesson::View view, const lesson::Step& step, const
              formatted("%.2f", d.linksSlope);
     }
     case lesson::View::Noise: {
-      Series reported{"reported standard error", {}, {}};
+      Series reported{"reported standard error: slope " + formatted("%.2f", d.noiseSlope), {}, {}};
       for (const auto& p : d.noise) {
         reported.x.push_back(p.raysPerElement);
         reported.y.push_back(p.standardError);
       }
       if (reported.x.size() < 2) throw std::runtime_error(path + ": fewer than two noise points");
-      const Series fitted =
-          fittedPowerLaw(reported, d.noiseSlope, "fit: slope " + formatted("%.2f", d.noiseSlope));
+      const Series fitted = fittedPowerLaw(reported, d.noiseSlope, 0);
       ChartOptions o{"Local lines: noise against rays",
                      "rays per element",
                      "standard error / ||B||",
@@ -97,9 +96,9 @@ std::string renderScalingView(lesson::View view, const lesson::Step& step, const
                      true,
                      s.width,
                      s.height};
-      writeLineChart({fitted, reported}, o, path);
+      writeLineChart({reported, fitted}, o, path);
       return "The standard error local lines reports, relative to ||B||, against the rays per element "
-             "(log-log): the fitted slope is " +
+             "(log-log): the fitted slope (dashed) is " +
              formatted("%.2f", d.noiseSlope) + ", and 1/sqrt(rays) would be -0.5";
     }
     case lesson::View::Clusters: {
@@ -121,28 +120,25 @@ std::string renderScalingView(lesson::View view, const lesson::Step& step, const
 std::string renderSamplingView(const lesson::StepResult& r, const StepFigureSettings& s,
                                const std::string& path) {
   if (!r.sampling || r.sampling->empty()) throw std::runtime_error(path + ": the step measured no sampling");
-  std::vector<Series> measured, fitted;
+  std::vector<Series> all;
   std::string slopes;
   for (const SamplingSeries& v : *r.sampling) {
-    Series points{v.variant.name, {}, {}};
+    Series points{v.variant.name + ": slope " + formatted("%.2f", v.slope), {}, {}};
     for (const SamplingPoint& p : v.points) {
       points.x.push_back(p.rays);
       points.y.push_back(p.error);
     }
     if (points.x.size() < 2) throw std::runtime_error(path + ": fewer than two ray counts");
-    fitted.push_back(
-        fittedPowerLaw(points, v.slope, v.variant.name + " fit, slope " + formatted("%.2f", v.slope)));
     slopes += (slopes.empty() ? "" : ", ") + v.variant.name + " " + formatted("%.2f", v.slope);
-    measured.push_back(std::move(points));
+    all.push_back(std::move(points));
+    all.push_back(fittedPowerLaw(all.back(), v.slope, static_cast<int>(all.size()) - 1));
   }
-  std::vector<Series> all = std::move(fitted);
-  all.insert(all.end(), measured.begin(), measured.end());
   ChartOptions o{"Error against rays", "rays", "RMS error / B", true, true, s.width, s.height};
   writeLineChart(all, o, path);
   return "RMS error against the direct solution (F by " + r.method +
          ") against the rays used, each point over " +
          std::to_string(static_cast<int>(r.value("seeds").value_or(0))) +
-         " seeds (log-log); fitted slopes: " + slopes;
+         " seeds (log-log), each with its fitted power law (dashed); fitted slopes: " + slopes;
 }
 
 }  // namespace rt::viz::detail

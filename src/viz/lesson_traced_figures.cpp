@@ -62,7 +62,8 @@ std::string renderTracedView(lesson::View view, const lesson::Step& step, const 
              "path tracer's own standard error per pixel";
     }
     case lesson::View::Noise: {
-      Series measured{"measured (two seeds)", {}, {}}, reported{"reported standard error", {}, {}};
+      Series measured{"measured (two seeds): slope " + formatted("%.2f", t.slope), {}, {}},
+          reported{"reported standard error", {}, {}};
       for (const lesson::NoisePoint& p : t.noise) {
         measured.x.push_back(p.paths);
         measured.y.push_back(p.measured);
@@ -71,7 +72,7 @@ std::string renderTracedView(lesson::View view, const lesson::Step& step, const 
       }
       if (measured.x.empty()) throw std::runtime_error(path + ": no noise measured");
       // The fitted line through the measured points' centre of mass in log-log.
-      const Series fitted = fittedPowerLaw(measured, t.slope, "fit: slope " + formatted("%.2f", t.slope));
+      const Series fitted = fittedPowerLaw(measured, t.slope, 0);
       ChartOptions o{"Path tracer's noise against paths per pixel",
                      "paths per pixel",
                      "RMS noise / mean",
@@ -79,10 +80,9 @@ std::string renderTracedView(lesson::View view, const lesson::Step& step, const 
                      true,
                      s.width,
                      s.height};
-      // The fit first, so that the measured points are drawn over it.
-      writeLineChart({fitted, measured, reported}, o, path);
+      writeLineChart({measured, fitted, reported}, o, path);
       return "RMS noise of the path-traced image relative to its mean, against the paths per pixel "
-             "(log-log): the fitted slope is " +
+             "(log-log): the fitted slope (dashed) is " +
              formatted("%.2f", t.slope) + ", and 1/sqrt(paths) would be -0.5";
     }
     default:

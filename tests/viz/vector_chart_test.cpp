@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "support/test_paths.h"
 #include "support/vector_chart_check.h"
 #include "viz/chart.h"
+#include "viz/colour_map.h"
 
 namespace rt::viz {
 namespace {
@@ -77,6 +79,38 @@ TEST(VectorChart, TheFigureCommandsConvergenceChartIsReadableInSvgAndPdf) {
     // --solver is the scene's solver: the chart compares all four, Jacobi and Gauss-Seidel first.
     test::expectReadableChart(output, {"iteration", "relative", "residual"}, 2);
   }
+}
+
+// A fitted power law beside its measured points, as the book's error-against-n figures draw it: in the
+// measured series' colour (no second colour, which a reader would take for another series), without a legend
+// entry of its own, and the measured curve still a thin line.
+TEST(VectorChart, AFitTakesItsSeriesColourAndNoLegendEntry) {
+  RT_REQUIRE_VECTOR_RENDERERS();
+  const std::string dir = test::scratchDir("vector_chart_fit");
+  Series measured{"measured: slope -0.50", {100, 400, 1600, 6400}, {0.1, 0.052, 0.024, 0.0126}};
+  const Series fit = fittedPowerLaw(measured, -0.5, 0);
+  EXPECT_EQ(fit.fitOf, 0);
+  ChartOptions o;
+  o.title = "Noise against rays";
+  o.xLabel = "rays";
+  o.yLabel = "error";
+  o.logX = o.logY = true;
+  for (const std::string extension : {".svg", ".pdf"}) {
+    const std::string path = dir + "/fit" + extension;
+    writeLineChart({measured, fit}, o, path);
+    const test::RenderedChart page = test::renderChart(path);
+    ASSERT_TRUE(page.error.empty()) << page.error;
+    const Rgb8 first = qualitativeColour(0), second = qualitativeColour(1);
+    const test::Stroke curve = test::measureStroke(page, {first[0], first[1], first[2]}, 30);
+    EXPECT_GT(curve.pixels, 100) << extension;
+    EXPECT_LE(curve.width, test::kThinLine) << extension;
+    EXPECT_EQ(test::measureStroke(page, {second[0], second[1], second[2]}, 30).pixels, 0)
+        << extension << ": the fit has a colour of its own";
+    for (const test::Word& w : page.words)
+      EXPECT_EQ(w.text.find("fit"), std::string::npos) << extension << ": a legend entry '" << w.text << "'";
+  }
+  EXPECT_THROW(writeLineChart({measured, Series{"fit of nothing", {1, 2}, {1, 2}, 5}}, o, dir + "/bad.png"),
+               std::invalid_argument);
 }
 
 // Text with a '|' ("|K_ij|" on the colour bar, "largest |value|" in the title of a blocked matrix): in the
