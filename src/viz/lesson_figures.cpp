@@ -62,8 +62,14 @@ void formFactorRow(const lesson::Step& step, const StepResult& r, const StepFigu
   writeSceneFigure(r.mesh, r.camera, data, o, path);
 }
 
+// A surface's name as a figure prints it: "back wall" for the scene's key `back_wall`.
+std::string readable(std::string name) {
+  std::replace(name.begin(), name.end(), '_', ' ');
+  return name;
+}
+
 std::string surfaceNameOf(const StepResult& r, int element) {
-  return r.scene.surfaces[r.scene.patches[r.mesh.elements[element].patch].surface].name;
+  return readable(r.scene.surfaces[r.scene.patches[r.mesh.elements[element].patch].surface].name);
 }
 
 // The element a Nusselt or rays view looks at: the first highlighted element other than the source, otherwise
@@ -323,8 +329,8 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
           throw std::runtime_error(path + ": the step counted no local lines (give it a reference)");
         const double reference = r.value("lines." + surface.name + ".reference").value_or(0.0);
         if (*estimate <= 0 && reference <= 0) continue;  // a surface the source cannot see
-        rows.push_back(
-            {surface.name, *estimate, r.value("lines-se." + surface.name).value_or(0.0), reference});
+        rows.push_back({readable(surface.name), *estimate, r.value("lines-se." + surface.name).value_or(0.0),
+                        reference});
       }
       // The lines that hit nothing: the part of the row that leaves through openings.
       const double escaped = r.value("lines.escaped").value_or(0.0),
@@ -338,8 +344,8 @@ std::string renderView(View view, const lesson::Step& step, const StepResult& r,
       o.title = std::to_string(static_cast<long>(r.value("lines").value_or(0))) + " local lines from the " +
                 surfaceNameOf(r, r.sourceElement) + " against " + step.parameters.reference;
       writeHitsChart(rows, o, path);
-      return "Where the local lines from " + from + " land first, per surface, against the form factors by " +
-             step.parameters.reference;
+      return "Where the local lines from " + from + " (the " + surfaceNameOf(r, r.sourceElement) +
+             ") land first, per surface, against the form factors by " + step.parameters.reference;
     }
     case View::Memory:
     case View::Cost:
