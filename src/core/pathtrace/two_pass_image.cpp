@@ -11,8 +11,9 @@
 // cell several times wider than that distance is wrong by several per cent. So each grid cell is split in
 // four, and its new corners gathered, while the cell spans more of the surface than kCellOverDistance times
 // the harmonic mean distance of its corners' gather rays, the scale over which irradiance changes (Ward,
-// Rubinstein and Clear 1988, irradiance caching), or while it holds pixels of more than one patch, down to
-// single pixels.
+// Rubinstein and Clear 1988, irradiance caching), down to single pixels, or while it holds pixels of more than
+// one patch, down to cells two pixels wide: there every pixel has a gathered neighbour, and splitting such
+// cells further would cost a quarter of all the gathers for little (docs/benchmarks.md).
 
 #include <algorithm>
 #include <cmath>
@@ -27,6 +28,8 @@ namespace {
 
 // A cell may span at most this fraction of its corners' harmonic mean distance.
 constexpr double kCellOverDistance = 1.0;
+// A cell holding two patches is split while it spans more pixels than this.
+constexpr int kTwoPatchesSplitDownTo = 2;
 
 struct PixelHit {
   Vec3 position = Vec3::Zero();
@@ -106,7 +109,7 @@ RgbImage TwoPass::render(const Camera& camera, int width, int height, const TwoP
     // Two patches inside the cell (a block's foot, a corner of the room, an outline): the pixels of each
     // interpolate only their own patch's corners, perhaps a whole cell away.
     for (const std::size_t k : corners)
-      if (patchAt(hits[k]) != patchAt(hits[corners[0]])) return true;
+      if (span > kTwoPatchesSplitDownTo && patchAt(hits[k]) != patchAt(hits[corners[0]])) return true;
     for (const std::size_t k : corners)
       if (hits[k].element >= 0 && span * hits[k].footprint > kCellOverDistance * distance[k]) return true;
     return false;
