@@ -79,6 +79,12 @@ TEST_F(Scaling, TheDirectSolveGrowsFasterThanTheFormFactorsAndJacobisSweepsDoNot
   EXPECT_GT(fill, 0.2);
   EXPECT_LT(12 * fill, 8.0);
   EXPECT_NEAR(*r.value("fill[2]") / fill, 1.0, 0.1);
+  // "Change the samples per pair ... the whole line moves": a quarter of the rays takes less time.
+  Step fewer = step;
+  fewer.parameters.samples = 1;
+  fewer.parameters.subdivisions = {step.parameters.subdivisions.back()};
+  const StepResult less = runner.run(lesson_, fewer);
+  EXPECT_LT(*less.value("seconds.formfactors[0]"), *r.value("seconds.formfactors[3]"));
 }
 
 // "The course's museum" and "The course's factory": each F's bytes, and the links clustering keeps instead,
