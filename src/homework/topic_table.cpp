@@ -85,6 +85,11 @@ const std::vector<Topic>& topicTable() {
        "where the rays from a strip light's edges past a table's edges meet the floor (the umbra and "
        "penumbrae), the width of the light a penumbra point sees, the lines' order and the element they cut",
        "meshing", generateDiscontinuity},
+      {"dense-cost", "What a dense form-factor matrix costs",
+       "the elements of a mesh, the memory of its F in doubles, the largest n that fits, the time of all "
+       "form "
+       "factors and of one Jacobi sweep, and the growth of the memory when every element is split again",
+       "when-n-squared-is-too-big", generateDenseCost},
   };
   return table;
 }

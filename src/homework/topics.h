@@ -30,5 +30,6 @@ std::optional<Exercise> generateRandomWalk(Draw& draw);
 std::optional<Exercise> generateTwoPass(Draw& draw);
 std::optional<Exercise> generateLinearElement(Draw& draw);
 std::optional<Exercise> generateDiscontinuity(Draw& draw);
+std::optional<Exercise> generateDenseCost(Draw& draw);
 
 }  // namespace rt::homework

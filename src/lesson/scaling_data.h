@@ -16,6 +16,10 @@ struct ScalingPoint {
   long elements = 0;
   double denseBytes = 0;         // n^2 doubles: what storing F takes
   double formFactorSeconds = 0;  // computing F with the step's method
+  double directSeconds = 0;      // solving with F by Gaussian elimination
+  double sweepSeconds = 0;       // one Jacobi sweep with F
+  int jacobiSweeps = 0;          // Jacobi's sweeps to the step's tolerance
+  double fill = 0;               // the share of F's entries that are not zero
   long links = 0;                // hierarchical-clustering on the same mesh
   long nodes = 0;
   double clusterBytes = 0;  // tree and links, counted from the containers
@@ -38,6 +42,8 @@ struct ScalingData {
   double noiseSlope = 0;       // log-log slope of the standard error against the rays
   double linksSlope = 0;       // log-log slope of the links against n
   double formFactorSlope = 0;  // log-log slope of the form-factor time against n
+  double directSlope = 0;      // ... of the direct solve's time
+  double sweepSlope = 0;       // ... of one Jacobi sweep's time
   double memoryBytes = 0;      // this machine's physical memory
   double elementsThatFit = 0;  // the n whose dense F fills memoryBytes
   int clusterDepth = 0;

@@ -1,14 +1,17 @@
 // The scaling stage: why the dense method stops at a few ten thousand elements and what replaces it. For
 // each of the step's `subdivisions` the mesh's F is computed with the step's method (its n^2 doubles and its
-// time) and the same mesh is solved by hierarchical-clustering (its links, nodes and counted bytes); local
-// lines, which needs no F at all, is run on the step's own mesh with each `sweep` value as rays per element,
-// and the standard error it reports is fitted against the rays. The cluster tree of the step's mesh is cut
-// at `cluster-depth` so that the figure can show what one link stands for.
+// time), the system is solved directly (LU, n^3) and by Jacobi (sweeps of n^2 each), and the same mesh is
+// solved by hierarchical-clustering (its links, nodes and counted bytes); local lines, which needs no F at
+// all, is run on the step's own mesh with each `sweep` value as rays per element, and the standard error it
+// reports is fitted against the rays. A step that names a `solver` solves its own mesh with it, without F,
+// so that a scene far too large for F (the museum) shows what the solver keeps instead. The cluster tree of
+// the step's mesh is cut at `cluster-depth` so that the figure can show what one link stands for.
 #include <unistd.h>
 
 #include <cmath>
 #include <memory>
 
+#include "core/assembly.h"
 #include "core/solvers/cluster_tree.h"
 #include "lesson/scaling_data.h"
 #include "lesson/step_settings.h"
@@ -37,10 +40,27 @@ void collectBoxes(const ClusterTree& tree, int node, int depth, std::vector<Clus
   collectBoxes(tree, k.right, depth - 1, boxes);
 }
 
-SolveOutcome solveWith(StageContext& c, const Mesh& mesh, const std::string& solver, int raysPerIteration) {
+SolveOutcome solveWith(StageContext& c, const RadiositySystem& system, const std::string& solver,
+                       int raysPerIteration) {
   SolverOptions options = solverOptionsFor(c.parameters);
   if (raysPerIteration > 0) options.raysPerIteration = raysPerIteration;
-  return solveRadiosity(RadiositySystem::fromGeometry(mesh), solver, options, false, c.progress);
+  return solveRadiosity(system, solver, options, false, c.progress);
+}
+
+SolveOutcome solveWith(StageContext& c, const Mesh& mesh, const std::string& solver, int raysPerIteration) {
+  return solveWith(c, RadiositySystem::fromGeometry(mesh), solver, raysPerIteration);
+}
+
+// The dense method's solve on one mesh: Gaussian elimination (n^3 / 3 multiply-adds per factorisation) and
+// Jacobi, whose sweeps cost n^2 each and whose number of sweeps depends on the reflectances, not on n.
+void measureSolves(StageContext& c, const Mesh& mesh, const FormFactorMatrix& F, ScalingPoint& point) {
+  const RadiositySystem system = RadiositySystem::fromMesh(mesh, F);
+  point.directSeconds = solveWith(c, system, "direct", 0).seconds;
+  checkCancelled(c.progress);
+  const SolveOutcome jacobi = solveWith(c, system, "jacobi", 0);
+  point.jacobiSweeps = jacobi.iterations;
+  point.sweepSeconds = jacobi.seconds / std::max(1, jacobi.iterations);
+  point.fill = fillFraction(F);
 }
 
 // The dense matrix against the clustering solver on each of the step's meshes.
@@ -48,7 +68,7 @@ void measureMeshes(StageContext& c, ScalingData& data) {
   StepResult& r = c.result;
   const StepParameters& p = c.parameters;
   auto& v = r.values;
-  std::vector<double> n, links, seconds;
+  std::vector<double> n, links, seconds, direct, sweep;
   for (std::size_t k = 0; k < p.subdivisions.size(); ++k) {
     c.progress.report(0.6 * static_cast<double>(k) / static_cast<double>(p.subdivisions.size()), "meshes");
     MeshOptions o;
@@ -61,9 +81,10 @@ void measureMeshes(StageContext& c, ScalingData& data) {
     const double count = static_cast<double>(mesh.size());
     point.denseBytes = count * count * static_cast<double>(sizeof(double));
     FormFactorStats stats;
-    c.formFactors(mesh, r.method, "subdivisions", stats);
+    const auto F = c.formFactors(mesh, r.method, "subdivisions", stats);
     point.formFactorSeconds = stats.seconds;
     checkCancelled(c.progress);
+    measureSolves(c, mesh, *F, point);
     const SolveOutcome clustered = solveWith(c, mesh, "hierarchical-clustering", 0);
     point.links = clustered.links;
     point.nodes = clustered.nodes;
@@ -76,6 +97,10 @@ void measureMeshes(StageContext& c, ScalingData& data) {
     v["pairs" + i] = count * count;
     v["bytes.dense" + i] = point.denseBytes;
     v["seconds.formfactors" + i] = point.formFactorSeconds;
+    v["seconds.direct" + i] = point.directSeconds;
+    v["seconds.sweep" + i] = point.sweepSeconds;
+    v["iterations.jacobi" + i] = point.jacobiSweeps;
+    v["fill" + i] = point.fill;
     v["links" + i] = static_cast<double>(point.links);
     v["nodes" + i] = static_cast<double>(point.nodes);
     v["links-per-element" + i] = static_cast<double>(point.links) / count;
@@ -84,24 +109,56 @@ void measureMeshes(StageContext& c, ScalingData& data) {
     n.push_back(count);
     links.push_back(static_cast<double>(point.links));
     seconds.push_back(point.formFactorSeconds);
+    direct.push_back(std::max(point.directSeconds, 1e-9));
+    sweep.push_back(std::max(point.sweepSeconds, 1e-9));
     data.points.push_back(point);
   }
   data.linksSlope = logLogSlope(n, links);
   data.formFactorSlope = logLogSlope(n, seconds);
   v["links-slope"] = data.linksSlope;
   v["time-slope.formfactors"] = data.formFactorSlope;
+  data.directSlope = logLogSlope(n, direct);
+  data.sweepSlope = logLogSlope(n, sweep);
+  v["time-slope.direct"] = data.directSlope;
+  v["time-slope.sweep"] = data.sweepSlope;
 
-  // Where F stops fitting in this machine's memory, and the time F would take there, extrapolated from the
-  // largest mesh along n^2 (every pair is computed).
+  // The time F and the direct solve would take where F fills the memory, extrapolated from the largest
+  // mesh along n^2 (every pair is computed) and n^3 (elimination).
+  const ScalingPoint& last = data.points.back();
+  const double ratio = data.elementsThatFit / static_cast<double>(last.elements);
+  v["seconds.formfactors.fit"] = last.formFactorSeconds * ratio * ratio;
+  v["minutes.formfactors.fit"] = last.formFactorSeconds * ratio * ratio / 60.0;
+  v["hours.direct.fit"] = last.directSeconds * ratio * ratio * ratio / 3600.0;
+}
+
+// The step's own mesh: what its dense F would take, against this machine's memory, and with a `solver`
+// written in the step, what that solver keeps instead (it runs without F, so it must be one that needs none).
+void measureOwnMesh(StageContext& c, ScalingData& data) {
+  StepResult& r = c.result;
+  auto& v = r.values;
+  const double count = static_cast<double>(r.mesh.size());
   data.memoryBytes = physicalMemoryBytes();
   data.elementsThatFit = std::sqrt(data.memoryBytes / static_cast<double>(sizeof(double)));
   v["memory"] = data.memoryBytes;
   v["memory.gib"] = data.memoryBytes / (1024.0 * 1024.0 * 1024.0);
   v["elements.fit"] = data.elementsThatFit;
-  const ScalingPoint& last = data.points.back();
-  const double ratio = data.elementsThatFit / static_cast<double>(last.elements);
-  v["seconds.formfactors.fit"] = last.formFactorSeconds * ratio * ratio;
-  v["minutes.formfactors.fit"] = last.formFactorSeconds * ratio * ratio / 60.0;
+  v["pairs.mesh"] = count * count;
+  v["bytes.dense.mesh"] = count * count * static_cast<double>(sizeof(double));
+  v["gib.dense.mesh"] = v["bytes.dense.mesh"] / (1024.0 * 1024.0 * 1024.0);
+  if (!c.step.fields.count("solver")) return;
+  const SolveOutcome own = solveWith(c, r.mesh, c.parameters.solver, 0);
+  if (own.status == SolverStatus::InvalidInput)
+    c.fail("solver", "a scaling step solves its own mesh without F: '" + c.parameters.solver +
+                         "' needs one (use hierarchical-clustering or a local-lines solver)");
+  r.B = own.B;
+  v["links"] = static_cast<double>(own.links);
+  v["links-per-element"] = static_cast<double>(own.links) / count;
+  v["pairs-per-link"] = own.links > 0 ? count * count / static_cast<double>(own.links) : 0.0;
+  v["bytes.solver"] = static_cast<double>(own.memoryBytes);
+  v["dense-over-solver"] =
+      own.memoryBytes > 0 ? v["bytes.dense.mesh"] / static_cast<double>(own.memoryBytes) : 0.0;
+  v["seconds.solver"] = own.seconds;
+  v["iterations"] = own.iterations;
 }
 
 // Local lines on the step's mesh: no F, and its reported noise against the rays.
@@ -134,11 +191,13 @@ void computeScaling(StageContext& c) {
   StepResult& r = c.result;
   const StepParameters& p = c.parameters;
   // Each part runs only when its list is given, so that a step about noise does not pay for the meshes.
-  if (p.subdivisions.empty() && p.sweep.empty())
+  if (p.subdivisions.empty() && p.sweep.empty() && !c.step.fields.count("solver"))
     c.fail("stage",
-           "a scaling step needs `subdivisions` (meshes to measure), `sweep` (rays per element) or both");
+           "a scaling step needs `subdivisions` (meshes to measure), `sweep` (rays per element) or a "
+           "`solver` for its own mesh");
   auto data = std::make_shared<ScalingData>();
   r.method = c.method();
+  measureOwnMesh(c, *data);
   if (!p.subdivisions.empty()) measureMeshes(c, *data);
   if (!p.sweep.empty()) measureNoise(c, *data);
 

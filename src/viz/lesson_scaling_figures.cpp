@@ -47,21 +47,29 @@ std::string renderScalingView(lesson::View view, const lesson::Step& step, const
              formatted("%.0f", d.elementsThatFit);
     }
     case lesson::View::Cost: {
-      Series dense{"form factors (" + r.method + ")", {}, {}}, clustered{"clustering: links + solve", {}, {}};
+      Series dense{"form factors (" + r.method + ")", {}, {}}, clustered{"clustering: links + solve", {}, {}},
+          direct{"direct solve (LU)", {}, {}}, sweep{"one Jacobi sweep", {}, {}};
       for (const auto& p : d.points) {
-        dense.x.push_back(static_cast<double>(p.elements));
+        const double n = static_cast<double>(p.elements);
+        dense.x.push_back(n);
         dense.y.push_back(std::max(p.formFactorSeconds, 1e-6));
-        clustered.x.push_back(static_cast<double>(p.elements));
+        clustered.x.push_back(n);
         clustered.y.push_back(std::max(p.clusterSeconds, 1e-6));
+        direct.x.push_back(n);
+        direct.y.push_back(std::max(p.directSeconds, 1e-6));
+        sweep.x.push_back(n);
+        sweep.y.push_back(std::max(p.sweepSeconds, 1e-6));
       }
       const Series extrapolated =
           powerLine("form factors beyond (n^2)", n1, std::max(last.formFactorSeconds, 1e-6), reach, 2.0);
       ChartOptions o{"Time against n", "elements n", "seconds", true, true, s.width, s.height};
-      writeLineChart({extrapolated, dense, clustered}, o, path);
+      writeLineChart({extrapolated, dense, direct, sweep, clustered}, o, path);
       return "Seconds to compute F with " + r.method +
-             " and to link and solve with clustering, against n (log-log); the measured slope of F's time "
-             "is " +
-             formatted("%.2f", d.formFactorSlope);
+             ", to solve with it directly and to sweep it once, and to link and solve with clustering, "
+             "against "
+             "n (log-log); the measured slopes: F " +
+             formatted("%.2f", d.formFactorSlope) + ", direct solve " + formatted("%.2f", d.directSlope) +
+             ", one sweep " + formatted("%.2f", d.sweepSlope);
     }
     case lesson::View::Links: {
       Series pairs{"element pairs n^2", {}, {}}, links{"links (clustering)", {}, {}},

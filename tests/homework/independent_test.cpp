@@ -398,6 +398,22 @@ TEST(HomeworkIndependent, RayTreeAgreesWithTheCostFormula) {
   });
 }
 
+TEST(HomeworkIndependent, DenseCostAgreesWithTheCoresMatrix) {
+  forEachVariant("dense-cost", [](const Exercise& e) {
+    const double n = e.given.at("patches") * e.given.at("split") * e.given.at("split");
+    EXPECT_EQ(answer(e, "n"), n);
+    // The core stores F as a dense matrix of this scalar: n^2 of them.
+    const double entry = static_cast<double>(sizeof(FormFactorMatrix::Scalar));
+    EXPECT_AGREES(e, "GB", entry * n * n / 1e9, 0.01);
+    const double fits = answer(e, "fits"), memory = e.given.at("memory") * 1e9;
+    EXPECT_LE(entry * fits * fits, memory);
+    EXPECT_GT(entry * (fits + 1) * (fits + 1), memory);
+    const double refined = n * std::pow(e.given.at("refine"), 2);
+    EXPECT_EQ(answer(e, "growth"), refined * refined / (n * n));
+    EXPECT_AGREES(e, "sweepSeconds", 3 * n * n / (e.given.at("flopRate") * 1e9), 0.01);
+  });
+}
+
 TEST(HomeworkIndependent, PhongAgreesWithTheCoreBrdf) {
   forEachVariant("phong", [](const Exercise& e) {
     // The lamp at theta_i on the -x side, the viewer at theta_o on the +x side, in the x-z plane.
