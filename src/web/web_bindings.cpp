@@ -143,6 +143,19 @@ EMSCRIPTEN_BINDINGS(radiosity_core) {
                   ScriptProgress progress(std::move(callback));
                   return s.run(progress);
                 }))
+      .function("rowPlan", &WebSession::rowPlan)
+      .function("formFactorRows", emscripten::optional_override([](WebSession& s, int begin, int end) {
+                  return copied(s.formFactorRows(begin, end));
+                }))
+      // Rows computed by another worker (a Float64Array of formFactorRows) into this session's F: false
+      // when they are not rows of the planned mesh.
+      .function("putFormFactorRows",
+                emscripten::optional_override([](WebSession& s, int begin, int end, val rows) {
+                  const std::span<double> target = s.rowsToFill(begin, end);
+                  if (target.empty() || rows["length"].as<std::size_t>() != target.size()) return false;
+                  val(emscripten::typed_memory_view(target.size(), target.data())).call<void>("set", rows);
+                  return true;
+                }))
       .function("displayExposure", &displayExposure)
       .function("displayColours", &displayColours)
       .function("hemicubeFigure", &hemicubeFigure)

@@ -11,6 +11,7 @@
 #include "core/io/radiosity_csv.h"
 #include "core/io/scene_loader.h"
 #include "core/pipeline/scene_overrides.h"
+#include "core/solvers/row_providers.h"
 #include "core/solvers/solver.h"
 #include "web/web_settings.h"
 #include "web/web_step.h"
@@ -74,6 +75,7 @@ std::string WebSession::load(const std::string& name) {
 std::string WebSession::configure(const std::string& settingsJson) {
   if (!scene_) return "settings: load a scene first";
   stepButLight_.clear();
+  forgetPlan();
   return readSettings(settingsJson, *scene_, settings_);
 }
 
@@ -81,6 +83,7 @@ std::string WebSession::configureStep(const std::string& stepJson) {
   if (!scene_) return "step: load a scene first";
   const std::string problem = readStep(stepJson, settings_);
   stepButLight_.clear();
+  forgetPlan();
   if (problem.empty()) {
     Json step = Json::parse(stepJson);
     if (step.contains("parameters")) step["parameters"].erase("light-scale");
@@ -96,7 +99,10 @@ std::string WebSession::run(Progress& progress) {
     if (onlyTheLightChanged()) {
       scaleTheLight();
     } else {
+      const bool gathered = planned_.mesh && gathered_ && rowsGathered_ == gathered_->rows();
+      if (gathered) keepGatheredRows();
       output_ = pipeline_.run(*scene_, settings_, progress);
+      if (gathered) output_.formFactorsReused = false;  // computed for this run, only elsewhere
       solved_ = true;
       ranStep_ = stepButLight_;
       ranLight_ = settings_.lightScale;
@@ -173,6 +179,85 @@ void WebSession::scaleTheLight() {
     r.escapedPower *= ratio;
   }
   ranLight_ = settings_.lightScale;
+}
+
+const Mesh& WebSession::plannedMesh() {
+  if (!planned_.mesh) planned_ = meshScene(*scene_, settings_);
+  return *planned_.mesh;
+}
+
+void WebSession::forgetPlan() {
+  planned_ = {};
+  gathered_.reset();
+  rowIn_.clear();
+  rowsGathered_ = 0;
+}
+
+int WebSession::rowPlan() {
+  gathered_.reset();
+  rowIn_.clear();
+  rowsGathered_ = 0;
+  plannedAt_ = std::chrono::steady_clock::now();
+  if (!scene_ || settings_.basis != Basis::Constant || onlyTheLightChanged()) return 0;
+  try {
+    const std::string solver =
+        settings_.solver.empty() ? chooseSolver(plannedMesh().size()) : settings_.solver;
+    if (!solverNeedsMatrix(solver) || !makeFormFactorMethod(settings_.method)->rowsAreIndependent()) return 0;
+    const Mesh& mesh = plannedMesh();
+    return pipeline_.holdsFormFactors(mesh, settings_.method, settings_.formFactors)
+               ? 0
+               : static_cast<int>(mesh.size());
+  } catch (const std::exception&) {
+    return 0;  // run() reports what is wrong
+  }
+}
+
+std::vector<double> WebSession::formFactorRows(int begin, int end) {
+  std::vector<double> out;
+  if (!scene_) return out;
+  try {
+    const Mesh& mesh = plannedMesh();
+    const auto n = static_cast<int>(mesh.size());
+    if (begin < 0 || end > n || begin >= end) return out;
+    const FormFactorRowProvider row = makeRowProvider(settings_.method, mesh, settings_.formFactors);
+    out.resize(std::size_t(end - begin) * std::size_t(n));
+    Eigen::VectorXd values;
+    for (int i = begin; i < end; ++i) {
+      row(i, values);
+      std::copy(values.data(), values.data() + n, out.data() + std::size_t(i - begin) * std::size_t(n));
+    }
+  } catch (const std::exception&) {
+    out.clear();
+  }
+  return out;
+}
+
+std::span<double> WebSession::rowsToFill(int begin, int end) {
+  if (!planned_.mesh) return {};
+  const auto n = static_cast<Eigen::Index>(planned_.mesh->size());
+  if (begin < 0 || end > n || begin >= end) return {};
+  if (!gathered_) {
+    gathered_ = std::make_unique<FormFactorMatrix>(n, n);
+    rowIn_.assign(std::size_t(n), false);
+  }
+  for (int i = begin; i < end; ++i)
+    if (!rowIn_[std::size_t(i)]) rowIn_[std::size_t(i)] = true, ++rowsGathered_;
+  return {gathered_->row(begin).data(), std::size_t(end - begin) * std::size_t(n)};
+}
+
+// The rows gathered become F of the planned mesh in the pipeline's cache, checked as the method checks its
+// own, so that the run takes them as it takes a matrix it computed before.
+void WebSession::keepGatheredRows() {
+  auto cached = std::make_shared<CachedFormFactors>();
+  const Mesh& mesh = *planned_.mesh;
+  cached->F = makeFormFactorMethod(settings_.method)
+                  ->fromRows(std::move(*gathered_), mesh, settings_.formFactors, cached->stats);
+  cached->stats.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - plannedAt_).count();
+  gathered_.reset();
+  rowIn_.clear();
+  rowsGathered_ = 0;
+  pipeline_.storeFormFactors(mesh, settings_.method, settings_.formFactors, cached);
 }
 
 int WebSession::elements() const {

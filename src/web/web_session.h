@@ -5,8 +5,10 @@
 // so that a reflectance or light change only solves again.
 #pragma once
 
+#include <chrono>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -36,6 +38,16 @@ class WebSession {
   // {"error": message}. `progress` hears how far the computation is (the page's progress bar).
   std::string run(Progress& progress = noProgress());
 
+  // F's rows spread over workers that share no memory (the pages' Web Workers, live_view.js). rowPlan()
+  // meshes the configured step and returns how many rows F has to be computed apart, 0 when there is nothing
+  // to spread (F is cached, the method's rows are not independent, the run needs no F or only rescales the
+  // light). formFactorRows(begin, end) computes rows [begin, end) of that mesh's F (row-major), bit for bit
+  // the rows of the whole matrix. rowsToFill(begin, end) is where such rows go (empty for a range that is not
+  // F's); once every row is in, run() solves with that F as if it had computed it.
+  int rowPlan();
+  std::vector<double> formFactorRows(int begin, int end);
+  std::span<double> rowsToFill(int begin, int end);
+
   int elements() const;
   int iterations() const;  // recorded iterations (0 before a run)
   // The mesh as triangles, three float xyz vertices each, unshared, so that a view colours each flat; and
@@ -62,6 +74,9 @@ class WebSession {
  private:
   bool onlyTheLightChanged() const;
   void scaleTheLight();
+  const Mesh& plannedMesh();
+  void keepGatheredRows();
+  void forgetPlan();
 
   std::map<std::string, std::string> files_;
   std::shared_ptr<const Scene> scene_;
@@ -73,6 +88,12 @@ class WebSession {
   // The step configured and the one last run, without their light (configureStep only), and that light.
   std::string stepButLight_, ranStep_;
   double ranLight_ = 0;
+  // The mesh of the configured step for rows computed apart, and the rows gathered so far.
+  MeshedScene planned_;
+  std::unique_ptr<FormFactorMatrix> gathered_;
+  std::vector<bool> rowIn_;
+  Eigen::Index rowsGathered_ = 0;
+  std::chrono::steady_clock::time_point plannedAt_;
 };
 
 }  // namespace rt::web

@@ -381,6 +381,42 @@ for (const file of pages) {
     check(r.reused && slowest <= target, `playground: ${r.elements} elements, a change of the light, a reflectance or the solver within ${target} s`,
           `slowest ${slowest.toFixed(3)} s`);
   }
+
+  // A new mesh of about 4,500 elements (the subdivision changed from 7 to 15): F's rows computed by one
+  // worker and spread over several (live_view.js) give the same B, bit for bit; each session is new (a file
+  // name of its own), so that neither finds F cached.
+  const spread = await page.evaluate(async (scene) => {
+    const run = async (workers) => {
+      window.rtLive.formFactorWorkers = workers;
+      const holder = document.getElementById('playground-view');
+      holder.replaceChildren();
+      const name = `cornell-box-${workers}.json`;
+      const step = { scene: name, files: { [name]: scene }, stage: 'solve',
+                     parameters: { subdivide: '7', method: 'hemicube', solver: 'gauss-seidel' },
+                     controls: ['subdivide', 'solver'] };
+      const view = await new window.rtLive.LiveView(holder, step).start();
+      const t = performance.now();
+      view.widgets.subdivide.value = '15';
+      view.widgets.subdivide.dispatchEvent(new Event('change'));
+      view.progressReports = 0;
+      while (view.running) await view.running.catch(() => {});
+      return { seconds: (performance.now() - t) / 1000, elements: view.summary.elements, reports: view.progressReports,
+               final: Array.from(view.final), formFactorSeconds: view.summary.formFactorSeconds,
+               solveSeconds: view.summary.seconds };
+    };
+    const many = Math.max(2, navigator.hardwareConcurrency || 1);
+    const one = await run(1), spread = await run(many);
+    const same = one.final.length === spread.final.length && one.final.every((v, i) => Object.is(v, spread.final[i]));
+    return { many, one, spread, same };
+  }, box);
+  for (const [label, r] of [['1 worker', spread.one], [`${spread.many} workers`, spread.spread]])
+    console.log(`measured: a new mesh of ${r.elements} elements (subdivide 7 to 15, hemicube), F on ${label}: ` +
+                `${r.seconds.toFixed(2)} s (form factors ${r.formFactorSeconds.toFixed(2)} s, solve ` +
+                `${r.solveSeconds.toFixed(2)} s), ${r.reports} progress reports`);
+  check(spread.same && spread.one.elements > 4000, `playground: F's rows on ${spread.many} workers give the B of one worker, bit for bit`,
+        `${spread.one.elements} elements`);
+  check(spread.spread.reports >= 2, 'playground: the rows spread over workers are reported as they come in',
+        `${spread.spread.reports} progress reports`);
   check(errors.length === 0, 'playground: no page errors', errors.slice(0, 3).join(' | '));
   await page.close();
 }

@@ -2,6 +2,9 @@
 // and settings as the programs do (file, line, key), and keeps F across a change of reflectance or light.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <span>
+
 #include "core/io/scene_loader.h"
 #include "core/pipeline/pipeline.h"
 #include "support/test_paths.h"
@@ -113,6 +116,37 @@ TEST(WebSession, AnObjFindsItsMaterialLibrary) {
   const std::string summary = session.run();
   EXPECT_EQ(summary.find("error"), std::string::npos) << summary;
   EXPECT_GT(session.elements(), 10);
+}
+
+// The pages spread F's rows over workers: rows computed in other sessions, in blocks, and handed to one that
+// solves give what that session computes alone, bit for bit, with F counted as computed for the run.
+TEST(WebSession, RowsComputedApartSolveAsTheWholeMatrixDoes) {
+  const std::string settings = R"({"subdivide": 4, "solver": "gauss-seidel", "method": "hemicube"})";
+  WebSession alone, gathering, helper;
+  for (WebSession* s : {&alone, &gathering, &helper}) {
+    loadCornellBox(*s);
+    ASSERT_EQ(s->configure(settings), "");
+  }
+  alone.run();
+  const int n = gathering.rowPlan();
+  ASSERT_EQ(n, alone.elements());
+  for (int begin = 0; begin < n; begin += 37) {
+    const int end = std::min(n, begin + 37);
+    const std::vector<double> rows = helper.formFactorRows(begin, end);
+    const std::span<double> target = gathering.rowsToFill(begin, end);
+    ASSERT_EQ(target.size(), rows.size());
+    std::copy(rows.begin(), rows.end(), target.begin());
+  }
+  EXPECT_TRUE(gathering.rowsToFill(0, n + 1).empty());
+  const std::string summary = gathering.run();
+  EXPECT_NE(summary.find("\"formFactorsReused\":false"), std::string::npos) << summary;
+  EXPECT_EQ(gathering.radiosity(-1), alone.radiosity(-1));
+  EXPECT_EQ(gathering.iterations(), alone.iterations());
+  for (int i : {0, n / 2, n - 1}) EXPECT_EQ(gathering.formFactorRow(i), alone.formFactorRow(i));
+  // With F now cached, or for a method whose rows are not independent, there is nothing to spread.
+  EXPECT_EQ(gathering.rowPlan(), 0);
+  ASSERT_EQ(gathering.configure(R"({"subdivide": 4, "solver": "gauss-seidel", "method": "analytic"})"), "");
+  EXPECT_EQ(gathering.rowPlan(), 0);
 }
 
 }  // namespace

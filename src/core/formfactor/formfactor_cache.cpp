@@ -1,5 +1,7 @@
 #include "core/formfactor/formfactor_cache.h"
 
+#include <algorithm>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -51,6 +53,23 @@ std::shared_ptr<const CachedFormFactors> FormFactorCache::get(const std::string&
   entries_.emplace_front(k, value);
   while (entries_.size() > capacity_) entries_.pop_back();
   return value;
+}
+
+bool FormFactorCache::holds(const std::string& method, const Mesh& mesh,
+                            const FormFactorOptions& options) const {
+  const std::string k = key(method, mesh, options);
+  std::lock_guard lock(mutex_);
+  return std::any_of(entries_.begin(), entries_.end(), [&k](const auto& entry) { return entry.first == k; });
+}
+
+void FormFactorCache::put(const std::string& method, const Mesh& mesh, const FormFactorOptions& options,
+                          std::shared_ptr<const CachedFormFactors> value) {
+  const std::string k = key(method, mesh, options);
+  std::lock_guard lock(mutex_);
+  entries_.remove_if([&k](const auto& entry) { return entry.first == k; });
+  entries_.emplace_front(k, std::move(value));
+  ++misses_;  // a computation, though not this process's
+  while (entries_.size() > capacity_) entries_.pop_back();
 }
 
 void FormFactorCache::clear() {

@@ -30,6 +30,12 @@ class FormFactorCache {
                                                const FormFactorOptions& options,
                                                Progress& progress = noProgress(), bool* hit = nullptr);
   static std::string key(const std::string& method, const Mesh& mesh, const FormFactorOptions& options);
+  // True when get() would answer from memory without computing.
+  bool holds(const std::string& method, const Mesh& mesh, const FormFactorOptions& options) const;
+  // Keeps a matrix computed elsewhere (rows spread over processes: FormFactorMethod::fromRows) as get()
+  // keeps its own, so that the next get() for this mesh and options answers with it.
+  void put(const std::string& method, const Mesh& mesh, const FormFactorOptions& options,
+           std::shared_ptr<const CachedFormFactors> value);
 
   std::size_t hits() const { return hits_; }
   std::size_t misses() const { return misses_; }

@@ -73,18 +73,41 @@ void addWarnings(const FormFactorMethod& method, const FormFactorOptions& option
                                 : "A finer method setting (or a finer mesh near shared edges) reduces it."));
 }
 
+// The options with the method's own default for an unset tolerance.
+FormFactorOptions resolvedOptions(const FormFactorMethod& method, const FormFactorOptions& options) {
+  const AccuracyKnob own = method.knob();
+  FormFactorOptions resolved = options;
+  if (resolved.tolerance <= 0 && own.field == AccuracyKnob::Field::Tolerance)
+    resolved.tolerance = own.defaultValue;
+  return resolved;
+}
+
 }  // namespace
 
 FormFactorMatrix FormFactorMethod::compute(const Mesh& mesh, const FormFactorOptions& options,
                                            Progress& progress, FormFactorStats& stats) const {
-  const AccuracyKnob own = knob();
-  FormFactorOptions resolved = options;
-  if (resolved.tolerance <= 0 && own.field == AccuracyKnob::Field::Tolerance)
-    resolved.tolerance = own.defaultValue;
+  const FormFactorOptions resolved = resolvedOptions(*this, options);
   FormFactorMatrix F = computeMatrix(mesh, resolved, progress, stats);
   addWarnings(*this, resolved, F, stats);
   return F;
 }
+
+FormFactorMatrix FormFactorMethod::fromRows(FormFactorMatrix F, const Mesh& mesh,
+                                            const FormFactorOptions& options, FormFactorStats& stats) const {
+  const auto n = static_cast<Eigen::Index>(mesh.size());
+  if (!rowsAreIndependent())
+    throw std::invalid_argument("form factors '" + name() + "' are not computed row by row on their own");
+  if (F.rows() != n || F.cols() != n)
+    throw std::invalid_argument("form factors '" + name() + "': the rows given are not the mesh's");
+  const FormFactorOptions resolved = resolvedOptions(*this, options);
+  stats.elements = mesh.size();
+  checkRows(mesh, resolved, F, stats);
+  addWarnings(*this, resolved, F, stats);
+  return F;
+}
+
+void FormFactorMethod::checkRows(const Mesh&, const FormFactorOptions&, const FormFactorMatrix&,
+                                 FormFactorStats&) const {}
 
 double FormFactorMethod::entryErrorBound(double, const FormFactorOptions&) const {
   return 0;

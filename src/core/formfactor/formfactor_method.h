@@ -84,10 +84,22 @@ class FormFactorMethod {
   // throw Cancelled.
   FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
                            FormFactorStats& stats) const;
+  // True when row i of the matrix depends on nothing but the mesh, i and the options (the hemicube): rows
+  // computed apart, by makeRowProvider (row_providers.h) in processes that share no memory (the web edition's
+  // workers), then make the matrix compute() makes, bit for bit.
+  virtual bool rowsAreIndependent() const { return false; }
+  // The matrix from such rows (n x n, every row filled), with the checks, counters and warnings compute()
+  // gives its own; stats.seconds is left to the caller. Throws std::invalid_argument for a method whose rows
+  // are not independent.
+  FormFactorMatrix fromRows(FormFactorMatrix F, const Mesh& mesh, const FormFactorOptions& options,
+                            FormFactorStats& stats) const;
 
  protected:
   virtual FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options,
                                          Progress& progress, FormFactorStats& stats) const = 0;
+  // What a method with independent rows checks and counts on its whole matrix (computeMatrix calls it too).
+  virtual void checkRows(const Mesh& mesh, const FormFactorOptions& options, const FormFactorMatrix& F,
+                         FormFactorStats& stats) const;
 };
 
 using FormFactorMethodFactory = std::function<std::unique_ptr<FormFactorMethod>()>;

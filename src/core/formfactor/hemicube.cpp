@@ -44,12 +44,22 @@ struct ProjectedPolygon {
   double k0 = 0, k1 = 0, k2 = 0;
 };
 
-// True when the sphere lies entirely outside one of the four side planes of the face's frustum, widened by
-// `margin` as the clipping below widens it (so the test only ever skips what the outcodes would reject).
-bool sphereOutsideFrustum(const Vec3& centre, double radius, const HemicubeFaceAxes& face, double margin) {
-  const double x = centre.dot(face.across), y = centre.dot(face.up), z = centre.dot(face.forward);
+// The four side planes of a face's frustum, widened by `margin` as the clipping below widens it, with the
+// lengths of their normals: made once per face, not once per element and face.
+struct FrustumPlanes {
+  double w = 0, low = 0, wideNorm = 0, lowNorm = 0;
+};
+FrustumPlanes frustumPlanes(const HemicubeFaceAxes& face, double margin) {
   const double w = 1 + margin, low = face.upMin - margin;
-  const double wideNorm = std::sqrt(1 + w * w), lowNorm = std::sqrt(1 + low * low);
+  return {w, low, std::sqrt(1 + w * w), std::sqrt(1 + low * low)};
+}
+
+// True when the sphere lies entirely outside one of the four side planes of the face's frustum (so the test
+// only ever skips what the outcodes would reject).
+bool sphereOutsideFrustum(const Vec3& centre, double radius, const HemicubeFaceAxes& face,
+                          const FrustumPlanes& planes) {
+  const double x = centre.dot(face.across), y = centre.dot(face.up), z = centre.dot(face.forward);
+  const double w = planes.w, low = planes.low, wideNorm = planes.wideNorm, lowNorm = planes.lowNorm;
   return x - w * z > radius * wideNorm || -x - w * z > radius * wideNorm || y - w * z > radius * wideNorm ||
          low * z - y > radius * lowNorm;
 }
@@ -128,10 +138,13 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
   const double size = box.isEmpty() ? 1.0 : box.diagonal().norm();
   const double near = 1e-9 * size;
 
+  constexpr double margin = 1e-3;  // the frustum's widening: pixel centres lie half a pixel inside
   std::array<HemicubeFaceAxes, 5> axes;
+  std::array<FrustumPlanes, 5> planes;
   for (int f = 0; f < 5; ++f) {
     const HemicubeFace face = static_cast<HemicubeFace>(f);
     axes[f] = hemicubeFaceAxes(face);
+    planes[f] = frustumPlanes(axes[f], margin);
     HemicubeFaceBuffer& buffer = result.faces[f];
     buffer.width = resolution;
     buffer.height = heightOf(resolution, face);
@@ -177,8 +190,7 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
     for (int f = 0; f < 5; ++f) {
       const HemicubeFaceAxes& face = axes[f];
       HemicubeFaceBuffer& buffer = result.faces[f];
-      constexpr double margin = 1e-3;
-      if (sphereOutsideFrustum(centre, radius, face, margin)) continue;
+      if (sphereOutsideFrustum(centre, radius, face, planes[f])) continue;
       // Face coordinates (across, up, depth), then clip against the near plane depth >= near.
       std::array<Vec3, 16> in, clipped;
       // Outcodes against the five frustum planes: reject when all vertices are outside one of them, skip
@@ -319,6 +331,13 @@ void accumulateHemicubeRow(const HemicubeFaces& faces, double* row) {
     for (std::size_t p = 0; p < ids.size(); ++p)
       if (ids[p] >= 0) row[ids[p]] += deltas[p];
   }
+}
+
+void hemicubeRow(const Mesh& mesh, int element, int resolution, HemicubeWorkspace& workspace, double* row) {
+  workspace.computeDepth = false;
+  renderHemicube(mesh, element, resolution, workspace);
+  std::fill(row, row + mesh.size(), 0.0);
+  accumulateHemicubeRow(workspace.faces, row);
 }
 
 }  // namespace rt

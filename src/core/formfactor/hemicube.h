@@ -72,4 +72,8 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
 // Row i of the form-factor matrix from a rendered hemicube: sums the delta form factors per visible element.
 void accumulateHemicubeRow(const HemicubeFaces& faces, double* row);
 
+// Row `element` of the hemicube method's matrix (n entries, overwritten): the hemicube rendered in
+// `workspace` without depths, its delta form factors summed per visible element.
+void hemicubeRow(const Mesh& mesh, int element, int resolution, HemicubeWorkspace& workspace, double* row);
+
 }  // namespace rt

@@ -26,28 +26,34 @@ class HemicubeMethod : public FormFactorMethod {
   std::string description() const override {
     return "z-buffered hemicube at each element's centroid (Cohen & Greenberg 1985)";
   }
+  bool rowsAreIndependent() const override { return true; }
   FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
                                  FormFactorStats& stats) const override {
     const int resolution = std::max(2, options.hemicubeResolution);
     for (int f = 0; f < 5; ++f) deltaFormFactors(resolution, static_cast<HemicubeFace>(f));  // warm the cache
     const auto n = static_cast<Eigen::Index>(mesh.size());
     FormFactorMatrix F = zeroFormFactorMatrix(n);
-    forEachRow(mesh.size(), options, progress, "form factors (hemicube)", stats,
-               [&](int i, RowCounters& counters) {
-                 // One workspace per worker thread: the face buffers are reused row after row instead of
-                 // being allocated and freed (large blocks, mapped and unmapped by the allocator every time).
-                 thread_local HemicubeWorkspace workspace;
-                 workspace.computeDepth = false;
-                 renderHemicube(mesh, i, resolution, workspace);
-                 // Accumulate in a cache-resident row, then write the matrix row once: the matrix's fresh
-                 // pages are first touched by a write, not by the read of "+=" (which maps the shared zero
-                 // page and then pays a copy-on-write fault with a TLB flush on every core).
-                 thread_local std::vector<double> row;
-                 row.assign(static_cast<std::size_t>(n), 0.0);
-                 accumulateHemicubeRow(workspace.faces, row.data());
-                 std::copy(row.begin(), row.end(), F.row(i).data());
-                 for (double value : row) counters.pairsComputed += value > 0 ? 1 : 0;
-               });
+    forEachRow(mesh.size(), options, progress, "form factors (hemicube)", stats, [&](int i, RowCounters&) {
+      // One workspace per worker thread: the face buffers are reused row after row instead of being
+      // allocated and freed (large blocks, mapped and unmapped by the allocator every time).
+      thread_local HemicubeWorkspace workspace;
+      // Accumulate in a cache-resident row, then write the matrix row once: the matrix's fresh pages are
+      // first touched by a write, not by the read of "+=" (which maps the shared zero page and then pays a
+      // copy-on-write fault with a TLB flush on every core).
+      thread_local std::vector<double> row;
+      row.resize(static_cast<std::size_t>(n));
+      hemicubeRow(mesh, i, resolution, workspace, row.data());
+      std::copy(row.begin(), row.end(), F.row(i).data());
+    });
+    checkRows(mesh, options, F, stats);
+    return F;
+  }
+
+ protected:
+  void checkRows(const Mesh&, const FormFactorOptions& options, const FormFactorMatrix& F,
+                 FormFactorStats& stats) const override {
+    const int resolution = std::max(2, options.hemicubeResolution);
+    stats.pairsComputed = static_cast<std::size_t>((F.array() > 0).count());
     stats.notes =
         "hemicube " + std::to_string(resolution) + "x" + std::to_string(resolution) + " at centroids";
     // A row distributes the hemicube's pixels: it cannot exceed their delta form factors' total (~1).
@@ -55,7 +61,6 @@ class HemicubeMethod : public FormFactorMethod {
     for (int f = 0; f < 5; ++f)
       for (double d : deltaFormFactors(resolution, static_cast<HemicubeFace>(f))) pixels += d;
     checkRowSumsAtMost(F, pixels, "hemicube");
-    return F;
   }
 };
 

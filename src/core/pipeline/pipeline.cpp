@@ -19,6 +19,23 @@ std::shared_ptr<const CachedFormFactors> Pipeline::formFactors(const Mesh& mesh,
   return cache_.get(method, mesh, options, progress, reused);
 }
 
+bool Pipeline::holdsFormFactors(const Mesh& mesh, const std::string& method,
+                                const FormFactorOptions& options) const {
+  return cache_.holds(method, mesh, options);
+}
+
+void Pipeline::storeFormFactors(const Mesh& mesh, const std::string& method, const FormFactorOptions& options,
+                                std::shared_ptr<const CachedFormFactors> value) {
+  cache_.put(method, mesh, options, std::move(value));
+}
+
+MeshedScene meshScene(const Scene& input, const PipelineSettings& settings) {
+  auto scene =
+      std::make_shared<const Scene>(applyOverrides(input, settings.reflectance, settings.lightScale));
+  auto mesh = std::make_shared<const Mesh>(buildMesh(*scene, settings.mesh));
+  return {scene, mesh};
+}
+
 std::shared_ptr<const LinearKernel> Pipeline::linearKernel(const Mesh& mesh, const FormFactorOptions& options,
                                                            Progress& progress, bool* reused) {
   const std::uint64_t key = mesh.geometryHash();
@@ -83,11 +100,11 @@ RgbField ambientEstimate(const Mesh& mesh) {
 PipelineOutput Pipeline::run(const Scene& input, const PipelineSettings& settings, Progress& progress) {
   requireLight(input);
   PipelineOutput out;
-  auto scene = std::make_shared<Scene>(applyOverrides(input, settings.reflectance, settings.lightScale));
-  out.scene = scene;
   progress.report(0.0, "mesh");
-  auto mesh = std::make_shared<Mesh>(buildMesh(*scene, settings.mesh));
-  out.mesh = mesh;
+  const MeshedScene meshed = meshScene(input, settings);
+  out.scene = meshed.scene;
+  out.mesh = meshed.mesh;
+  const std::shared_ptr<const Mesh>& mesh = meshed.mesh;
   if (progress.cancelled()) throw Cancelled();
   if (settings.basis == Basis::Linear) {
     std::string problem;

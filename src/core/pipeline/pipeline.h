@@ -82,6 +82,12 @@ class Pipeline {
                                                        const FormFactorOptions& options, Progress& progress,
                                                        bool* reused = nullptr);
 
+  // True when formFactors() would answer from the cache; storeFormFactors keeps a matrix assembled from rows
+  // computed elsewhere (the web edition's workers) where formFactors() finds it.
+  bool holdsFormFactors(const Mesh& mesh, const std::string& method, const FormFactorOptions& options) const;
+  void storeFormFactors(const Mesh& mesh, const std::string& method, const FormFactorOptions& options,
+                        std::shared_ptr<const CachedFormFactors> value);
+
   // The linear basis's kernel for this mesh, kept for the last geometry and options (a material change
   // reuses it). Throws InputError for a mesh the basis cannot use, Cancelled.
   std::shared_ptr<const LinearKernel> linearKernel(const Mesh& mesh, const FormFactorOptions& options,
@@ -96,6 +102,13 @@ class Pipeline {
   std::uint64_t linearKey_ = 0;
   double linearTolerance_ = -1;
 };
+
+// The scene with the settings' overrides, and its mesh, as run() makes them.
+struct MeshedScene {
+  std::shared_ptr<const Scene> scene;
+  std::shared_ptr<const Mesh> mesh;
+};
+MeshedScene meshScene(const Scene& input, const PipelineSettings& settings);
 
 // Solves the system by `solverName` (empty: chooseSolver(n)); `observer`, when given, sees every iteration
 // (the CLI's --verbose). Throws std::invalid_argument for an unknown solver, Cancelled when progress asks.

@@ -14,11 +14,9 @@ namespace {
 FormFactorRowProvider hemicubeRows(const Mesh& mesh, int resolution) {
   // The workspace is reused from shot to shot: no allocation after the first hemicube.
   auto workspace = std::make_shared<HemicubeWorkspace>();
-  workspace->computeDepth = false;
   return [&mesh, resolution, workspace](int i, Eigen::VectorXd& row) {
-    row.setZero(static_cast<Eigen::Index>(mesh.size()));
-    renderHemicube(mesh, i, resolution, *workspace);
-    accumulateHemicubeRow(workspace->faces, row.data());
+    row.resize(static_cast<Eigen::Index>(mesh.size()));
+    hemicubeRow(mesh, i, resolution, *workspace, row.data());
   };
 }
 

@@ -15,9 +15,12 @@
   // ---- The worker: this function's source and the core's run in a Web Worker made from a Blob, which a
   // page opened from file:// may start (a worker script from a file URL it may not).
   function workerMain() {
-    /* global RadiosityCore */
+    /* global RadiosityCore, workerScript */
     const ready = RadiosityCore();
     const sessions = new Map();
+    // Below this many elements one worker computes F in well under a second: helpers would cost more to
+    // start than they save.
+    const kSpreadFrom = 2000;
 
     function sessionFor(module, a) {
       if (!sessions.has(a.sessionKey)) {
@@ -25,31 +28,89 @@
         for (const [name, text] of Object.entries(a.files)) session.putFile(name, text);
         const problem = session.load(a.scene);
         if (problem) throw new Error(problem);
-        sessions.set(a.sessionKey, { session, ran: null });
+        sessions.set(a.sessionKey, { session, ran: null, configured: null });
       }
       return sessions.get(a.sessionKey);
     }
 
-    // The views of one scene share its session: before reading F, make sure it holds this view's run.
-    function runStep(s, step, report) {
+    function configure(s, step) {
       const text = JSON.stringify(step);
+      if (s.configured === text) return;
+      s.configured = null;
       const problem = s.session.configureStep(text);
       if (problem) throw new Error(problem);
+      s.configured = text;
+    }
+
+    // Helpers: workers of this same script, each with its own module and session, that compute blocks of
+    // rows of F. Pages opened from file:// have no shared memory, so the rows come back as transferables and
+    // are copied into this worker's F.
+    const helpers = [];
+    function helper() {
+      const worker = new Worker(URL.createObjectURL(new Blob([workerScript()], { type: 'text/javascript' })));
+      const waiting = new Map();
+      let next = 0;
+      worker.onmessage = (e) => {
+        const request = waiting.get(e.data.id);
+        if (!request || 'progress' in e.data) return;
+        waiting.delete(e.data.id);
+        if ('error' in e.data) request.reject(new Error(e.data.error));
+        else request.resolve(e.data.result);
+      };
+      return (op, args) => new Promise((resolve, reject) => {
+        const id = ++next;
+        waiting.set(id, { resolve, reject });
+        worker.postMessage({ id, op, args });
+      });
+    }
+
+    // F's rows spread over `a.workers` helpers when the step needs new form factors whose rows are
+    // independent (the hemicube's: the session's rowPlan) on a mesh large enough: blocks of rows go to
+    // whichever helper is free, the progress bar counts the rows in. The rows are those one worker computes,
+    // bit for bit, so the solve that follows is too.
+    async function spreadRows(s, a, report) {
+      const count = Math.min(Math.max(1, Math.floor(a.workers || 1)), 16);
+      const n = count > 1 ? s.session.rowPlan() : 0;
+      if (n < kSpreadFrom) return;
+      while (helpers.length < count) helpers.push(helper());
+      const block = Math.ceil(n / (4 * count));
+      const stage = 'form factors (' + count + ' workers)';
+      let next = 0, done = 0;
+      report(0, stage);
+      const work = async (ask) => {
+        while (next < n) {
+          const begin = next, end = Math.min(n, begin + block);
+          next = end;
+          const rows = await ask('rows', { sessionKey: a.sessionKey, files: a.files, scene: a.scene, step: a.step,
+                                           begin, end });
+          if (!s.session.putFormFactorRows(begin, end, rows)) throw new Error('rows ' + begin + '-' + end + ' are not this mesh\'s');
+          done += end - begin;
+          report(done / n, stage);
+        }
+      };
+      await Promise.all(helpers.slice(0, count).map(work));
+    }
+
+    // The views of one scene share its session: before reading F, make sure it holds this view's run.
+    async function runStep(s, a, report) {
+      configure(s, a.step);
+      await spreadRows(s, a, report);
       const summary = JSON.parse(s.session.runWithProgress(report));
+      s.configured = null;  // a run takes the plan of rows with it
       if (summary.error) throw new Error(summary.error);
-      s.ran = text;
+      s.ran = JSON.stringify(a.step);
       return summary;
     }
 
     // The solve and what the view shows of it: every iteration's B as colours through the app's display
     // pipeline (exposure, tone map and gamma as the step sets them; `exposure` kept from the view's first
     // solve, so that more light shows brighter).
-    function solve(s, step, exposure, id) {
+    async function solve(s, a, id) {
       const started = performance.now();
-      const summary = runStep(s, step, (fraction, stage) => self.postMessage({ id, progress: fraction, stage }));
-      const p = step.parameters;
+      const summary = await runStep(s, a, (fraction, stage) => self.postMessage({ id, progress: fraction, stage }));
+      const p = a.step.parameters;
       const toneMap = p['tone-map'] || 'linear', gamma = p.gamma !== 'false';
-      if (!exposure) exposure = s.session.displayExposure(Number(p.exposure || 0), toneMap);
+      const exposure = a.exposure || s.session.displayExposure(Number(p.exposure || 0), toneMap);
       const ran = performance.now();
       const history = [], colours = [];
       for (let k = 0; k < summary.iterations; ++k) {
@@ -67,11 +128,16 @@
       return [result, buffers.map((b) => b.buffer)];
     }
 
-    function handle(module, id, op, a) {
+    async function handle(module, id, op, a) {
       if (op === 'controls') return [JSON.parse(module.controlRows(JSON.stringify(a.keys)))];
       const s = sessionFor(module, a);
-      if (op === 'solve') return solve(s, a.step, a.exposure, id);
-      if (s.ran !== JSON.stringify(a.step)) runStep(s, a.step, () => {});
+      if (op === 'solve') return solve(s, a, id);
+      if (op === 'rows') {  // a helper's block of rows
+        configure(s, a.step);
+        const rows = s.session.formFactorRows(a.begin, a.end);
+        return [rows, [rows.buffer]];
+      }
+      if (s.ran !== JSON.stringify(a.step)) await runStep(s, a, () => {});
       if (op === 'row') return [s.session.formFactorRow(a.element)];
       if (op === 'hemicube') return [s.session.hemicubeFigure(a.element, a.resolution, a.width, a.height)];
       if (op === 'csv') return [s.session.csv()];
@@ -79,28 +145,39 @@
       throw new Error('unknown request ' + op);
     }
 
-    self.onmessage = async (e) => {
+    // One request at a time, in the order asked: a request that waits for helpers must not let another run
+    // on its session meanwhile.
+    let queue = Promise.resolve();
+    self.onmessage = (e) => {
       const { id, op, args } = e.data;
-      try {
-        const [result, transfer] = handle(await ready, id, op, args);
-        self.postMessage({ id, result }, transfer || []);
-      } catch (error) {
-        self.postMessage({ id, error: String((error && error.message) || error) });
-      }
+      queue = queue.then(async () => {
+        try {
+          const [result, transfer] = await handle(await ready, id, op, args);
+          self.postMessage({ id, result }, transfer || []);
+        } catch (error) {
+          self.postMessage({ id, error: String((error && error.message) || error) });
+        }
+      });
     };
   }
 
+  // The worker's script: the module factory, workerMain and this function, so that a worker can start
+  // helpers of its own from the same text. RadiosityCore (radiosity-core.js, loaded by the page) is
+  // Emscripten's module factory; it reads one variable of its wrapper, the script's folder, which a module
+  // with the WebAssembly embedded never uses.
+  function workerScript() {
+    return 'var _scriptDir;\nvar RadiosityCore = (' + RadiosityCore.toString() + ');\n' + workerMain.toString() +
+           '\n' + workerScript.toString() + '\nworkerMain();\n';
+  }
+
   // ---- The page's side of the worker: requests answered by promises, progress reported on the way.
+  const live = {};  // window.rtLive
   let worker = null;
   let nextId = 0;
   const pending = new Map();
   function ask(op, args, onProgress) {
     if (!worker) {
-      // RadiosityCore (radiosity-core.js, loaded by the page) is Emscripten's module factory; it reads one
-      // variable of its wrapper, the script's folder, which a module with the WebAssembly embedded never uses.
-      const source = 'var _scriptDir;\nvar RadiosityCore = (' + RadiosityCore.toString() + ');\n(' +
-                     workerMain.toString() + ')();\n';
-      worker = new Worker(URL.createObjectURL(new Blob([source], { type: 'text/javascript' })));
+      worker = new Worker(URL.createObjectURL(new Blob([workerScript()], { type: 'text/javascript' })));
       worker.onmessage = (e) => {
         const request = pending.get(e.data.id);
         if (!request) return;
@@ -267,7 +344,7 @@
 
     request(op, args, onProgress) {
       return ask(op, Object.assign({ sessionKey: this.sessionKey, files: this.step.files, scene: this.step.scene,
-                                     step: this.stepNow() }, args), onProgress);
+                                     step: this.stepNow(), workers: live.formFactorWorkers }, args), onProgress);
     }
 
     stepNow() {
@@ -690,6 +767,8 @@
   }
 
   // For the playground page (playground.js), which makes views of the reader's own scenes.
-  window.rtLive = { LiveView, ask };
+  // formFactorWorkers: how many workers compute the rows of a large F (one per core; tests set it to compare).
+  Object.assign(live, { LiveView, ask, formFactorWorkers: navigator.hardwareConcurrency || 1 });
+  window.rtLive = live;
   window.addEventListener('load', () => start());
 })();
