@@ -162,7 +162,19 @@ PipelineResult LessonLibrary::runStep(int lessonIndex, int stepIndex,
   }
   if (!compare.method.empty()) step.parameters.method = compare.method;
   scaleStepMesh(step.parameters, compare.mesh);
-  result.compared = std::make_shared<PipelineResult>(runOne(lesson, step, progress));
+  try {
+    result.compared = std::make_shared<PipelineResult>(runOne(lesson, step, progress));
+  } catch (const InputError& e) {
+    // A comparison this step cannot make (a sampling step takes only the stochastic solvers): the step is
+    // shown all the same, and the right pane says why it shows the same result, instead of an error dialog
+    // in place of the step.
+    auto same = std::make_shared<PipelineResult>(result);
+    same->title = "Not compared: " + e.message();
+    same->solverName.clear();
+    same->formFactorMethod.clear();
+    same->history.clear();
+    result.compared = std::move(same);
+  }
   return result;
 }
 

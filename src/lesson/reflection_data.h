@@ -5,14 +5,24 @@
 // placeholders.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "core/brdf.h"
 #include "core/brdf_lobe.h"
 #include "core/io/rgb_image.h"
+#include "core/pathtrace/local_illumination.h"
 #include "core/scene.h"
 
 namespace rt::lesson {
+
+// What a change of the ambient light leaves as it is: the parts of the local picture (the ambient term is
+// added to them) and the radiosity picture. Kept by the step runner, shared by the runs that differ only in
+// the ambient light.
+struct LitPictures {
+  LocalIlluminationParts local;
+  RgbImage radiosity;
+};
 
 struct ReflectionData {
   Brdf brdf;
@@ -28,6 +38,7 @@ struct ReflectionData {
   // With a scene: Phong local illumination plus ambient, and the radiosity solution, through its camera.
   RgbImage local, radiosity;
   Rgb ambient = Rgb::Zero();
+  std::shared_ptr<const LitPictures> lit;  // what `local` and `radiosity` were made from
 };
 
 }  // namespace rt::lesson

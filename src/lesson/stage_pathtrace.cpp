@@ -7,12 +7,10 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
-#include <sstream>
 
 #include "core/assembly.h"
 #include "core/pathtrace/image_compare.h"
 #include "core/pathtrace/two_pass.h"
-#include "lesson/step_keys.h"
 #include "lesson/step_stages.h"
 
 namespace rt::lesson {
@@ -39,22 +37,6 @@ void checkCancelled(const Progress& progress) {
   if (progress.cancelled()) throw Cancelled();
 }
 
-// Everything the pictures depend on: the scene, every parameter as a lesson would write it, the camera.
-std::string picturesKey(const StageContext& c) {
-  std::ostringstream key;
-  key.precision(17);
-  key << c.step.scene;
-  for (const StepKey& k : stepKeyTable())
-    if (k.name != "reflectance")
-      if (auto value = stepValueText(c.parameters, k, k.name)) key << '|' << k.name << '=' << *value;
-  for (const auto& [surface, rho] : c.parameters.reflectance)
-    key << "|rho." << surface << '=' << rho.transpose();
-  const Camera& camera = c.result.camera;
-  key << "|camera=" << camera.position.transpose() << ' ' << camera.target.transpose() << ' '
-      << camera.up.transpose() << ' ' << camera.fovYDegrees;
-  return key.str();
-}
-
 }  // namespace
 
 void computePathTrace(StageContext& c) {
@@ -71,8 +53,8 @@ void computePathTrace(StageContext& c) {
   r.runs.push_back(runSolver(c, p.solver, system, r.B, p.solver, true));
   const double solveSeconds = r.formFactorStats.seconds + r.runs.back().seconds;
   checkCancelled(c.progress);
-  const std::string key = picturesKey(c);
-  if (auto kept = c.runner.tracedPictures(key)) {
+  const std::string key = picturesKey(c, {});
+  if (auto kept = c.runner.keptPictures<TracedPictures>(key)) {
     for (const auto& [name, value] : kept->values) r.values[name] = value;
     r.pictures = std::move(kept);
     return;
@@ -149,7 +131,7 @@ void computePathTrace(StageContext& c) {
   v["seconds.two-pass"] = twoPassSeconds;
   v["mean.path-traced"] = pictures->mean;
   for (const auto& [name, value] : v) r.values[name] = value;
-  c.runner.keepTracedPictures(key, pictures);
+  c.runner.keepPictures<TracedPictures>(key, pictures);
   r.pictures = std::move(pictures);
 }
 

@@ -66,16 +66,26 @@ void lightTheScene(StageContext& c, ReflectionData& d) {
   const RgbField direct = (r.mesh.reflectance.array() * ((*r.F) * r.mesh.emission).array()).matrix();
   d.ambient = classicAmbient(r.mesh, direct, c.parameters.ambientLight);
 
-  const TracingScene tracing(r.scene);
-  LocalIlluminationOptions o;
-  o.specularFraction = c.parameters.specularFraction;
-  o.exponent = c.parameters.phongExponent;
-  o.ambient = d.ambient;
-  o.lightSamples = kLightSamples;
-  o.pixelSamples = kPixelSamples;
-  d.local = renderLocalIllumination(tracing, r.camera, kImageSize, kImageSize, o);
-  const RayScene rays(r.mesh);
-  d.radiosity = renderElements(r.mesh, r.B, rays, r.camera, kImageSize, kImageSize, kPixelSamples);
+  // The ambient term is a constant added to the picture: a new ambient light reuses the rest.
+  const std::string key = "local illumination|" + picturesKey(c, {"ambient-light"});
+  std::shared_ptr<const LitPictures> lit = c.runner.keptPictures<LitPictures>(key);
+  if (!lit) {
+    const TracingScene tracing(r.scene);
+    LocalIlluminationOptions o;
+    o.specularFraction = c.parameters.specularFraction;
+    o.exponent = c.parameters.phongExponent;
+    o.lightSamples = kLightSamples;
+    o.pixelSamples = kPixelSamples;
+    auto rendered = std::make_shared<LitPictures>();
+    rendered->local = renderLocalIlluminationParts(tracing, r.camera, kImageSize, kImageSize, o);
+    const RayScene rays(r.mesh);
+    rendered->radiosity = renderElements(r.mesh, r.B, rays, r.camera, kImageSize, kImageSize, kPixelSamples);
+    c.runner.keepPictures<LitPictures>(key, rendered);
+    lit = std::move(rendered);
+  }
+  d.lit = lit;
+  d.local = withAmbient(lit->local, d.ambient);
+  d.radiosity = lit->radiosity;
   auto& v = r.values;
   v["ambient"] = d.ambient.mean();
   v["light-samples"] = kLightSamples;

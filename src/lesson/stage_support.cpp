@@ -1,11 +1,13 @@
 #include <chrono>
 
 #include <algorithm>
+#include <sstream>
 
 #include "core/polygon.h"
 #include "core/solvers/local_lines_solver.h"
 #include "core/solvers/solver.h"
 #include "lesson/lesson_parser.h"
+#include "lesson/step_keys.h"
 #include "lesson/step_settings.h"
 #include "lesson/step_stages.h"
 
@@ -186,6 +188,21 @@ void addFormFactorValues(StepResult& r, const FormFactorMatrix& F, const std::st
     r.values["standard-error"] = r.formFactorStats.standardError;
     r.values["pairs"] = static_cast<double>(r.formFactorStats.pairsComputed);
   }
+}
+
+std::string picturesKey(const StageContext& c, const std::vector<std::string>& ignored) {
+  std::ostringstream key;
+  key.precision(17);
+  key << c.step.scene;
+  for (const StepKey& k : stepKeyTable())
+    if (k.name != "reflectance" && std::find(ignored.begin(), ignored.end(), k.name) == ignored.end())
+      if (auto value = stepValueText(c.parameters, k, k.name)) key << '|' << k.name << '=' << *value;
+  for (const auto& [surface, rho] : c.parameters.reflectance)
+    key << "|rho." << surface << '=' << rho.transpose();
+  const Camera& camera = c.result.camera;
+  key << "|camera=" << camera.position.transpose() << ' ' << camera.target.transpose() << ' '
+      << camera.up.transpose() << ' ' << camera.fovYDegrees;
+  return key.str();
 }
 
 }  // namespace rt::lesson::detail

@@ -78,15 +78,9 @@ std::shared_ptr<const FormFactorMatrix> StepRunner::formFactors(const Mesh& mesh
   return {cached, &cached->F};
 }
 
-std::shared_ptr<const TracedPictures> StepRunner::tracedPictures(const std::string& key) const {
-  for (const auto& [k, pictures] : traced_)
-    if (k == key) return pictures;
-  return nullptr;
-}
-
-void StepRunner::keepTracedPictures(const std::string& key, std::shared_ptr<const TracedPictures> pictures) {
-  traced_.emplace_back(key, std::move(pictures));
-  if (traced_.size() > 3) traced_.pop_front();
+void StepRunner::keep(const std::string& key, std::any pictures) {
+  kept_.emplace_back(key, std::move(pictures));
+  if (kept_.size() > 3) kept_.pop_front();
 }
 
 StepResult StepRunner::run(const Lesson& lesson, const Step& step, Progress& progress) {

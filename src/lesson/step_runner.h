@@ -3,6 +3,7 @@
 // options): steps that only change materials, the light or the solver never recompute F.
 #pragma once
 
+#include <any>
 #include <deque>
 #include <map>
 #include <memory>
@@ -48,10 +49,20 @@ class StepRunner {
   const RunOptions& options() const { return options_; }
   Pipeline& pipeline() { return pipeline_; }
 
-  // Pathtrace steps: the traced pictures last computed for `key` (everything they depend on, written out),
-  // so that the steps of a lesson showing other views of the same pictures trace them once. Null if none.
-  std::shared_ptr<const TracedPictures> tracedPictures(const std::string& key) const;
-  void keepTracedPictures(const std::string& key, std::shared_ptr<const TracedPictures> pictures);
+  // Pictures a stage computed last for `key` (everything they depend on, written out): the steps of a lesson
+  // showing other views of the same traced pictures trace them once, and a reflection step whose ambient
+  // light changes does not render its local picture again. Null if none of type T was kept for `key`.
+  template <class T>
+  std::shared_ptr<const T> keptPictures(const std::string& key) const {
+    for (const auto& [k, pictures] : kept_)
+      if (k == key)
+        if (const auto* typed = std::any_cast<std::shared_ptr<const T>>(&pictures)) return *typed;
+    return nullptr;
+  }
+  template <class T>
+  void keepPictures(const std::string& key, std::shared_ptr<const T> pictures) {
+    keep(key, std::move(pictures));
+  }
 
   // The form factors for a mesh, through the pipeline's cache. Throws std::invalid_argument for a method
   // this build does not have.
@@ -61,6 +72,7 @@ class StepRunner {
 
  private:
   const Scene& scene(const std::string& relativePath);
+  void keep(const std::string& key, std::any pictures);
 
   std::string scenesDir_;
   RunOptions options_;
@@ -68,7 +80,7 @@ class StepRunner {
   Pipeline pipeline_{16};
   int stepRuns_ = 0;
   // A few pictures only: large images take memory, and a reader's changes make old keys useless.
-  std::deque<std::pair<std::string, std::shared_ptr<const TracedPictures>>> traced_;
+  std::deque<std::pair<std::string, std::any>> kept_;
 };
 
 // The text of a step with its placeholders filled in from the result (InputError at the placeholder's line

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "core/formfactor/formfactor_method.h"
 #include "core/input_error.h"
@@ -53,6 +54,10 @@ void addFormFactorValues(StepResult& r, const FormFactorMatrix& F, const std::st
 // Shooting runs: per surface, how many of the run's shots its elements made (shots.<surface>) and the number
 // of its first shot, counting from 1 (first-shot.<surface>; 0 when it has not shot).
 void addShotValues(StepResult& r, const SolverRun& run);
+
+// Everything a stage's pictures depend on, as a key for StepRunner::keptPictures: the scene, every
+// parameter as a lesson would write it but the `ignored` keys, the camera.
+std::string picturesKey(const StageContext& c, const std::vector<std::string>& ignored);
 
 void computeLocal(StageContext& c);
 void computeMatrix(StageContext& c);

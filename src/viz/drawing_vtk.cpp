@@ -1,19 +1,25 @@
 // Paints a Drawing with vtkContext2D: the same calls render to OpenGL (PNG) and to the SVG/PDF context
 // devices.
+#include <vtkAbstractMapper.h>
 #include <vtkBrush.h>
+#include <vtkCellArray.h>
 #include <vtkContext2D.h>
 #include <vtkContextActor.h>
+#include <vtkContextDevice2D.h>
 #include <vtkContextItem.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkImageData.h>
 #include <vtkObjectFactory.h>
 #include <vtkPen.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkRect.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkStdString.h>
 #include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -47,7 +53,17 @@ class DrawingItem : public vtkContextItem {
                           scene->GetSceneHeight() - scale * drawing_.height);
     }
     std::vector<float> xy;
+    // The screen's device fills runs of plain polygons in one batch (a hemicube's thousands of pixels cost
+    // one draw call, not one each); the SVG and PDF devices get them one by one, as before.
+    const bool batch = painter->GetDevice() && painter->GetDevice()->IsA("vtkOpenGLContextDevice2D");
+    PolygonBatch polygons;
     for (Drawing::Shape shape : drawing_.shapes) {
+      if (batch && shape.kind == Drawing::Kind::Polygon && shape.strokeWidth <= 0 &&
+          shape.points.size() >= 3) {
+        polygons.add(shape, scale, offset);
+        continue;
+      }
+      polygons.draw(painter);
       xy.clear();
       for (const Vec2& p : shape.points) {
         xy.push_back(static_cast<float>(offset.x() + scale * p.x()));
@@ -99,10 +115,46 @@ class DrawingItem : public vtkContextItem {
           break;
       }
     }
+    polygons.draw(painter);
     return true;
   }
 
  private:
+  // Filled polygons without outline, as one polydata with a colour per cell (drawn as the device draws one
+  // polygon: a fan of triangles).
+  class PolygonBatch {
+   public:
+    void add(const Drawing::Shape& shape, double scale, const Vec2& offset) {
+      if (!points_) {
+        points_ = vtkSmartPointer<vtkPoints>::New();
+        cells_ = vtkSmartPointer<vtkCellArray>::New();
+        colours_ = vtkSmartPointer<vtkUnsignedCharArray>::New();
+        colours_->SetNumberOfComponents(4);
+      }
+      cells_->InsertNextCell(static_cast<int>(shape.points.size()));
+      for (const Vec2& p : shape.points)
+        cells_->InsertCellPoint(
+            points_->InsertNextPoint(offset.x() + scale * p.x(), offset.y() + scale * p.y(), 0.0));
+      const unsigned char colour[4] = {shape.fill[0], shape.fill[1], shape.fill[2], 255};
+      colours_->InsertNextTypedTuple(colour);
+    }
+    void draw(vtkContext2D* painter) {
+      if (!points_) return;
+      auto polygons = vtkSmartPointer<vtkPolyData>::New();
+      polygons->SetPoints(points_);
+      polygons->SetPolys(cells_);
+      painter->DrawPolyData(0.0f, 0.0f, polygons, colours_, VTK_SCALAR_MODE_USE_CELL_DATA);
+      points_ = nullptr;
+      cells_ = nullptr;
+      colours_ = nullptr;
+    }
+
+   private:
+    vtkSmartPointer<vtkPoints> points_;
+    vtkSmartPointer<vtkCellArray> cells_;
+    vtkSmartPointer<vtkUnsignedCharArray> colours_;
+  };
+
   // Pixels as an RGB texture, stretched over the shape's rectangle.
   static void drawImage(vtkContext2D* painter, const Drawing::Shape& shape, const std::vector<float>& xy) {
     painter->DrawImage(vtkRectf(xy[0], xy[1], xy[2] - xy[0], xy[3] - xy[1]), imageDataOf(shape));

@@ -255,3 +255,21 @@ TEST(CompareMode, TheExportDialogWritesTheSizeTypedIntoIt) {
     }
   }
 }
+
+TEST(CompareMode, AStepThatCannotTakeTheComparedSolverSaysSoInTheRightPane) {
+  RT_REQUIRE_DISPLAY();
+  auto window = test::makeWindow();
+  // The sampling step measures the stochastic solvers' error: Jacobi has none to measure.
+  ASSERT_TRUE(window->openLesson("stochastic", 10)) << window->lastError().toStdString();
+  window->setCompareMode(true);
+  window->setCompareChoice(CompareChoice{"jacobi", "", ""});
+  QApplication::processEvents();
+  EXPECT_TRUE(window->lastError().isEmpty()) << window->lastError().toStdString();
+  const PipelineResult* r = window->result();
+  ASSERT_NE(r, nullptr);
+  ASSERT_NE(r->compared, nullptr);
+  EXPECT_EQ(r->compared->mesh, r->mesh);
+  const std::string caption = window->secondaryView()->caption().toStdString();
+  EXPECT_NE(caption.find("Not compared"), std::string::npos) << caption;
+  EXPECT_NE(caption.find("jacobi"), std::string::npos) << caption;
+}

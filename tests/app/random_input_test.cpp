@@ -15,6 +15,7 @@
 #include <QComboBox>
 #include <QElapsedTimer>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QTest>
 #include <QTimer>
@@ -51,6 +52,17 @@ std::vector<QAction*> shortcutActions(QWidget& window) {
     actions.push_back(action);
   }
   return actions;
+}
+
+// A modal dialog as one line: its kind, title and, for a message box, its text.
+std::string describeDialog(QWidget* dialog) {
+  QString line = QString("%1 \"%2\"").arg(dialog->metaObject()->className(), dialog->windowTitle());
+  if (auto* box = qobject_cast<QMessageBox*>(dialog)) {
+    line += ": " + box->text();
+    if (!box->informativeText().isEmpty()) line += " / " + box->informativeText();
+    if (!box->detailedText().isEmpty()) line += " / " + box->detailedText();
+  }
+  return line.simplified().toStdString();
 }
 
 template <class Widget>
@@ -200,11 +212,15 @@ TEST(RandomInput, NoCrashNoHang) {
   ASSERT_TRUE(window->openLesson("gathering", 0));
   ASSERT_TRUE(window->waitUntilIdle());
 
-  // A dialog that an action opens (an error message, say) is closed, as a reader would.
+  // A dialog that an action opens (an error message, say) is printed, so that what a reader met can be
+  // examined, then closed, as a reader would.
   int dialogsClosed = 0;
+  long count = 0;
   QTimer watcher;
   QObject::connect(&watcher, &QTimer::timeout, [&] {
     if (QWidget* modal = QApplication::activeModalWidget()) {
+      std::printf("dialog after action %ld: %s\n", count, describeDialog(modal).c_str());
+      std::fflush(stdout);
       modal->close();
       ++dialogsClosed;
     }
@@ -214,7 +230,6 @@ TEST(RandomInput, NoCrashNoHang) {
   RandomReader reader(*window, seed);
   QElapsedTimer clock;
   clock.start();
-  long count = 0;
   while (clock.elapsed() < seconds * 1000) {
     const std::string what = reader.act();
     ++count;

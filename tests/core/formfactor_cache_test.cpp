@@ -34,6 +34,34 @@ TEST(FormFactorCache, MaterialOnlyChangesAreCacheHits) {
   EXPECT_EQ(cache.misses(), 3u);
 }
 
+TEST(FormFactorCache, ASeedRecomputesOnlyTheMethodsThatDrawRandomNumbers) {
+  const Mesh mesh = test::meshOf(test::closedBox(1, 2, 3), 2);
+  FormFactorCache cache;
+  FormFactorOptions first, second;
+  first.hemicubeResolution = second.hemicubeResolution = 16;
+  first.samples = second.samples = 64;
+  second.seed = first.seed + 1;
+  second.sampling = LineSampling::Sobol;
+  bool hit = true;
+  for (const char* method : {"hemicube", "quadrature", "nusselt"}) {
+    const auto computed = cache.get(method, mesh, first, noProgress(), &hit);
+    EXPECT_FALSE(hit) << method;
+    const auto again = cache.get(method, mesh, second, noProgress(), &hit);
+    EXPECT_TRUE(hit) << method << ": its matrix does not depend on the seed";
+    EXPECT_EQ(computed.get(), again.get()) << method;
+  }
+  // Its knob still matters.
+  second.hemicubeResolution = 32;
+  cache.get("hemicube", mesh, second, noProgress(), &hit);
+  EXPECT_FALSE(hit);
+  // A stochastic method draws other lines with another seed.
+  cache.get("montecarlo", mesh, first, noProgress(), &hit);
+  EXPECT_FALSE(hit);
+  second.sampling = first.sampling;
+  cache.get("montecarlo", mesh, second, noProgress(), &hit);
+  EXPECT_FALSE(hit);
+}
+
 TEST(FormFactorCache, DiskCacheSurvivesANewCache) {
   const std::string dir = test::scratchDir("formfactor_cache");
   const Mesh mesh = test::meshOf(test::closedBox(1, 1, 1), 2);

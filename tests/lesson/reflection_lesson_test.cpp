@@ -140,5 +140,31 @@ TEST(ReflectionLesson, MoreAmbientBrightensTheLocalPictureOnly) {
   EXPECT_DOUBLE_EQ(high["image.radiosity.mean"], low["image.radiosity.mean"]);
 }
 
+// The ambient term is a constant added to the local picture: a reader's new ambient light reuses the rest of
+// the picture (and the radiosity one) instead of tracing it again, and the picture is the one a fresh run
+// gives.
+TEST(ReflectionLesson, ANewAmbientLightDoesNotTraceThePicturesAgain) {
+  const Lesson lesson = test::shippedLesson("reflection");
+  Step step = test::stepWithFigure(lesson, "phong-local");
+  StepRunner runner(test::repoFolders().scenes);
+  step.parameters.ambientLight = 0.1;
+  const StepResult low = runner.run(lesson, step);
+  step.parameters.ambientLight = 1.0;
+  const StepResult high = runner.run(lesson, step);
+  ASSERT_TRUE(low.reflection && high.reflection);
+  ASSERT_NE(high.reflection->lit, nullptr);
+  EXPECT_EQ(high.reflection->lit, low.reflection->lit) << "rendered again for an ambient change";
+  const StepResult fresh = StepRunner(test::repoFolders().scenes).run(lesson, step);
+  EXPECT_NE(fresh.reflection->lit, high.reflection->lit);
+  EXPECT_EQ(rmsDifference(fresh.reflection->local, high.reflection->local), 0.0);
+  EXPECT_EQ(rmsDifference(fresh.reflection->radiosity, high.reflection->radiosity), 0.0);
+  EXPECT_EQ(fresh.values.at("image.local.mean"), high.values.at("image.local.mean"));
+  EXPECT_GT(rmsDifference(low.reflection->local, high.reflection->local), 0.0);
+  // What the pictures depend on renders them again.
+  step.parameters.phongExponent = 40;
+  const StepResult sharper = runner.run(lesson, step);
+  EXPECT_NE(sharper.reflection->lit, high.reflection->lit);
+}
+
 }  // namespace
 }  // namespace rt::lesson

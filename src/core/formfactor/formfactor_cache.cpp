@@ -12,8 +12,10 @@ FormFactorCache::FormFactorCache(std::size_t capacity, std::string diskDirectory
     : capacity_(std::max<std::size_t>(1, capacity)), directory_(std::move(diskDirectory)) {}
 
 std::string FormFactorCache::key(const std::string& method, const Mesh& mesh,
-                                 const FormFactorOptions& options) {
-  // Every option that can change the matrix; `threads` cannot (per-pair seeding), so it is left out.
+                                 const FormFactorOptions& asked) {
+  // Every option that can change the matrix; `threads` cannot (per-pair seeding), so it is left out, and so
+  // are the options the method does not read.
+  const FormFactorOptions options = makeFormFactorMethod(method)->significantOptions(asked);
   char buffer[160];
   std::snprintf(buffer, sizeof buffer, "%016llx-%zu-r%d-s%d-seed%llu-tol%.3g-%s",
                 static_cast<unsigned long long>(mesh.geometryHash()), mesh.size(), options.hemicubeResolution,

@@ -113,6 +113,12 @@ double FormFactorMethod::entryErrorBound(double, const FormFactorOptions&) const
   return 0;
 }
 
+FormFactorOptions FormFactorMethod::significantOptions(const FormFactorOptions& options) const {
+  if (!readsOnlyItsKnob()) return options;
+  const AccuracyKnob own = knob();
+  return own.applied(FormFactorOptions{}, own.valueIn(options));
+}
+
 std::string FormFactorStats::summary() const {
   char line[512];
   std::snprintf(

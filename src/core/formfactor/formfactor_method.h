@@ -80,6 +80,10 @@ class FormFactorMethod {
   // The error the method states for one computed entry at `options` (its knob resolved): a row sums to at
   // most 1 plus these over its entries before compute() warns. 0 for methods that state none per entry.
   virtual double entryErrorBound(double entry, const FormFactorOptions& options) const;
+  // The options the matrix depends on, the others at their defaults: the form-factor cache's key, so that a
+  // new seed or line sampling (meant for a stochastic method) does not compute a deterministic method's F
+  // again. All of them, unless the method reads its knob alone (readsOnlyItsKnob).
+  FormFactorOptions significantOptions(const FormFactorOptions& options) const;
   // The full n x n matrix for the mesh's elements, checked: stats.warnings says what is wrong with it. May
   // throw Cancelled.
   FormFactorMatrix compute(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
@@ -95,6 +99,8 @@ class FormFactorMethod {
                             FormFactorStats& stats) const;
 
  protected:
+  // True for a method whose matrix no option changes but its knob (`threads` changes no result).
+  virtual bool readsOnlyItsKnob() const { return false; }
   virtual FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options,
                                          Progress& progress, FormFactorStats& stats) const = 0;
   // What a method with independent rows checks and counts on its whole matrix (computeMatrix calls it too).

@@ -27,6 +27,7 @@ class HemicubeMethod : public FormFactorMethod {
     return "z-buffered hemicube at each element's centroid (Cohen & Greenberg 1985)";
   }
   bool rowsAreIndependent() const override { return true; }
+  bool readsOnlyItsKnob() const override { return true; }
   FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
                                  FormFactorStats& stats) const override {
     const int resolution = std::max(2, options.hemicubeResolution);

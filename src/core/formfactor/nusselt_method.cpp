@@ -26,6 +26,7 @@ class NusseltMethod : public FormFactorMethod {
   std::string description() const override {
     return "Nusselt analog from each centroid: hemisphere projection, area on the base disk (unoccluded)";
   }
+  bool readsOnlyItsKnob() const override { return true; }
   FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
                                  FormFactorStats& stats) const override {
     const int segments = std::max(4, options.samples);

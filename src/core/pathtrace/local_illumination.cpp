@@ -25,9 +25,10 @@ struct Frame {
 
 }  // namespace
 
-RgbImage renderLocalIllumination(const TracingScene& scene, const Camera& camera, int width, int height,
-                                 const LocalIlluminationOptions& o) {
-  RgbImage image(width, height);
+LocalIlluminationParts renderLocalIlluminationParts(const TracingScene& scene, const Camera& camera,
+                                                    int width, int height,
+                                                    const LocalIlluminationOptions& o) {
+  LocalIlluminationParts parts{RgbImage(width, height), RgbImage(width, height)};
   const Mesh& mesh = scene.mesh();
   const RayScene& rays = scene.rays();
   const int pixelSamples = std::max(1, o.pixelSamples), lightSamples = std::max(1, o.lightSamples);
@@ -36,7 +37,7 @@ RgbImage renderLocalIllumination(const TracingScene& scene, const Camera& camera
     for (int y = static_cast<int>(lo); y != static_cast<int>(hi); ++y)
       for (int x = 0; x < width; ++x) {
         PairRandom random(11, static_cast<std::uint64_t>(y) * width + x, 0);
-        Rgb sum = Rgb::Zero();
+        Rgb sum = Rgb::Zero(), reflectance = Rgb::Zero();
         for (int k = 0; k < pixelSamples; ++k) {
           const Vec2 jitter = pixelGrid.sample(k, random);
           const Vec3 direction = cameraRay(camera, width, height, x + jitter.x(), y + jitter.y());
@@ -72,12 +73,26 @@ RgbImage renderLocalIllumination(const TracingScene& scene, const Camera& camera
                                    wo);
             direct += f * light.emission * geometry;
           }
-          sum += direct / lightSamples + rho * o.ambient;
+          sum += direct / lightSamples;
+          reflectance += rho;
         }
-        image.at(x, y) = sum / pixelSamples;
+        parts.direct.at(x, y) = sum / pixelSamples;
+        parts.reflectance.at(x, y) = reflectance / pixelSamples;
       }
   });
+  return parts;
+}
+
+RgbImage withAmbient(const LocalIlluminationParts& parts, const Rgb& ambient) {
+  RgbImage image = parts.direct;
+  for (std::size_t k = 0; k < image.pixels.size(); ++k)
+    image.pixels[k] += parts.reflectance.pixels[k] * ambient;
   return image;
+}
+
+RgbImage renderLocalIllumination(const TracingScene& scene, const Camera& camera, int width, int height,
+                                 const LocalIlluminationOptions& o) {
+  return withAmbient(renderLocalIlluminationParts(scene, camera, width, height, o), o.ambient);
 }
 
 }  // namespace rt

@@ -20,10 +20,23 @@ struct LocalIlluminationOptions {
   int pixelSamples = 1;       // jittered rays per pixel
 };
 
+// The two parts of the picture below, per pixel and averaged over its samples: `direct`, the light from the
+// emitters (an emitter's own E included), and `reflectance`, the rho of the surfaces seen, which the ambient
+// radiosity is reflected by. The ambient term is a constant: a new one needs withAmbient, not a new render.
+struct LocalIlluminationParts {
+  RgbImage direct, reflectance;
+};
+LocalIlluminationParts renderLocalIlluminationParts(const TracingScene& scene, const Camera& camera,
+                                                    int width, int height,
+                                                    const LocalIlluminationOptions& options);
+// direct + reflectance * ambient, per pixel and channel.
+RgbImage withAmbient(const LocalIlluminationParts& parts, const Rgb& ambient);
+
 // Per pixel pi L towards the camera (W/m^2, so that a Lambertian surface shows its radiosity, comparable
 // pixel by pixel with the radiosity solution's image): an emitter shows E, a reflecting surface
 // pi sum over light samples of f_r (E / pi) cos(theta) cos(theta') / r^2 A / n + rho ambient; the back of a
-// polygon and nothing are black. Deterministic; TBB parallel.
+// polygon and nothing are black. Deterministic; TBB parallel. withAmbient(renderLocalIlluminationParts(...),
+// options.ambient).
 RgbImage renderLocalIllumination(const TracingScene& scene, const Camera& camera, int width, int height,
                                  const LocalIlluminationOptions& options);
 

@@ -54,6 +54,7 @@ class QuadratureMethod : public FormFactorMethod {
            "double precision and integrated over cells cut along the visibility events";
   }
 
+  bool readsOnlyItsKnob() const override { return true; }
   FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options, Progress& progress,
                                  FormFactorStats& stats) const override {
     const ShaftCulling shafts(mesh);
