@@ -26,6 +26,7 @@ struct FormFactorsArguments {
   std::string method = defaultFormFactorMethod();
   MeshArguments mesh;
   FormFactorOptions options;
+  double budget = 0;  // --ff-budget: the table's number, options.workBudget once whole
   std::string sampling = "random";
   bool enforceReciprocity = false;
   bool normalizeRows = false;
@@ -84,6 +85,7 @@ void run(const FormFactorsArguments& a) {
   ProgressLine progress(!a.quiet);
   FormFactorOptions options = a.options;
   options.sampling = parseLineSampling(a.sampling).value_or(LineSampling::Random);
+  options.workBudget = std::lround(a.budget);
   FormFactorMatrix F = method->compute(mesh, options, progress, stats);
   progress.finish();
   const Eigen::VectorXd areas = mesh.areas();
@@ -133,13 +135,7 @@ void addFormFactorsCommand(CLI::App& app) {
   // --tolerance is the solver's in every other command; here it was the form factors' and still works.
   addDeprecatedAlias(*command, "--tolerance",
                      addSettingOption(*command, "ff-tolerance", arguments->options.tolerance));
-  command
-      ->add_option(
-          "--ff-budget", arguments->options.workBudget,
-          "exact: the most point evaluations the whole matrix may take (0: no limit); past it the run "
-          "stops with a message naming the budget, instead of running on for hours")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
+  addSettingOption(*command, "ff-budget", arguments->budget);
   command
       ->add_option("--explain", arguments->explain,
                    "I,J: print the route the pair I -> J takes through the quadrature method's stages, the "

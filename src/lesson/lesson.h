@@ -131,6 +131,7 @@ struct StepParameters {
   std::optional<int> resolution;              // hemicube resolution
   std::optional<int> samples;                 // raycast / montecarlo samples
   std::optional<double> formFactorTolerance;  // quadrature / exact: the form factors' tolerance
+  std::optional<double> formFactorBudget;     // exact: the most point evaluations of the whole matrix
   std::optional<std::uint64_t> seed;
   std::string sampling = "random";   // montecarlo, local-lines solvers: random or Sobol lines
   bool controlVariate = false;       // local-lines solvers: a constant control variate

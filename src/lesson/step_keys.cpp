@@ -123,6 +123,21 @@ std::vector<StepKey> makeTable() {
        .zeroText = "the method's own",
        .stages = computeF,
        .slot = &P::formFactorTolerance});
+  add({.name = "ff-budget",
+       .type = KeyType::Double,
+       .min = 0,
+       .max = 1e15,
+       .defaultText = "0",
+       .label = "Form-factor work budget",
+       .tooltip =
+           "The exact method's work budget: the most point evaluations the whole matrix may take; past "
+           "it the computation stops with a message naming the budget, instead of running on for "
+           "hours. 0: no limit.",
+       .control = true,
+       .logScale = true,
+       .zeroText = "no limit",
+       .stages = computeF,
+       .slot = &P::formFactorBudget});
   add({.name = "seed",
        .type = KeyType::Int,
        .min = 0,

@@ -1,5 +1,7 @@
 #include "lesson/step_settings.h"
 
+#include <cmath>
+
 namespace rt::lesson {
 
 MeshOptions meshOptionsFor(const StepParameters& p) {
@@ -41,6 +43,7 @@ FormFactorOptions formFactorOptionsFor(const StepParameters& p, const std::strin
   if (p.resolution) o.hemicubeResolution = *p.resolution;
   if (p.samples) o.samples = *p.samples;
   if (p.formFactorTolerance) o.tolerance = *p.formFactorTolerance;
+  if (p.formFactorBudget) o.workBudget = std::lround(*p.formFactorBudget);
   if (p.seed) o.seed = *p.seed;
   o.sampling = parseLineSampling(p.sampling).value_or(LineSampling::Random);
   if (sweepValue > 0) {

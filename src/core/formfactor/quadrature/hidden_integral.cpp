@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/formfactor/quadrature/near_edges.h"
 #include "core/portable_heap.h"
 
 namespace rt {
@@ -24,34 +25,51 @@ constexpr double kTrustedShare = 10;
 
 double HiddenIntegral::operator()(const SourcePanel* panels, int count, double tolerance) {
   tolerance_ = tolerance;
+  thread_local NearEdges near;
+  thread_local std::vector<SourcePanel> strips;
+  double reach = 0;
+  for (int p = 0; p < count; ++p) reach = std::max(reach, 2 * panels[p].radius());
+  near.find(clipper_, clipper_.occluders(), reach, tolerance);
+  near_ = &near;
   std::vector<Item> heap;
   double done = 0;  // panels that no occluder can touch or that are wholly hidden, or at the depth bound
-  for (int p = 0; p < count; ++p) {
-    Item top{panels[p], {}, 0, 0, 0};
-    clipper_.cull(panels[p], clipper_.occluders(), top.occluders);
-    if (top.occluders.empty()) continue;
-    bool allHidden = true;
-    const double estimate = evaluate(top.panel, top.occluders, allHidden);
-    // Only a panel whose every point saw nothing of the receiver can be wholly hidden.
-    if (allHidden && clipper_.hidesAll(panels[p].v.data(), panels[p].count, top.occluders)) {
-      done += unoccluded_(panels[p], pointTolerance());
-      continue;
+  for (int p = 0; p < count; ++p) done += enter(panels[p], clipper_.occluders(), 0, heap, -1);
+  done += refine(heap, tolerance, [&](Item& worst, std::vector<Item>& into) {
+    double finished = 0;    // children that no occluder touches or that are wholly hidden
+    if (worst.near >= 0) {  // strips along the near edge instead of the four children
+      strips.clear();
+      near.strips(worst.panel, worst.near, strips);
+      for (const SourcePanel& part : strips)
+        finished += enter(part, worst.occluders, worst.depth + 1, into, worst.near);
+      return finished;
     }
-    push(heap, std::move(top), estimate, allHidden);
-  }
-  return done + refine(heap, tolerance, [&](Item& worst, std::vector<Item>& into) {
-           double finished = 0;  // children that no occluder touches or that are wholly hidden
-           for (std::size_t c = 0; c < 4; ++c) {
-             Child& child = worst.children[c];
-             if (child.state != Child::Mixed) {
-               finished += child.value;
-               continue;
-             }
-             Item next{child.panel, std::move(child.occluders), 0, 0, worst.depth + 1};
-             push(into, std::move(next), child.value, child.allHidden);
-           }
-           return finished;
-         });
+    for (std::size_t c = 0; c < 4; ++c) {
+      Child& child = worst.children[c];
+      if (child.state != Child::Mixed) {
+        finished += child.value;
+        continue;
+      }
+      Item next{child.panel, std::move(child.occluders), 0, 0, worst.depth + 1};
+      push(into, std::move(next), child.value, child.allHidden);
+    }
+    return finished;
+  });
+  near_ = nullptr;
+  return done;
+}
+
+double HiddenIntegral::enter(const SourcePanel& panel, const std::vector<int>& from, int depth,
+                             std::vector<Item>& heap, int cutAlong) {
+  Item top{panel, {}, 0, 0, depth};
+  clipper_.cull(panel, from, top.occluders);
+  if (top.occluders.empty()) return 0;
+  bool allHidden = true;
+  const double estimate = evaluate(top.panel, top.occluders, allHidden);
+  // Only a panel whose every point saw nothing of the receiver can be wholly hidden.
+  if (allHidden && clipper_.hidesAll(panel.v.data(), panel.count, top.occluders))
+    return unoccluded_(panel, pointTolerance());
+  push(heap, std::move(top), estimate, allHidden, cutAlong);
+  return 0;
 }
 
 template <class T, class Split>
@@ -93,6 +111,12 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
   // as a cell's rule). overCells() does not nest.
   thread_local std::vector<Smooth> heap;
   heap.clear();
+  // Occluder edges low over the source's plane, and a split cell's strips along one: kept like the heap.
+  thread_local NearEdges near;
+  thread_local std::vector<SourcePanel> strips;
+  double reach = 0;
+  for (int c = 0; c < count; ++c) reach = std::max(reach, 2 * cells[c].radius());
+  near.find(clipper_, occluders, reach, tolerance);
   double done = 0;
   std::size_t formCount = 0;
   // Two whole solids: each one's faces, for its own form at a cell's centre.
@@ -137,9 +161,26 @@ double HiddenIntegral::overCells(const SourcePanel* cells, int count, double tol
     if (centre <= 0) continue;
     cell.value = centre * cells[c].area();
     rate(cell, occluders);
+    if (!near.empty()) probeNear(cell, near, occluders);
     heap.push_back(std::move(cell));
   }
   return done + refine(heap, tolerance, [&](Smooth& worst, std::vector<Smooth>& into) {
+           // Too wide for a near edge: strips along it, each rated on its own (the parent's rules missed
+           // what lies beside the edge, so their difference says nothing of the strips').
+           if (worst.near >= 0) {
+             strips.clear();
+             near.strips(worst.panel, worst.near, strips);
+             for (const SourcePanel& part : strips) {
+               Smooth child{part, 0, 0, worst.depth + 1, worst.form};
+               child.value = hiddenIn(part.centre(), child.form, occluders) * part.area();
+               ++work_.points;
+               ++work_.clipped;
+               rate(child, occluders);
+               probeNear(child, near, occluders, worst.near);
+               into.push_back(std::move(child));
+             }
+             return 0.0;
+           }
            // The children's 2 x 2 rules against the parent's: for an analytic integrand that difference is
            // about the parent's error, and the children's together about a sixteenth of it. It replaces their
            // own one-point estimates (which fall only four times per split), shared out in their proportions.
@@ -208,6 +249,16 @@ void HiddenIntegral::rate(Smooth& cell, const std::vector<int>& occluders) {
   cell.value = fine;
 }
 
+void HiddenIntegral::probeNear(Smooth& cell, const NearEdges& near, const std::vector<int>& occluders,
+                               int cutAlong) {
+  cell.near = near.tooWide(cell.panel, cutAlong);
+  if (cell.near < 0) return;
+  const double probe = hiddenIn(near.nearestPoint(cell.panel, cell.near), cell.form, occluders);
+  ++work_.points;
+  ++work_.clipped;
+  cell.error = std::max(cell.error, std::abs(probe * cell.panel.area() - cell.value));
+}
+
 double HiddenIntegral::hiddenIn(const Vec3& x, int form, const std::vector<int>& occluders) {
   double value = 0;
   if (form >= 0 && clipper_.hidden(x, forms_[static_cast<std::size_t>(form)], value)) {
@@ -243,7 +294,8 @@ double HiddenIntegral::evaluate(const SourcePanel& panel, const std::vector<int>
   return sum;
 }
 
-void HiddenIntegral::push(std::vector<Item>& heap, Item item, double estimate, bool estimateAllHidden) {
+void HiddenIntegral::push(std::vector<Item>& heap, Item item, double estimate, bool estimateAllHidden,
+                          int cutAlong) {
   const std::array<SourcePanel, 4> split = splitPanel(item.panel);
   item.value = 0;
   bool mixed = false, allHidden = estimateAllHidden;
@@ -312,6 +364,16 @@ void HiddenIntegral::push(std::vector<Item>& heap, Item item, double estimate, b
     work_.points += 2 * item.panel.count;
     work_.clipped += item.panel.count;
     item.error = std::max(item.error, corners / item.panel.count * item.panel.area());
+  }
+  // Wider than its distance from a near edge: a probe beside the edge, as overCells() has it.
+  if (mixed && near_ && !near_->empty()) {
+    item.near = near_->tooWide(item.panel, cutAlong);
+    if (item.near >= 0) {
+      const double probe = clipper_.hidden(near_->nearestPoint(item.panel, item.near), item.occluders);
+      ++work_.points;
+      ++work_.clipped;
+      item.error = std::max(item.error, std::abs(probe * item.panel.area() - item.value));
+    }
   }
   heap.push_back(std::move(item));
 }

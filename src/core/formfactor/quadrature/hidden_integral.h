@@ -11,6 +11,8 @@
 
 namespace rt {
 
+class NearEdges;  // near_edges.h
+
 // Per pair, on one thread.
 struct PairWork {
   long points = 0;    // Lambert evaluations
@@ -69,7 +71,9 @@ class HiddenIntegral {
   // the hidden part is analytic, and nothing, part or all of the receiver is hidden throughout: the centre
   // tells which. Only cells hiding part of it are integrated: the 2 x 2 rule, its difference from the
   // centre's one-point rule as the error estimate (which for an analytic integrand overstates the 2 x 2
-  // rule's error by far), split where the estimates add up to more than the tolerance. None of the guards
+  // rule's error by far), split where the estimates add up to more than the tolerance. A cell wider than its
+  // distance from an occluder edge low over the source's plane is rated by a probe beside that edge too,
+  // and split into strips along it (near_edges.h). None of the guards
   // against shadows the points miss is needed. Where the occluder is one convex solid, the hidden part's
   // form is found at each cell's centre and its other points are placed from it (ShadowClipper::formOf).
   // `occluders`: those the cells were cut for (one solid or polygon).
@@ -91,6 +95,7 @@ class HiddenIntegral {
     double error = 0;  // |children - own rule|
     int depth = 0;
     std::array<Child, 4> children;
+    int near = -1;  // the near edge (NearEdges) it is too wide for, or -1
   };
 
   struct Smooth {  // a cell, or part of one, of overCells()
@@ -98,6 +103,7 @@ class HiddenIntegral {
     double value = 0, error = 0;
     int depth = 0;
     int form = -1;  // the cell's hidden form in forms_, or -1 (clipped at every point)
+    int near = -1;  // the near edge (NearEdges) it is too wide for, or -1
   };
   // The global refinement both integrals share: the item with the largest error estimate is split
   // (`split(worst, heap)` appends its parts and returns the value of those finished outright) until the
@@ -116,6 +122,9 @@ class HiddenIntegral {
                     double& hidden);
   // From `value` holding the one-point rule: the 2 x 2 rule's value and the difference as its error.
   void rate(Smooth& cell, const std::vector<int>& occluders);
+  // After rate(): where the cell is too wide for a near edge, that edge, and the error raised to what a
+  // probe beside the edge says is missed. `cutAlong`: the edge a strip was cut along (never too wide for it).
+  void probeNear(Smooth& cell, const NearEdges& near, const std::vector<int>& occluders, int cutAlong = -1);
   // F(dA_x -> hidden part) at a point of a cell: from the cell's form where it has one that fits x.
   double hiddenIn(const Vec3& x, int form, const std::vector<int>& occluders);
 
@@ -125,7 +134,13 @@ class HiddenIntegral {
   // Evaluates the item's children and appends it (not yet in heap order) with its error estimate. A child
   // that no occluder touches hides nothing, one whose receiver is wholly hidden hides all of it: both are
   // exact (to the unoccluded rule's tolerance) and never split; only mixed children carry an error.
-  void push(std::vector<Item>& heap, Item item, double estimate, bool estimateAllHidden);
+  // `cutAlong`: the near edge a strip was cut along, as for probeNear().
+  void push(std::vector<Item>& heap, Item item, double estimate, bool estimateAllHidden, int cutAlong = -1);
+  // A panel of the adaptive rules as it enters them (a source panel, or a strip cut along a near edge): the
+  // occluders that can touch it, of `from`; returns its value where that is known outright (nothing hidden,
+  // or all of the receiver), else pushes it.
+  double enter(const SourcePanel& panel, const std::vector<int>& from, int depth, std::vector<Item>& heap,
+               int cutAlong);
 
   // Wholly hidden panels do not overlap, so this holds their sum to half the tolerance.
   double pointTolerance() const { return 0.5 * tolerance_ / sourceArea_; }
@@ -137,6 +152,7 @@ class HiddenIntegral {
   PairWork& work_;
   std::vector<ShadowClipper::HiddenForm>& forms_;
   double tolerance_ = 0;
+  const NearEdges* near_ = nullptr;  // operator()'s, while it runs
 };
 
 }  // namespace rt

@@ -73,6 +73,11 @@ class ShadowClipper {
       if (solidOf(k) != solidOf(occluders.front())) return true;
     return false;
   }
+  // Occluder `k` as kept (clipped to the front of both planes, or a whole solid's face), and the source's
+  // plane.
+  const ConvexPolygon& polygonOf(int k) const { return prepared_[static_cast<std::size_t>(k)].polygon; }
+  const Vec3& sourceOrigin() const { return sourceOrigin_; }
+  const Vec3& sourceNormal() const { return sourceNormal_; }
   // Of `in`, those that may cut a segment from `panel` to the receiver, into `out`.
   void cull(const SourcePanel& panel, const std::vector<int>& in, std::vector<int>& out) const;
   // True when one of `occluders`, or the solid one of them bounds, cuts every segment from the panel
