@@ -23,11 +23,12 @@ std::string quoted(const std::string& s) {
   return out + "\"";
 }
 
-// Run times, and numbers derived from them (a time's slope against n, an extrapolated time in minutes, a
-// rate per second).
+// Run times, and numbers derived from them (a time's slope against n, an extrapolated time in minutes or
+// hours, a rate per second).
 bool isTiming(const std::string& name) {
   return name.find("seconds") != std::string::npos || name.find("minutes") != std::string::npos ||
-         name.find("per-second") != std::string::npos || name.rfind("time-slope", 0) == 0;
+         name.rfind("hours.", 0) == 0 || name.find("per-second") != std::string::npos ||
+         name.rfind("time-slope", 0) == 0;
 }
 
 }  // namespace

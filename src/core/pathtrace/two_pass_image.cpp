@@ -11,9 +11,9 @@
 // cell several times wider than that distance is wrong by several per cent. So each grid cell is split in
 // four, and its new corners gathered, while the cell spans more of the surface than kCellOverDistance times
 // the harmonic mean distance of its corners' gather rays, the scale over which irradiance changes (Ward,
-// Rubinstein and Clear 1988, irradiance caching), down to single pixels, or while it holds pixels of more than
-// one patch, down to cells two pixels wide: there every pixel has a gathered neighbour, and splitting such
-// cells further would cost a quarter of all the gathers for little (docs/benchmarks.md).
+// Rubinstein and Clear 1988, irradiance caching), down to single pixels, or while it holds pixels of more
+// than one patch, down to cells two pixels wide: there every pixel has a gathered neighbour, and splitting
+// such cells further would cost a quarter of all the gathers for little (docs/benchmarks.md).
 
 #include <algorithm>
 #include <cmath>
