@@ -38,12 +38,15 @@ TEST(ComparePtCommand, TwoPassIsCloserToThePathTracerThanTheRadiosityImage) {
   const auto radiosity = tableRow(log, "radiosity"), twoPass = tableRow(log, "two-pass");
   ASSERT_EQ(radiosity.size(), 5u) << log;
   ASSERT_EQ(twoPass.size(), 5u) << log;
-  // error within its interval, the interval ordered, the noise below the difference it is part of
+  // error within its interval, the interval ordered
   for (const auto& row : {radiosity, twoPass}) {
     EXPECT_LE(row[3], row[2]);
     EXPECT_LE(row[2], row[4]);
-    EXPECT_LT(row[1], row[0]);
   }
+  // The reference's noise is part of each difference: below the radiosity image's; the two-pass picture's own
+  // error is so small that its difference is the noise alone, give or take the sampling of 1,600 pixels.
+  EXPECT_LT(radiosity[1], radiosity[0]);
+  EXPECT_NEAR(twoPass[0] / twoPass[1], 1.0, 0.15) << log;
   EXPECT_LT(twoPass[2], radiosity[2]) << log;
   for (const char* file : {"path-traced.pfm", "path-traced.ppm", "radiosity.pfm", "two-pass.pfm",
                            "error-radiosity.ppm", "error-two-pass.ppm", "path-traced-error.pfm"})

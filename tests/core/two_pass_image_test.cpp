@@ -1,6 +1,7 @@
 // The two-pass picture with the gathered light on a grid of pixels: against a long path-traced image of a
 // room whose block casts shadows on the floor, it is as close as the picture that gathers at every pixel with
-// the same rays in all, and its shadow edges stay as sharp (the direct light is exact at every pixel).
+// the same rays in all, and its shadow edges stay as sharp (the direct light is exact at every pixel); its
+// silhouettes are averaged over the pixel, as the path tracer's are.
 #include <gtest/gtest.h>
 
 #include "core/pathtrace/image_compare.h"
@@ -50,6 +51,15 @@ TEST(TwoPassImage, GatheringOnAGridIsAsCloseToThePathTracerForTheSameRays) {
     return jump;
   };
   EXPECT_GT(sharpest(sparse), 0.8 * sharpest(dense));
+
+  // The block's silhouettes: taking each pixel's centre alone makes every pixel along them wrong by the whole
+  // step in brightness; the picture averages samples over those pixels, as the path tracer does.
+  TwoPassOptions centresOnly = grid;
+  centresOnly.edgeSamples = 1;
+  const ImageError centresError =
+      compareToReference(twoPass.render(camera, kSize, kSize, centresOnly, 4), reference);
+  EXPECT_LT(sparseError.error, 0.8 * centresError.error)
+      << "samples over edge pixels " << sparseError.error << ", centres only " << centresError.error;
 }
 
 }  // namespace

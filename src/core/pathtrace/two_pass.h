@@ -45,6 +45,10 @@ struct TwoPassOptions {
   // most), and three balances it against the gather's own at the least cost (docs/benchmarks.md).
   double nearFactor = std::numeric_limits<double>::infinity();
   int nearRays = 3;
+  // The picture: pixels on a silhouette or on the border of two patches (where a neighbour shows another
+  // patch or nothing) average this many jittered samples over the pixel, as the path tracer and the radiosity
+  // picture do, instead of taking the surface at the pixel's centre alone; 1 samples only the centre.
+  int edgeSamples = 16;
   std::uint64_t seed = 1;
 };
 
@@ -78,6 +82,12 @@ class TwoPass {
              Rgb& error) const;
 
  private:
+  // Pixels whose neighbours show another patch or nothing (`patch`: each pixel centre's patch, -1 for none)
+  // get the mean of options.edgeSamples jittered samples over the pixel (render()).
+  void antialiasEdges(const Camera& camera, int width, int height, const TwoPassOptions& options,
+                      const std::vector<int>& patch, const std::vector<Rgb>& indirectAt,
+                      RgbImage& image) const;
+
   // The gathered (indirect) irradiance and its standard error; `bounce` (when given) receives the part of it
   // that is the direct light taken at the gather's hits, and its standard error; `harmonicDistance` (when
   // given) the harmonic mean of the distances the gather's rays travel (a miss counts as infinitely far):

@@ -14,11 +14,17 @@
 // Rubinstein and Clear 1988, irradiance caching), down to single pixels, or while it holds pixels of more
 // than one patch, down to cells two pixels wide: there every pixel has a gathered neighbour, and splitting
 // such cells further would cost a quarter of all the gathers for little (docs/benchmarks.md).
+//
+// A pixel where one surface ends and another begins would take only the surface at its centre, so silhouettes
+// come out jagged and each such pixel is wrong by the whole step in brightness. Those pixels average
+// options.edgeSamples jittered samples over their square instead: each sample's direct light exact at its own
+// point, its gathered light that of the nearest pixel on the same patch.
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "core/formfactor/sampling.h"
 #include "core/parallel.h"
 #include "core/pathtrace/path_tracer.h"
 #include "core/pathtrace/two_pass.h"
@@ -147,6 +153,7 @@ RgbImage TwoPass::render(const Camera& camera, int width, int height, const TwoP
       for (int x = leaves[l].x0; x <= leaves[l].x1; ++x) leafOf[index(x, y)] = static_cast<int>(l);
 
   RgbImage image(width, height);
+  std::vector<Rgb> indirectAt(hits.size(), Rgb::Zero());
   parallelFor(0, height, [&](int y) {
     for (int x = 0; x < width; ++x) {
       const std::size_t pixel = index(x, y);
@@ -197,12 +204,78 @@ RgbImage TwoPass::render(const Camera& camera, int width, int height, const TwoP
             }
         indirect = weights > 0 ? Rgb(sum / weights) : gatherAt(pixel, std::max(16, options.gatherRays / 4));
       }
+      indirectAt[pixel] = indirect;
       const Rgb rho = tracing_.mesh().reflectance.row(p.element).transpose().array();
       image.pixels[pixel] =
           tracing_.mesh().emission.row(p.element).transpose().array() + rho * (direct + indirect);
     }
   });
+  std::vector<int> patchOfPixel(hits.size());
+  for (std::size_t k = 0; k < hits.size(); ++k) patchOfPixel[k] = patchAt(hits[k]);
+  antialiasEdges(camera, width, height, options, patchOfPixel, indirectAt, image);
   return image;
+}
+
+void TwoPass::antialiasEdges(const Camera& camera, int width, int height, const TwoPassOptions& options,
+                             const std::vector<int>& patch, const std::vector<Rgb>& indirectAt,
+                             RgbImage& image) const {
+  const int samples = options.edgeSamples;
+  if (samples <= 1) return;
+  const std::size_t pixels = patch.size();
+  auto patchAt = [&](int x, int y) {
+    return x < 0 || y < 0 || x >= width || y >= height ? -2 : patch[static_cast<std::size_t>(y) * width + x];
+  };
+  std::vector<std::size_t> edges;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      bool edge = false;
+      for (int dy = -1; dy <= 1 && !edge; ++dy)
+        for (int dx = -1; dx <= 1 && !edge; ++dx) {
+          const int other = patchAt(x + dx, y + dy);
+          edge = other != -2 && other != patchAt(x, y);
+        }
+      if (edge) edges.push_back(static_cast<std::size_t>(y) * width + x);
+    }
+
+  const StrataGrid grid(samples);
+  std::vector<Rgb> result(edges.size(), Rgb::Zero());
+  parallelFor(std::size_t(0), edges.size(), [&](std::size_t e) {
+    const int x = static_cast<int>(edges[e] % static_cast<std::size_t>(width));
+    const int y = static_cast<int>(edges[e] / static_cast<std::size_t>(width));
+    PairRandom random(options.seed, edges[e], 0x65646765);
+    Rgb sum = Rgb::Zero();
+    for (int k = 0; k < samples; ++k) {
+      const Vec2 jitter = grid.sample(k, random);
+      const Vec3 direction = cameraRay(camera, width, height, x + jitter.x(), y + jitter.y());
+      const RayHit hit = tracing_.rays().firstHit(camera.position, direction, -1);
+      if (hit.element < 0 || !hit.frontSide) continue;
+      const SurfacePoint point{camera.position + hit.distance * direction,
+                               tracing_.mesh().elements[static_cast<std::size_t>(hit.element)].normal};
+      const int own = tracing_.patchOf(hit.element);
+      // The gathered light of the nearest pixel whose centre lies on the sample's patch.
+      Rgb indirect = Rgb::Zero();
+      int best = std::numeric_limits<int>::max();
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+          if (patchAt(x + dx, y + dy) == own && dx * dx + dy * dy < best) {
+            best = dx * dx + dy * dy;
+            indirect = indirectAt[static_cast<std::size_t>(y + dy) * width + x + dx];
+          }
+      Rgb error;
+      // Streams past every pixel's own, one per sample.
+      const std::uint64_t stream = pixels + edges[e] * static_cast<std::uint64_t>(samples) + k;
+      if (best == std::numeric_limits<int>::max()) {
+        TwoPassOptions o = options;
+        o.gatherRays = std::max(16, options.gatherRays / 4);
+        indirect = gather(point, hit.element, o, stream, error);
+      }
+      const Rgb direct = this->direct(point, hit.element, options, stream, error);
+      const Rgb rho = tracing_.mesh().reflectance.row(hit.element).transpose().array();
+      sum += tracing_.mesh().emission.row(hit.element).transpose().array() + rho * (direct + indirect);
+    }
+    result[e] = sum / samples;
+  });
+  for (std::size_t e = 0; e < edges.size(); ++e) image.pixels[edges[e]] = result[e];
 }
 
 }  // namespace rt
