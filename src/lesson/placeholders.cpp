@@ -14,6 +14,36 @@ bool nameChar(char c) {
          c == '-' || c == '[' || c == ']';
 }
 
+// Whether `pos` lies inside $...$ or $$...$$ (a backslash escapes the character after it).
+bool insideMaths(const std::string& text, std::size_t pos) {
+  bool inlineMaths = false, display = false;
+  for (std::size_t i = 0; i < pos && i < text.size(); ++i) {
+    if (text[i] == '\\') {
+      ++i;
+    } else if (text[i] == '$' && i + 1 < text.size() && text[i + 1] == '$' && !inlineMaths) {
+      display = !display;
+      ++i;
+    } else if (text[i] == '$' && !display) {
+      inlineMaths = !inlineMaths;
+    }
+  }
+  return inlineMaths || display;
+}
+
+// A whole number of five digits or more in groups of three, as a book prints it: 56,210 in text, 56{,}210 in
+// maths (where TeX would otherwise space a comma as punctuation).
+std::string groupDigits(const std::string& number, bool maths) {
+  const std::size_t first = number[0] == '-' ? 1 : 0;
+  if (number.find_first_not_of("0123456789", first) != std::string::npos || number.size() - first < 5)
+    return number;
+  std::string out = number.substr(0, first);
+  for (std::size_t i = first; i < number.size(); ++i) {
+    if (i > first && (number.size() - i) % 3 == 0) out += maths ? "{,}" : ",";
+    out += number[i];
+  }
+  return out;
+}
+
 int lineAt(const std::string& text, std::size_t pos, int firstLine) {
   return firstLine + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
 }
@@ -104,7 +134,7 @@ std::string resolvePlaceholders(const std::string& text, int firstLine, const st
                                            (known.empty() ? std::string() : " (it has: " + known + ")"));
     }
     out += text.substr(copied, p.begin - copied);
-    out += *formatValue(*value, p.format);
+    out += groupDigits(*formatValue(*value, p.format), insideMaths(text, p.begin));
     copied = p.end;
   }
   out += text.substr(copied);

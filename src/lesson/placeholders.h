@@ -25,7 +25,8 @@ std::vector<Placeholder> findPlaceholders(const std::string& text, int firstLine
 // Formats a value with a placeholder format; returns nullopt for an unknown format.
 std::optional<std::string> formatValue(double value, const std::string& format);
 
-// Replaces every placeholder by lookup(name) formatted. An unknown name or format is an InputError naming
+// Replaces every placeholder by lookup(name) formatted; whole numbers of five digits or more are grouped in
+// threes (56,210; 56{,}210 inside $...$). An unknown name or format is an InputError naming
 // `file` and the placeholder's line, and listing what is available (`available`).
 using ValueLookup = std::function<std::optional<double>(const std::string& name)>;
 std::string resolvePlaceholders(const std::string& text, int firstLine, const std::string& file,

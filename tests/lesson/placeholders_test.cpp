@@ -31,6 +31,24 @@ TEST(Placeholders, ResolvesFromTheResult) {
   EXPECT_EQ(resolvePlaceholders(text, 1, "l.md", values), "F = 0.1998, after 42 sweeps; 50.0%.");
 }
 
+TEST(Placeholders, GroupLargeWholeNumbersInThreesInTextAndInMaths) {
+  auto lookup = [](const std::string& name) -> std::optional<double> {
+    if (name == "n") return 56210;
+    if (name == "bytes") return 25276502016;
+    if (name == "small") return 2880;
+    if (name == "negative") return -123456;
+    return 0.5;
+  };
+  EXPECT_EQ(
+      resolvePlaceholders("n = {{n}}, {{bytes:int}} bytes, {{small}}, {{negative:int}}", 1, "l.md", lookup),
+      "n = 56,210, 25,276,502,016 bytes, 2880, -123,456");
+  EXPECT_EQ(
+      resolvePlaceholders("$n = {{n}}$ and $$8 n^2 = {{bytes:int}}$$, {{n}} \\$ {{n}}", 1, "l.md", lookup),
+      "$n = 56{,}210$ and $$8 n^2 = 25{,}276{,}502{,}016$$, 56,210 \\$ 56,210");
+  // Not whole numbers: as formatted.
+  EXPECT_EQ(resolvePlaceholders("{{half:.5f}}, {{bytes:3}}", 1, "l.md", lookup), "0.50000, 2.53e+10");
+}
+
 TEST(Placeholders, UnknownNamesNameTheLine) {
   try {
     resolvePlaceholders("one\ntwo {{F.a.c}}\n", 10, "l.md", values, {"F.a.b"});
