@@ -70,6 +70,7 @@ void book(BookOptions o) {
 
   o.figures.format = "svg";  // vectors where the view is 2D (3D views are pictures inside the SVG)
   o.figures.prepareText = true;
+  o.figures.lessonWord = "chapter";  // as the book's headings: "Chapter 19"
   const auto lessons = renderLessons(files, folders, o.output, o.figures);
   const fs::path out = o.output;
   copyKatex(out);

@@ -90,7 +90,8 @@ std::vector<lesson::RenderedLesson> renderLessons(const std::vector<std::string>
   std::ofstream skipped(std::filesystem::path(output) / "skipped.txt");  // figures this build could not draw
   for (const auto& file : files) {
     const lesson::Lesson l = lesson::loadLesson(file, folders.scenes);
-    const lesson::TextApparatus apparatus = lesson::lessonApparatus(l);
+    lesson::TextApparatus apparatus = lesson::lessonApparatus(l);
+    apparatus.lessonWord = settings.lessonWord;
     bibliography = apparatus.bibliography;  // one file beside the lessons
     options.outputDir = (std::filesystem::path(output) / l.id).string();
     lesson::StepRunner runner(folders.scenes, options);

@@ -30,6 +30,7 @@ struct RenderSettings {
   std::string format = "png";  // of the figures: png, or svg (vectors where the view is 2D)
   // For HTML: equations and listings numbered, citations and references linked (lesson::prepareText).
   bool prepareText = false;
+  std::string lessonWord = "lesson";  // what references to another lesson say: the book's are chapters
 };
 
 // Runs every step of the lessons, writes figures and numbers.json to <output>/<lesson>/ and the figures a

@@ -1,6 +1,7 @@
 #include "lesson/lesson_references.h"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -31,7 +32,7 @@ LessonNumbers lessonNumbers(const std::string& lessonsDir) {
 }
 
 std::string prepareLessonReferences(const std::string& markdown, int firstLine, const std::string& file,
-                                    const LessonNumbers& numbers) {
+                                    const LessonNumbers& numbers, const std::string& word) {
   struct Edit {
     LabelReference reference;
     std::string word;
@@ -50,9 +51,10 @@ std::string prepareLessonReferences(const std::string& markdown, int firstLine, 
       throw InputError({file, e.reference.line}, "reference to an unknown lesson '@" + e.word + ":" +
                                                      e.reference.label + "' (known: " + known + ")");
     }
-    out.replace(
-        e.reference.begin, e.reference.end - e.reference.begin,
-        "[" + e.word + " " + std::to_string(number->second) + "](" + e.reference.label + ".html#top)");
+    std::string shown = word;
+    if (e.word == "Lesson" && !shown.empty()) shown[0] = static_cast<char>(std::toupper(shown[0]));
+    out.replace(e.reference.begin, e.reference.end - e.reference.begin,
+                "[" + shown + " " + std::to_string(number->second) + "](" + e.reference.label + ".html#top)");
   }
   return out;
 }

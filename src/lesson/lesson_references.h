@@ -14,9 +14,9 @@ namespace rt::lesson {
 using LessonNumbers = std::map<std::string, int>;
 LessonNumbers lessonNumbers(const std::string& lessonsDir);
 
-// The text with its lesson references resolved; an InputError at the reference's line when it names no
-// lesson (listing the known ids).
+// The text with its lesson references resolved ("lesson 6", or `word` and its number: the book says
+// "chapter 6"); an InputError at the reference's line when it names no lesson (listing the known ids).
 std::string prepareLessonReferences(const std::string& markdown, int firstLine, const std::string& file,
-                                    const LessonNumbers& numbers);
+                                    const LessonNumbers& numbers, const std::string& word = "lesson");
 
 }  // namespace rt::lesson

@@ -22,7 +22,7 @@ std::string prepareText(const std::string& markdown, int firstLine, const std::s
                         const TextApparatus& apparatus) {
   // Citations and maths keep the text's lines; the listings, set last, do not.
   std::string text = prepareCitations(markdown, firstLine, file, apparatus.bibliography);
-  text = prepareLessonReferences(text, firstLine, file, apparatus.lessons);
+  text = prepareLessonReferences(text, firstLine, file, apparatus.lessons, apparatus.lessonWord);
   text = prepareMaths(text, firstLine, file, apparatus.equations);
   return preparePseudocode(text, firstLine, file, apparatus.algorithms);
 }

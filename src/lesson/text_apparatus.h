@@ -21,6 +21,7 @@ struct TextApparatus {
   Bibliography bibliography;            // the references.json beside the lesson file
   LessonNumbers lessons;                // the chapter numbers of the lessons beside it
   std::vector<GlossaryEntry> glossary;  // the glossary.json beside the lesson file
+  std::string lessonWord = "lesson";  // what @lesson: references say: "lesson 6", or in the book "chapter 6"
 };
 
 // Numbers the lesson's equations and listings and reads its bibliography and glossary. InputError on a label

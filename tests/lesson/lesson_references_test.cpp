@@ -23,6 +23,10 @@ TEST(LessonReferences, BecomeLinksNumberedByTheOtherLessonsOrder) {
   EXPECT_EQ(prepareLessonReferences("As @lesson:form-factor shows. @Lesson:measuring-light's law.", 10,
                                     "x.md", numbers),
             "As [lesson 6](form-factor.html#top) shows. [Lesson 2](measuring-light.html#top)'s law.");
+  // The book's lessons are chapters.
+  EXPECT_EQ(prepareLessonReferences("As @lesson:form-factor shows. @Lesson:measuring-light's law.", 10,
+                                    "x.md", numbers, "chapter"),
+            "As [chapter 6](form-factor.html#top) shows. [Chapter 2](measuring-light.html#top)'s law.");
   // Code and maths are left as written.
   EXPECT_EQ(prepareLessonReferences("`@lesson:form-factor` and $@lesson:x$", 1, "x.md", numbers),
             "`@lesson:form-factor` and $@lesson:x$");
