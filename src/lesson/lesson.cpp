@@ -124,7 +124,8 @@ const std::vector<StageInfo>& stageTable() {
        "for each of `subdivisions`: bytes and time of F with `method`, time of a direct solve and of a "
        "Jacobi sweep with it, links and bytes of hierarchical-clustering; local lines' standard error for "
        "each `sweep` (rays per element); the bytes F would take on the step's own mesh, and with `solver` "
-       "written, that mesh solved without F (its links and bytes); the cluster tree at `cluster-depth`",
+       "written, that mesh solved without F (its links and bytes); each of `scenes` solved by "
+       "hierarchical-clustering, its links against n; the cluster tree at `cluster-depth`",
        {V::Scene, V::Memory, V::Cost, V::Links, V::Noise, V::Clusters}},
       {Stage::Radiometry,
        "radiometry",

@@ -171,6 +171,7 @@ struct StepParameters {
   int imageSize = 128;   // pixels along each side of the images
   int gatherRays = 64;   // final-gather rays per pixel of the two-pass image
   int clusterDepth = 3;  // scaling stage: the depth of the cluster tree whose boxes are drawn
+  std::string scenes;    // scaling stage: scene files whose links against n are counted, comma-separated
   // radiometry stage: the patch seen from the point (metres, degrees)
   double patchDistance = 1.0;  // from the point to the patch's centre
   double patchTilt = 0.0;      // between the patch's normal and the line to the point

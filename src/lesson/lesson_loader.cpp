@@ -10,6 +10,7 @@
 #include "core/input_error.h"
 #include "core/io/scene_loader.h"
 #include "lesson/lesson_parser.h"
+#include "lesson/value_parsing.h"
 
 namespace fs = std::filesystem;
 
@@ -47,6 +48,10 @@ Lesson loadLesson(const std::string& path, const std::string& scenesDir) {
   buffer << in.rdbuf();
   Lesson lesson = parseLesson(buffer.str(), fs::path(path).stem().string(), path);
   for (const auto& step : lesson.steps) {
+    for (const auto& listed : parseList(step.parameters.scenes))
+      if (!fs::is_regular_file(fs::path(scenesDir) / listed))
+        throw InputError({path, lineOf(step, "scenes")},
+                         "scene file '" + listed + "' does not exist in " + scenesDir);
     if (step.scene.empty()) continue;
     const fs::path scene = fs::path(scenesDir) / step.scene;
     if (!fs::is_regular_file(scene))

@@ -4,6 +4,7 @@
 // viz layer draws them; the numbers are also the step's placeholders.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "core/vec.h"
@@ -32,6 +33,23 @@ struct SolverNoisePoint {
   double standardError = 0;
 };
 
+// One scene file of the step's `scenes`, solved by hierarchical-clustering.
+struct SceneLinksPoint {
+  std::string file;
+  long elements = 0;
+  long links = 0;
+  double seconds = 0;
+};
+
+// The files of one scene at several sizes (they share the scene's name), by n, and the log-log slope of
+// their links against n.
+struct SceneLinksSeries {
+  std::string name;  // the scene's own name ("Museum")
+  std::string key;   // the name in placeholders: lower case, spaces as '-' ("museum")
+  std::vector<SceneLinksPoint> points;
+  double slope = 0;
+};
+
 struct ClusterBox {
   Vec3 lower, upper;
 };
@@ -39,6 +57,8 @@ struct ClusterBox {
 struct ScalingData {
   std::vector<ScalingPoint> points;
   std::vector<SolverNoisePoint> noise;
+  // The step's `scenes`, one series per scene name.
+  std::vector<SceneLinksSeries> sceneLinks;
   double noiseSlope = 0;       // log-log slope of the standard error against the rays
   double linksSlope = 0;       // log-log slope of the links against n
   double formFactorSlope = 0;  // log-log slope of the form-factor time against n

@@ -5,9 +5,13 @@
 // all, is run on the step's own mesh with each `sweep` value as rays per element, and the standard error it
 // reports is fitted against the rays. A step that names a `solver` solves its own mesh with it, without F,
 // so that a scene far too large for F (the museum) shows what the solver keeps instead. The cluster tree of
-// the step's mesh is cut at `cluster-depth` so that the figure can show what one link stands for.
+// the step's mesh is cut at `cluster-depth` so that the figure can show what one link stands for. The files
+// of `scenes` (one scene written at several sizes) are each solved by hierarchical-clustering alone, no F, so
+// that their links can be counted against n where a dense F could never be stored.
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <memory>
 
@@ -16,6 +20,7 @@
 #include "lesson/scaling_data.h"
 #include "lesson/step_settings.h"
 #include "lesson/step_stages.h"
+#include "lesson/value_parsing.h"
 
 namespace rt::lesson::detail {
 namespace {
@@ -185,21 +190,80 @@ void measureNoise(StageContext& c, ScalingData& data) {
   r.values["noise-slope"] = data.noiseSlope;
 }
 
+// A scene's name as placeholders spell it: "Factory hall" -> "factory-hall".
+std::string placeholderKey(const std::string& name) {
+  std::string key;
+  for (const char ch : name)
+    key += std::isalnum(static_cast<unsigned char>(ch)) ? static_cast<char>(std::tolower(ch)) : '-';
+  return key;
+}
+
+// The step's `scenes`: each file meshed as the step's own scene and solved by hierarchical-clustering; the
+// files are grouped by the scene's name and ordered by n within a group.
+void measureScenes(StageContext& c, ScalingData& data) {
+  auto& v = c.result.values;
+  const std::vector<std::string> files = parseList(c.parameters.scenes);
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    c.progress.report(static_cast<double>(k) / static_cast<double>(files.size()), "scenes");
+    const Scene* scene = nullptr;
+    try {
+      scene = &c.runner.scene(files[k]);
+    } catch (const InputError& e) {
+      c.fail("scenes", "the scene '" + files[k] + "' does not load: " + e.what());
+    }
+    const std::string name = scene->name.empty() ? files[k] : scene->name;
+    auto series = std::find_if(data.sceneLinks.begin(), data.sceneLinks.end(),
+                               [&](const SceneLinksSeries& s) { return s.name == name; });
+    if (series == data.sceneLinks.end())
+      series = data.sceneLinks.insert(data.sceneLinks.end(),
+                                      SceneLinksSeries{name, placeholderKey(name), {}, 0.0});
+    const Mesh mesh = buildMesh(*scene, c.meshOptions);
+    const SolveOutcome clustered = solveWith(c, mesh, "hierarchical-clustering", 0);
+    if (clustered.status == SolverStatus::InvalidInput)
+      c.fail("scenes", "hierarchical-clustering cannot solve '" + files[k] + "' (does it emit light?)");
+    series->points.push_back(
+        SceneLinksPoint{files[k], static_cast<long>(mesh.size()), clustered.links, clustered.seconds});
+    checkCancelled(c.progress);
+  }
+  for (SceneLinksSeries& series : data.sceneLinks) {
+    std::sort(series.points.begin(), series.points.end(),
+              [](const SceneLinksPoint& a, const SceneLinksPoint& b) { return a.elements < b.elements; });
+    std::vector<double> n, links;
+    for (std::size_t k = 0; k < series.points.size(); ++k) {
+      const SceneLinksPoint& p = series.points[k];
+      const double count = static_cast<double>(p.elements);
+      const std::string at = "." + series.key + "[" + std::to_string(k) + "]";
+      v["elements" + at] = count;
+      v["pairs" + at] = count * count;
+      v["links" + at] = static_cast<double>(p.links);
+      v["links-per-element" + at] = static_cast<double>(p.links) / count;
+      v["pairs-per-link" + at] = p.links > 0 ? count * count / static_cast<double>(p.links) : 0.0;
+      v["seconds" + at] = p.seconds;
+      n.push_back(count);
+      links.push_back(static_cast<double>(std::max(1L, p.links)));
+    }
+    series.slope = n.size() >= 2 ? logLogSlope(n, links) : 0.0;
+    v["links-slope." + series.key] = series.slope;
+  }
+}
+
 }  // namespace
 
 void computeScaling(StageContext& c) {
   StepResult& r = c.result;
   const StepParameters& p = c.parameters;
   // Each part runs only when its list is given, so that a step about noise does not pay for the meshes.
-  if (p.subdivisions.empty() && p.sweep.empty() && !c.step.fields.count("solver"))
+  if (p.subdivisions.empty() && p.sweep.empty() && parseList(p.scenes).empty() &&
+      !c.step.fields.count("solver"))
     c.fail("stage",
-           "a scaling step needs `subdivisions` (meshes to measure), `sweep` (rays per element) or a "
-           "`solver` for its own mesh");
+           "a scaling step needs `subdivisions` (meshes to measure), `sweep` (rays per element), `scenes` "
+           "(scene files whose links are counted) or a `solver` for its own mesh");
   auto data = std::make_shared<ScalingData>();
   r.method = c.method();
   measureOwnMesh(c, *data);
   if (!p.subdivisions.empty()) measureMeshes(c, *data);
   if (!p.sweep.empty()) measureNoise(c, *data);
+  if (!parseList(p.scenes).empty()) measureScenes(c, *data);
 
   const ClusterTree tree(r.mesh, r.mesh.reflectance);
   data->clusterDepth = p.clusterDepth;

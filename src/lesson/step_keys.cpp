@@ -198,6 +198,17 @@ std::vector<StepKey> makeTable() {
        .tooltip = "Several subdivision levels to compare (scaling: the meshes whose cost is measured).",
        .stages = {Stage::Compare, Stage::Scaling, Stage::Elements},
        .slot = &P::subdivisions});
+  add({.name = "scenes",
+       .type = KeyType::Text,
+       .label = "Scenes",
+       .tooltip =
+           "Scaling stage: scene files (relative to scenes/, comma-separated), each meshed as the step's own "
+           "scene (without mesh keys, one element per polygon), solved by hierarchical-clustering and its "
+           "links counted; the links chart "
+           "draws the links against n, one series per scene name (the files of one scene at several sizes "
+           "share it).",
+       .stages = {Stage::Scaling},
+       .slot = &P::scenes});
   add({.name = "sweep",
        .type = KeyType::Ints,
        .min = 1,

@@ -70,8 +70,10 @@ class StepRunner {
                                                       const FormFactorOptions& options,
                                                       FormFactorStats& stats, Progress& progress);
 
- private:
+  // A scene file relative to the scenes folder, loaded once. Throws InputError when it does not load.
   const Scene& scene(const std::string& relativePath);
+
+ private:
   void keep(const std::string& key, std::any pictures);
 
   std::string scenesDir_;

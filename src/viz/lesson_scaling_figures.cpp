@@ -15,14 +15,43 @@ Series powerLine(const std::string& name, double x0, double y0, double x1, doubl
   return {name, {x0, x1}, {y0, y0 * std::pow(x1 / x0, power)}};
 }
 
+// The links of the step's `scenes`, one series per scene with its fitted power law (dashed), against the n^2
+// element pairs a dense F would hold over the same range of n.
+std::string renderSceneLinks(const lesson::ScalingData& d, const StepFigureSettings& s,
+                             const std::string& path) {
+  std::vector<Series> all;
+  std::string slopes;
+  double lowest = 0, highest = 0;
+  for (const lesson::SceneLinksSeries& scene : d.sceneLinks) {
+    Series links{"links, " + scene.name + ": slope " + formatted("%.2f", scene.slope), {}, {}};
+    for (const lesson::SceneLinksPoint& p : scene.points) {
+      const double n = static_cast<double>(p.elements);
+      links.x.push_back(n);
+      links.y.push_back(static_cast<double>(p.links));
+      lowest = lowest > 0 ? std::min(lowest, n) : n;
+      highest = std::max(highest, n);
+    }
+    slopes += (slopes.empty() ? "" : ", ") + scene.name + " " + formatted("%.2f", scene.slope);
+    all.push_back(std::move(links));
+    if (all.back().x.size() >= 2)
+      all.push_back(fittedPowerLaw(all.back(), scene.slope, static_cast<int>(all.size()) - 1));
+  }
+  all.push_back(powerLine("element pairs n^2", lowest, lowest * lowest, highest, 2.0));
+  ChartOptions o{"Links against n", "elements n", "count", true, true, s.width, s.height};
+  writeLineChart(all, o, path);
+  return "The links hierarchical radiosity with clustering keeps on each scene at several sizes, against the "
+         "n^2 element pairs a dense F would hold (log-log); fitted slopes of the links: " +
+         slopes;
+}
+
 }  // namespace
 
 std::string renderScalingView(lesson::View view, const lesson::Step& step, const lesson::StepResult& r,
                               const StepFigureSettings& s, const std::string& path) {
   if (!r.scaling) throw std::runtime_error(path + ": the step measured no scaling");
   const lesson::ScalingData& d = *r.scaling;
-  const bool meshes =
-      view == lesson::View::Memory || view == lesson::View::Cost || view == lesson::View::Links;
+  const bool meshes = view == lesson::View::Memory || view == lesson::View::Cost ||
+                      (view == lesson::View::Links && d.sceneLinks.empty());
   if (meshes && d.points.empty()) throw std::runtime_error(path + ": the step lists no `subdivisions`");
   const lesson::ScalingPoint first = d.points.empty() ? lesson::ScalingPoint{} : d.points.front();
   const lesson::ScalingPoint last = d.points.empty() ? lesson::ScalingPoint{} : d.points.back();
@@ -72,6 +101,7 @@ std::string renderScalingView(lesson::View view, const lesson::Step& step, const
              ", one sweep " + formatted("%.2f", d.sweepSlope);
     }
     case lesson::View::Links: {
+      if (!d.sceneLinks.empty()) return renderSceneLinks(d, s, path);
       Series pairs{"element pairs n^2", {}, {}}, links{"links (clustering)", {}, {}},
           nodes{"nodes 2n - 1", {}, {}};
       for (const auto& p : d.points) {
