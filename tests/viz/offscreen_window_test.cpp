@@ -10,29 +10,19 @@
 
 #include "support/test_paths.h"
 #include "viz/chart.h"
+#include "viz/rays_view.h"
 #include "viz/viz_test_support.h"
 #include "viz/vtk_render.h"
-#include "viz/walks_view.h"
 
 namespace rt::viz {
 namespace {
-
-RecordedWalk walkOver(const Mesh& mesh, const std::vector<int>& elements) {
-  RecordedWalk walk;
-  walk.source = elements.front();
-  walk.landings.assign(elements.begin() + 1, elements.end());
-  for (int e : elements) walk.points.push_back(mesh.elements[static_cast<std::size_t>(e)].centroid);
-  walk.weights.assign(walk.landings.size(), Eigen::RowVector3d::Ones());
-  return walk;
-}
 
 // A 3D figure through a faint room with depth peeling, a chart (a context view), and the 3D figure again
 // at another size: what the figure thread draws one after another.
 std::vector<std::string> drawFigures(const std::string& folder, const std::string& tag) {
   const Mesh mesh = vizt::openRoomMesh(2);
   const int last = static_cast<int>(mesh.size()) - 1;
-  const std::vector<WalksPanel> panels{{"discrete", {walkOver(mesh, {0, last, 1})}},
-                                       {"continuous", {walkOver(mesh, {last, 0})}}};
+  const RaySample rays = sampleRays(mesh, 0, last, 40);
   const Camera camera = vizt::openRoom().cameraOrDefault();
   Series curve{"residual", {}, {}};
   for (int k = 1; k <= 20; ++k) {
@@ -45,14 +35,14 @@ std::vector<std::string> drawFigures(const std::string& folder, const std::strin
   chart.width = 400;
   chart.height = 300;
   std::vector<std::string> files;
-  for (const char* name : {"walks", "chart", "walks-wide", "chart-again"})
+  for (const char* name : {"rays", "chart", "rays-wide", "chart-again"})
     files.push_back(folder + "/" + tag + "-" + name + ".png");
-  WalksViewOptions walks;
-  walks.size = {360, 240, 96.0};
-  writeWalksFigure(mesh, camera, panels, walks, files[0]);
+  RaysViewOptions view;
+  view.size = {360, 240, 96.0};
+  writeRaysFigure(mesh, camera, rays, view, files[0]);
   writeLineChart({curve}, chart, files[1]);
-  walks.size = {480, 260, 96.0};
-  writeWalksFigure(mesh, camera, panels, walks, files[2]);
+  view.size = {480, 260, 96.0};
+  writeRaysFigure(mesh, camera, rays, view, files[2]);
   writeLineChart({curve}, chart, files[3]);
   return files;
 }
