@@ -147,7 +147,9 @@ QString LessonTextView::styleSheet() const {
 void LessonTextView::applyStyle() {
   view_->page()->setBackgroundColor(palette().color(QPalette::Base));
   if (!loaded_) return;
-  view_->page()->runJavaScript("document.getElementById('look').textContent = '" +
+  // A page replaced while it loaded reports its end all the same (not ok): the new one may not have its
+  // style element yet, and takes the style it was written with.
+  view_->page()->runJavaScript("var look = document.getElementById('look'); if (look) look.textContent = '" +
                                scriptString(styleSheet()) + "';");
 }
 

@@ -5,6 +5,7 @@
 #include <memory>
 #include <mutex>
 
+#include "app/figure_thread.h"
 #include "app/render_lock.h"
 #include "viz/lesson_figures.h"
 
@@ -29,7 +30,8 @@ StepFigures drawStepFigures(const lesson::Lesson& lesson, const lesson::Step& st
   std::vector<lesson::RenderedFigure> figures;
   try {
     const std::lock_guard lock(renderMutex());
-    figures = viz::renderStepFigures(lesson, others, result, folder.toStdString(), settings);
+    onFigureThread(
+        [&] { figures = viz::renderStepFigures(lesson, others, result, folder.toStdString(), settings); });
   } catch (const std::exception& e) {
     drawn.error = QString::fromStdString(e.what());
     return drawn;

@@ -1,6 +1,6 @@
 // A step's figures other than its live 3D view (hemicube, Nusselt disk, rays, matrix, charts...), drawn by
-// the viz layer as the book draws them, into PNG files read back as images. Drawn on the worker thread that
-// computed the step (in the computation's job), so that the window's thread only shows them: the reader's
+// the viz layer as the book draws them, into PNG files read back as images. Drawn in the computation's job,
+// on the figure thread (app/figure_thread.h), so that the window's thread only shows them: the reader's
 // control changes and the step computed ahead never stop the window while their figures are drawn.
 #pragma once
 

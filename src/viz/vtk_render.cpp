@@ -13,7 +13,9 @@
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
 #include <vtkSVGExporter.h>
 #include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
@@ -114,17 +116,49 @@ void writeRasterSvg(vtkImageData* image, const std::string& path) {
   if (!file) throw std::runtime_error(path + ": cannot write the SVG");
 }
 
+thread_local bool keepWindows = false;
+thread_local vtkSmartPointer<vtkRenderWindow> keptWindow;
+
+// Whether anyone but this thread's store holds `window` (a figure still drawing in it): a context view's
+// interactor and the window hold each other, which is no figure's use.
+bool inUse(vtkRenderWindow* window) {
+  vtkRenderWindowInteractor* interactor = window->GetInteractor();
+  const int cycle = interactor && interactor->GetRenderWindow() == window ? 1 : 0;
+  return window->GetReferenceCount() > 1 + cycle;
+}
+
+// The kept window as a new one would be: no renderer, no interactor, the figure's size and the settings
+// makeOffscreenWindow gives. Its context is current on this thread, where its renderers release their
+// graphics resources.
+void empty(vtkRenderWindow* window, int width, int height) {
+  vtkRendererCollection* renderers = window->GetRenderers();
+  while (vtkRenderer* renderer = renderers->GetFirstRenderer()) window->RemoveRenderer(renderer);
+  window->SetInteractor(nullptr);
+  window->SetSize(width, height);
+  window->SetAlphaBitPlanes(0);
+  window->SetMultiSamples(0);
+}
+
 }  // namespace
+
+void keepOffscreenWindowsOnThisThread() {
+  keepWindows = true;
+}
 
 vtkSmartPointer<vtkRenderWindow> makeOffscreenWindow(int width, int height) {
   if (width < 16 || height < 16 || width > 16384 || height > 16384)
     throw std::invalid_argument("figure size " + std::to_string(width) + " x " + std::to_string(height) +
                                 " is outside 16..16384 pixels");
+  if (keepWindows && keptWindow && !inUse(keptWindow)) {
+    empty(keptWindow, width, height);
+    return keptWindow;
+  }
   requireDisplay();
   auto window = vtkSmartPointer<vtkRenderWindow>::New();
   window->SetOffScreenRendering(1);
   window->SetSize(width, height);
   window->SetMultiSamples(0);  // FXAA on the renderers instead: MSAA is unreliable in offscreen framebuffers
+  if (keepWindows && !keptWindow) keptWindow = window;
   return window;
 }
 

@@ -28,6 +28,14 @@ inline constexpr double kBackground[3] = {0.32, 0.32, 0.34};
 // An offscreen window of the given pixel size (needs an X server: Xvfb in tests and scripts).
 vtkSmartPointer<vtkRenderWindow> makeOffscreenWindow(int width, int height);
 
+// From now on, the calling thread keeps the offscreen window of the figure it drew last for its next one,
+// emptied of that figure's renderers: its OpenGL context with the shaders compiled for it. A new window
+// costs its context and the compilation of every shader its first frame uses, most of a 3D figure's time
+// in a software renderer. For a thread that draws figures one after another (the app's figure thread);
+// while that window is still held (a figure drawing another inside it), a new one is made as before. The
+// window goes when the thread ends, its context current there.
+void keepOffscreenWindowsOnThisThread();
+
 // Translucent surfaces drawn in the order of their actors look wrong where they overlap (a far face painted
 // over a near one). Depth peeling sorts the fragments per pixel; it needs alpha bit planes and no
 // multisampling. Call after the renderer is added to the window.

@@ -6,7 +6,8 @@
 // a machine's speed). Run it idle, under Xvfb:
 //   xvfb-run -a -s "-screen 0 1920x1080x24 -noreset" build/release/tests/app_tests
 //     --gtest_also_run_disabled_tests --gtest_filter='AppLatencyBenchmark.*'
-// RT_LATENCY_LESSONS=id,id,... times only those lessons.
+// RT_LATENCY_LESSONS=id,id,... times only those lessons; RT_LATENCY_ALL=1 lists every step, not only those
+// over a target.
 #include <gtest/gtest.h>
 
 #include <QApplication>
@@ -105,7 +106,8 @@ TEST(AppLatencyBenchmark, DISABLED_StepsRevisitsAndControls) {
   QApplication::setActiveWindow(window.get());
   std::vector<double> ordinary, long_, revisit, control;
   const auto& lessons = window->library()->lessons();
-  // Every step over the targets, for the reader of the table to look into.
+  // Every step over the targets, for the reader of the table to look into (or every step).
+  const bool listAll = std::getenv("RT_LATENCY_ALL") != nullptr;
   std::printf("| lesson | step | next | revisit | control |\n");
   for (int l = 0; l < static_cast<int>(lessons.size()); ++l) {
     const auto& lesson = lessons[static_cast<std::size_t>(l)];
@@ -139,7 +141,7 @@ TEST(AppLatencyBenchmark, DISABLED_StepsRevisitsAndControls) {
                           2;
       revisit.push_back(back);
       const bool over = (isOrdinary(steps[s]) && next > 300) || back > 200 || (!key.empty() && changed > 300);
-      if (over)
+      if (over || listAll)
         std::printf(
             "| %s | %zu%s | %.0f ms | %.0f ms | %s |\n", lesson.id.c_str(), s + 1,
             isOrdinary(steps[s]) ? "" : " (long)", next, back,
