@@ -17,7 +17,7 @@
 #include "core/formfactor/quadrature/quadrature_pair.h"
 #include "core/formfactor/quadrature/quadrature_scene.h"
 #include "core/formfactor/shaft_culling.h"
-#include "core/io/scene_loader.h"
+#include "occluder_room.h"
 #include "support/test_paths.h"
 
 namespace rt {
@@ -52,12 +52,7 @@ std::map<std::pair<int, int>, double> storedExactRows(const std::string& path) {
 // level (hidden_integral.cpp). Each entry is computed by the method's own pair, along the row the matrix
 // computes it on and from the smaller element.
 TEST(QuadratureAgainstStoredExact, MeshedPrismRoomRowsOnTheAdaptiveRoute) {
-  const Scene scene = loadScene(test::sourcePath("scenes/prism-room.json"));
-  MeshOptions meshOptions;
-  meshOptions.mode = MeshOptions::Mode::MaxEdge;
-  meshOptions.maxEdge = 0.5;
-  meshOptions.splitAtContacts = true;
-  const Mesh mesh = buildMesh(scene, meshOptions);
+  const Mesh mesh = test::meshedPrismRoom();
   ASSERT_EQ(mesh.size(), 325u);
   const auto exact = storedExactRows(test::sourcePath("tests/data/prism-room/meshed-exact-rows.csv"));
   ASSERT_EQ(exact.size(), 290u);
