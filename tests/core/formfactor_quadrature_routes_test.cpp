@@ -8,7 +8,9 @@
 #include <string>
 
 #include "core/formfactor/quadrature/pair_explanation.h"
+#include "core/io/scene_loader.h"
 #include "formfactor_scenes.h"
+#include "support/test_paths.h"
 
 namespace rt {
 namespace {
@@ -89,8 +91,34 @@ TEST(QuadratureRoutes, OnePairExplainedGivesItsRouteWhatEachStageFoundAndTheMatr
   const PairExplanation back = explain(occluded.j, occluded.i);
   EXPECT_NEAR(back.value, F(occluded.j, occluded.i), tolerance);
   const std::string text = occluded.text();
-  for (const char* part : {"route: cells", "occluders found", "clipped:", "cells:", "H_", "F_"})
+  for (const char* part : {"route: cells", "occluders found", "clipped:", "cells:", "H_", "work:", "F_"})
     EXPECT_NE(text.find(part), std::string::npos) << part << " in\n" << text;
+}
+
+// A pair whose rules stop at their work bound before the tolerance says so when explained, and the pairs
+// that do are those the notes count: scenes/prism-room.json, one element per polygon, where a few pairs
+// beside the prism reach it.
+TEST(QuadratureRoutes, PairsAtTheWorkBoundSaySoAndAreThoseTheNotesCount) {
+  const Mesh mesh = buildMesh(loadScene(test::sourcePath("scenes/prism-room.json")), MeshOptions{});
+  FormFactorStats stats;
+  test::runMethod("quadrature", mesh, {}, &stats);
+  const std::smatch counted = [&] {
+    std::smatch m;
+    std::regex_search(stats.notes, m, std::regex("([0-9]+) pairs reached the work bound"));
+    return m;
+  }();
+  ASSERT_FALSE(counted.empty()) << stats.notes;
+  QuadratureExplainer explain(mesh, 0);
+  const int n = static_cast<int>(mesh.size());
+  long atBound = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      const PairExplanation e = explain(i, j);
+      if (!e.trace.budgetReached) continue;
+      ++atBound;
+      EXPECT_NE(e.text().find("the work bound was reached"), std::string::npos) << e.text();
+    }
+  EXPECT_EQ(atBound, std::stol(counted[1])) << stats.notes;
 }
 
 }  // namespace

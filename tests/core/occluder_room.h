@@ -18,9 +18,11 @@
 
 #include "core/formfactor/analytic.h"
 #include "core/formfactor/gauss_legendre.h"
+#include "core/io/scene_loader.h"
 #include "core/mesh.h"
 #include "core/polygon.h"
 #include "formfactor_scenes.h"
+#include "support/test_paths.h"
 
 namespace rt::test {
 
@@ -82,6 +84,16 @@ inline Scene litRoom() {
 }
 
 // The elements of a patch.
+// The full-size room, scenes/prism-room.json (a 40-sided prism, a 36-sided disc, the light 1 mm under the
+// ceiling), meshed as docs/benchmarks.md has it: `--max-edge 0.5 --split-at-contacts`, 325 elements.
+inline Mesh meshedPrismRoom() {
+  MeshOptions options;
+  options.mode = MeshOptions::Mode::MaxEdge;
+  options.maxEdge = 0.5;
+  options.splitAtContacts = true;
+  return buildMesh(loadScene(sourcePath("scenes/prism-room.json")), options);
+}
+
 inline std::vector<int> elementsOf(const Mesh& mesh, int patch) {
   std::vector<int> out;
   for (std::size_t e = 0; e < mesh.elements.size(); ++e)

@@ -79,12 +79,7 @@ TEST(QuadratureAgainstExact, PrismAndTwoSidedDiscRoom) {
 // entries that were furthest off before the cells and panels near that edge were cut into strips along it
 // (1.5e-4, 1.05e-4, 1.05e-4 and 7.9e-5), each against the exact method's value of that pair alone.
 TEST(QuadratureAgainstExact, LightHungJustUnderTheCeiling) {
-  const Scene scene = loadScene(rt::test::sourcePath("scenes/prism-room.json"));
-  MeshOptions meshOptions;
-  meshOptions.mode = MeshOptions::Mode::MaxEdge;
-  meshOptions.maxEdge = 0.5;
-  meshOptions.splitAtContacts = true;
-  const Mesh mesh = buildMesh(scene, meshOptions);
+  const Mesh mesh = rt::test::meshedPrismRoom();
   ASSERT_EQ(mesh.size(), 325u);
   const double tolerance = 1e-5;
   const FormFactorMatrix F = quadrature(mesh, tolerance);

@@ -16,9 +16,8 @@ namespace {
 // room at 1e-5: largest floor-row error against the exact method 1.19e-5 unprobed, 8.0e-6 at depth 0,
 // 5.9e-6 at depth 1 and at every depth, which costs 1.25 x the work of depth 1.
 constexpr int kMaxProbedDepth = 1;
-// A top panel's hidden part up to this many times its tolerance is trusted on one comparison of rules (see
-// HiddenIntegral::push). Measured on the 2,400-wall grid room at 1e-5, largest floor-row error: 5.06e-6 at
-// 1 and 10, 9.1e-6 at 30, 1.6e-5 at 100.
+// A top panel's hidden part up to this many times the tolerance is trusted on one comparison of rules: a
+// chance agreement of about 1 % of it then costs at most a tenth of the tolerance (HiddenIntegral::push).
 constexpr double kTrustedShare = 10;
 
 }  // namespace
@@ -321,14 +320,19 @@ void HiddenIntegral::push(std::vector<Item>& heap, Item item, double estimate, b
     item.value += child.value;
   }
   item.error = std::abs(item.value - estimate);
-  // A 2 x 2 rule and its children's can agree by chance where a shadow's edge crosses the panel, to about
-  // 1 % of the hidden part past a block's corner. A top panel whose hidden part is more than a tenth of the
-  // tolerance at 1 % is therefore never trusted on one comparison: it is split at least once; so is a child
-  // whose hidden part is still a hundred times that, which matters at tight tolerances only. (A 3 x 3 rule
-  // against the children's is fooled the same way: a higher order does not replace the forced split.)
+  // A 2 x 2 rule and its children's can agree by chance where a shadow's edge or a visibility event crosses
+  // the panel: there the integrand has a kink, each rule errs by an amount that depends on where the kink
+  // falls between its points, and the two errors can be equal. The error that goes unseen is then about 1 %
+  // of the panel's hidden part at the size of a top panel, and it falls like the panel's size (a rule's
+  // error along a kink is O(h^3) against a hidden part O(h^2)): halved at each split. A panel whose hidden
+  // part could hide more than a tenth of the tolerance that way is therefore never trusted on one
+  // comparison, at any depth: it is split, and its children compared in turn (their own chance agreements
+  // are independent of the parent's). The threshold doubles per level while the hidden part of a child is
+  // about a quarter of its parent's, so this ends after a few levels. (A 3 x 3 rule against the children's
+  // is fooled the same way: a higher order does not replace the forced split.)
   double trusted = kTrustedShare * tolerance_;
-  for (int d = 0; d < item.depth && d < 2; ++d) trusted *= 100;
-  const bool forced = mixed && item.depth <= 1 && item.value > trusted;
+  for (int d = 0; d < item.depth; ++d) trusted *= 2;
+  const bool forced = mixed && item.value > trusted;
   if (forced) item.error = std::max(item.error, item.value);
   // No Gauss point saw a shadow, but one may fall on the panel's rim only (the shadow of a block's corner
   // reaching the last few percent of a wall element): the corners are looked at too, and a shadow seen
@@ -345,8 +349,8 @@ void HiddenIntegral::push(std::vector<Item>& heap, Item item, double estimate, b
   // floor-to-ceiling pair) is seen by few sample points or none, by the panel's rule and its children's
   // alike. Probed where the occluders and the receiver line up: a probe that sees more than twice what
   // the samples give the panel on average means the samples missed it.
-  // (A panel split anyway needs no probe: its children are probed.)
-  if (mixed && !forced && item.depth <= kMaxProbedDepth) {
+  // (A panel split anyway needs no probe where its children are probed.)
+  if (mixed && item.depth <= kMaxProbedDepth && !(forced && item.depth < kMaxProbedDepth)) {
     long probes = 0;
     const double probed = clipper_.probeShadow(item.panel, item.occluders, probes);
     work_.points += probes;

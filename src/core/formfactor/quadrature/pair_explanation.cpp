@@ -98,6 +98,12 @@ std::string PairExplanation::text() const {
     }
     s += "\n";
   }
+  if (withU) {
+    std::snprintf(
+        line, sizeof line, "work: %ld point evaluations, %ld contour integrals%s\n", t.points, t.contours,
+        t.budgetReached ? "; the work bound was reached before the tolerance (counted in the notes)" : "");
+    s += line;
+  }
   std::snprintf(line, sizeof line, "F_%d,%d = %.9g (to %.3g)\n", i, j, value, tolerance);
   return s + line;
 }

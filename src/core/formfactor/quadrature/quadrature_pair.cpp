@@ -190,6 +190,7 @@ QuadratureRoute QuadraturePair::integrate(int i, int j, int row, PairResult& res
       counts_.points += work.points;
       result.kernelEvaluations = static_cast<std::size_t>(work.points);
       if (trace_) trace_->sourcePieces = trace_->panels = 1, trace_->unoccluded = result.value;
+      if (trace_) trace_->points = work.points;  // no contour integral, no work bound on this route
       return QuadratureRoute::FarUnoccluded;
     }
   }
@@ -354,7 +355,11 @@ QuadratureRoute QuadraturePair::integrate(int i, int j, int row, PairResult& res
     result.value = std::max(0.0, unoccluded - sum / areaI);
     if (trace_) trace_->hidden = sum / areaI;
   }
-  if (trace_) trace_->unoccluded = unoccluded;
+  if (trace_) {
+    trace_->unoccluded = unoccluded;
+    trace_->points = work.points, trace_->contours = work.contours;
+    trace_->budgetReached = work.budgetReached;
+  }
   counts_.points += work.points;
   counts_.clipped += work.clipped;
   counts_.placed += work.placed;

@@ -54,6 +54,8 @@ struct PairTrace {
   int panels = 0, cells = 0;          // the source's panels, and its cells where H was cut into cells
   bool near = false;                  // U by the exact contour integral
   double unoccluded = 0, hidden = 0;  // U and H of the pair as computed (from i to j)
+  long points = 0, contours = 0;      // Lambert evaluations and exact contour integrals the pair took
+  bool budgetReached = false;         // the rules stopped at their work bound before the tolerance
 };
 
 class QuadraturePair {
