@@ -1,7 +1,8 @@
 // radiosity bench sampling: plain Monte Carlo, the constant control variate and quasi-Monte Carlo (Sobol)
 // lines in a line-tracing solver, over a range of ray budgets and several seeds: run time and RMS error
 // against the direct solution of F computed by the named method (quadrature unless told), and each
-// variant's log-log slope of error against rays -> stdout and DIR/sampling.csv (docs/benchmarks.md).
+// variant's log-log slope of error against rays and its error at equal rays, the control variate's row sums
+// counted -> stdout and DIR/sampling.csv (docs/benchmarks.md).
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -25,6 +26,7 @@ struct BenchArguments {
   std::vector<long> rays{2000, 8000, 32000, 128000, 512000};
   int seeds = 8;
   double tolerance = 1e-4;
+  int iterations = 0;
   std::uint64_t seed = 1;
   MeshArguments mesh;
 };
@@ -50,6 +52,7 @@ void run(const BenchArguments& a) {
   o.raysPerIteration = a.rays;
   o.seeds = a.seeds;
   o.base.tolerance = a.tolerance;
+  o.base.maxIterations = a.iterations;
   o.base.seed = a.seed;
   const auto series = runSamplingStudy(RadiositySystem::fromGeometry(mesh), reference, o, &progress);
   progress.finish();
@@ -60,9 +63,10 @@ void run(const BenchArguments& a) {
   if (!csv) throw InputError({csvPath}, "cannot write the benchmark table");
   csv << "variant,rays_per_iteration,rays,row_sum_rays,seconds,rms_error,reported_standard_error\n";
   std::printf(
-      "scene %s, %zu elements, solver %s (tolerance %g), reference: direct solve of F by %s; %d seeds "
-      "per point\n",
-      a.scene.c_str(), mesh.size(), a.solver.c_str(), a.tolerance, a.formFactors.c_str(), a.seeds);
+      "scene %s, %zu elements, solver %s (tolerance %g, iteration cap %d), reference: direct solve of F by "
+      "%s; %d seeds per point\n",
+      a.scene.c_str(), mesh.size(), a.solver.c_str(), a.tolerance, a.iterations, a.formFactors.c_str(),
+      a.seeds);
   std::printf("%-18s %12s %12s %12s %10s %12s %12s\n", "variant", "rays/it", "rays", "row sums", "seconds",
               "rms error", "reported SE");
   for (const SamplingSeries& s : series) {
@@ -75,8 +79,12 @@ void run(const BenchArguments& a) {
       csv << line;
     }
   }
-  std::printf("\nlog-log slope of rms error against rays:\n");
-  for (const SamplingSeries& s : series) std::printf("  %-18s %7.3f\n", s.variant.name.c_str(), s.slope);
+  std::printf(
+      "\nlog-log slope of rms error against rays; at the largest budget, error over plain Monte Carlo's "
+      "at the same rays (row sums included, on its fitted line):\n");
+  for (const SamplingSeries& s : series)
+    std::printf("  %-18s %7.3f %7.3f\n", s.variant.name.c_str(), s.slope,
+                series.empty() ? 0.0 : errorRatioAtEqualRays(series.front(), s));
   std::cerr << "table written to " << csvPath << "\n";
 }
 
@@ -100,6 +108,11 @@ void addBenchSamplingCommand(CLI::App& bench) {
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   command->add_option("--tolerance", a->tolerance, "The solver's tolerance")->capture_default_str();
+  command
+      ->add_option("--iterations", a->iterations,
+                   "The solver's iteration cap (0: its own); the result of a capped run is measured too")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   command->add_option("--seed", a->seed, "The first seed")->capture_default_str();
   command->add_option("--output", a->output, "Output folder")->capture_default_str();
   command->callback([a] {

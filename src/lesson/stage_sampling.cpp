@@ -7,7 +7,6 @@
 // Carlo's fitted line; seeds;
 // rays-per-iteration, the largest entry; rowsum-rays, the rays of the control variate's row sums.
 #include <algorithm>
-#include <cmath>
 #include <memory>
 
 #include "core/solvers/direct_solver.h"
@@ -60,10 +59,7 @@ void computeSampling(StageContext& c) {
     v["rays." + name] = last.rays;
     v["seconds." + name] = last.seconds;
     v["gain." + name] = last.error > 0 ? plain.points.back().error / last.error : 0.0;
-    // Plain Monte Carlo's error at these rays, from its fitted power law through its largest point.
-    const SamplingPoint& mc = plain.points.back();
-    const double mcHere = mc.error * std::pow((last.rays + last.rowSumRays) / mc.rays, plain.slope);
-    v["error-ratio." + name] = mcHere > 0 ? last.error / mcHere : 0.0;
+    v["error-ratio." + name] = errorRatioAtEqualRays(plain, s);
   }
   v["seeds"] = o.seeds;
   v["rays-per-iteration"] = static_cast<double>(o.raysPerIteration.back());

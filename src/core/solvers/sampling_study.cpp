@@ -82,4 +82,13 @@ std::vector<SamplingSeries> runSamplingStudy(const RadiositySystem& system, cons
   return out;
 }
 
+double errorRatioAtEqualRays(const SamplingSeries& plain, const SamplingSeries& variant) {
+  if (plain.points.empty() || variant.points.empty()) return 0.0;
+  const SamplingPoint& mc = plain.points.back();
+  const SamplingPoint& last = variant.points.back();
+  if (mc.rays <= 0) return 0.0;
+  const double mcHere = mc.error * std::pow((last.rays + last.rowSumRays) / mc.rays, plain.slope);
+  return mcHere > 0 ? last.error / mcHere : 0.0;
+}
+
 }  // namespace rt

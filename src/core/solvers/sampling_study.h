@@ -51,4 +51,9 @@ std::vector<SamplingSeries> runSamplingStudy(const RadiositySystem& system, cons
                                              const SamplingStudyOptions& options,
                                              Progress* progress = nullptr);
 
+// The comparison at equal cost: `variant`'s error at its largest budget over plain Monte Carlo's error at
+// the same rays, the row sums' included, read off plain Monte Carlo's fitted power law through its largest
+// point. Below 1 when the variant wins at equal rays; 0 when either series is empty or plain has no rays.
+double errorRatioAtEqualRays(const SamplingSeries& plain, const SamplingSeries& variant);
+
 }  // namespace rt
