@@ -17,16 +17,24 @@ RgbField selfDivisor(const RadiositySystem& system) {
   return d;
 }
 
+// What both splittings start from: B = E, the system checked, and the divisor (none may be 0).
+SolverStatus start(const RadiositySystem& system, RgbField& B, RgbField& divisor) {
+  B = system.emission;
+  const SolverStatus valid = validate(system, true);
+  if (valid != SolverStatus::Success) return valid;
+  divisor = selfDivisor(system);
+  if ((divisor.array() <= 0.0).any()) return SolverStatus::NumericalIssue;  // rho = 1 and F_ii = 1
+  return SolverStatus::Success;
+}
+
 // Jacobi's loop: `sweep(B, divisor, FB)` updates B in place from FB = F B of before the sweep; afterwards
 // the exact residual decides, and its product F B is the next sweep's FB: one pass over F per sweep.
 template <typename Sweep>
 SolverStatus iterate(const RadiositySystem& system, RgbField& B, const SolverOptions& options,
                      const IterationSink& sink, Sweep&& sweep) {
-  B = system.emission;
-  const SolverStatus valid = validate(system, true);
-  if (valid != SolverStatus::Success) return valid;
-  const RgbField divisor = selfDivisor(system);
-  if ((divisor.array() <= 0.0).any()) return SolverStatus::NumericalIssue;  // rho = 1 and F_ii = 1
+  RgbField divisor;
+  const SolverStatus started = start(system, B, divisor);
+  if (started != SolverStatus::Success) return started;
   const GatherRecorder record(system);
   const Stopwatch clock;
   RgbField previous, FB = productWithF(*system.F, B);
@@ -74,10 +82,9 @@ SolverStatus gaussSeidel(const RadiositySystem& system, RgbField& B, const Solve
   const double omega = options.relaxation;
   B = system.emission;
   if (!(omega > 0.0 && omega < 2.0)) return SolverStatus::InvalidInput;  // SOR diverges outside (0, 2)
-  const SolverStatus valid = validate(system, true);
-  if (valid != SolverStatus::Success) return valid;
-  const RgbField divisor = selfDivisor(system);
-  if ((divisor.array() <= 0.0).any()) return SolverStatus::NumericalIssue;  // rho = 1 and F_ii = 1
+  RgbField divisor;
+  const SolverStatus started = start(system, B, divisor);
+  if (started != SolverStatus::Success) return started;
   const GatherRecorder record(system);
   const Stopwatch clock;
   const FormFactorMatrix& F = *system.F;
