@@ -156,6 +156,7 @@ EMSCRIPTEN_BINDINGS(radiosity_core) {
                   val(emscripten::typed_memory_view(target.size(), target.data())).call<void>("set", rows);
                   return true;
                 }))
+      .function("fillFormFactorRows", &WebSession::fillFormFactorRows)
       .function("displayExposure", &displayExposure)
       .function("displayColours", &displayColours)
       .function("hemicubeFigure", &hemicubeFigure)

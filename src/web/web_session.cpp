@@ -187,6 +187,7 @@ const Mesh& WebSession::plannedMesh() {
 }
 
 void WebSession::forgetPlan() {
+  plannedRows_ = {};  // before the mesh it reads
   planned_ = {};
   gathered_.reset();
   rowIn_.clear();
@@ -212,24 +213,40 @@ int WebSession::rowPlan() {
   }
 }
 
+void WebSession::computeRows(int begin, int end, double* out) {
+  const Mesh& mesh = plannedMesh();
+  if (!plannedRows_) plannedRows_ = makeRowProvider(settings_.method, mesh, settings_.formFactors);
+  const auto n = static_cast<std::size_t>(mesh.size());
+  Eigen::VectorXd values;
+  for (int i = begin; i < end; ++i) {
+    plannedRows_(i, values);
+    std::copy(values.data(), values.data() + n, out + std::size_t(i - begin) * n);
+  }
+}
+
 std::vector<double> WebSession::formFactorRows(int begin, int end) {
   std::vector<double> out;
   if (!scene_) return out;
   try {
-    const Mesh& mesh = plannedMesh();
-    const auto n = static_cast<int>(mesh.size());
+    const auto n = static_cast<int>(plannedMesh().size());
     if (begin < 0 || end > n || begin >= end) return out;
-    const FormFactorRowProvider row = makeRowProvider(settings_.method, mesh, settings_.formFactors);
     out.resize(std::size_t(end - begin) * std::size_t(n));
-    Eigen::VectorXd values;
-    for (int i = begin; i < end; ++i) {
-      row(i, values);
-      std::copy(values.data(), values.data() + n, out.data() + std::size_t(i - begin) * std::size_t(n));
-    }
+    computeRows(begin, end, out.data());
   } catch (const std::exception&) {
     out.clear();
   }
   return out;
+}
+
+bool WebSession::fillFormFactorRows(int begin, int end) {
+  try {
+    const std::span<double> target = rowsToFill(begin, end);
+    if (target.empty()) return false;
+    computeRows(begin, end, target.data());
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
 }
 
 std::span<double> WebSession::rowsToFill(int begin, int end) {

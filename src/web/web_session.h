@@ -17,6 +17,7 @@
 #include "core/pipeline/pipeline.h"
 #include "core/progress.h"
 #include "core/scene.h"
+#include "core/solvers/shooting_solvers.h"
 
 namespace rt::web {
 
@@ -43,10 +44,12 @@ class WebSession {
   // to spread (F is cached, the method's rows are not independent, the run needs no F or only rescales the
   // light). formFactorRows(begin, end) computes rows [begin, end) of that mesh's F (row-major), bit for bit
   // the rows of the whole matrix. rowsToFill(begin, end) is where such rows go (empty for a range that is not
-  // F's); once every row is in, run() solves with that F as if it had computed it.
+  // F's); fillFormFactorRows(begin, end) computes them there, in this session (false for such a range). Once
+  // every row is in, run() solves with that F as if it had computed it.
   int rowPlan();
   std::vector<double> formFactorRows(int begin, int end);
   std::span<double> rowsToFill(int begin, int end);
+  bool fillFormFactorRows(int begin, int end);
 
   int elements() const;
   int iterations() const;  // recorded iterations (0 before a run)
@@ -75,6 +78,8 @@ class WebSession {
   bool onlyTheLightChanged() const;
   void scaleTheLight();
   const Mesh& plannedMesh();
+  // Rows [begin, end) of the planned mesh's F into `out` (row-major); the provider is kept across blocks.
+  void computeRows(int begin, int end, double* out);
   void keepGatheredRows();
   void forgetPlan();
 
@@ -90,6 +95,7 @@ class WebSession {
   double ranLight_ = 0;
   // The mesh of the configured step for rows computed apart, and the rows gathered so far.
   MeshedScene planned_;
+  FormFactorRowProvider plannedRows_;
   std::unique_ptr<FormFactorMatrix> gathered_;
   std::vector<bool> rowIn_;
   Eigen::Index rowsGathered_ = 0;

@@ -44,12 +44,14 @@ void addWarnings(const FormFactorMethod& method, const FormFactorOptions& option
   std::vector<Eigen::Index> above;
   double largest = 0;
   for (Eigen::Index i = 0; i < F.rows(); ++i) {
-    double sum = 0, allowance = slack;
-    for (Eigen::Index j = 0; j < F.cols(); ++j) {
-      const double f = F(i, j);
-      sum += f;
-      if (f > 0) allowance += method.entryErrorBound(f, options);
-    }
+    double sum = 0;
+    for (Eigen::Index j = 0; j < F.cols(); ++j) sum += F(i, j);
+    // The allowance is at least the slack (the methods' errors are never negative): only a row above it
+    // asks the method for its entries' errors.
+    if (!(sum > 1 + slack)) continue;
+    double allowance = slack;
+    for (Eigen::Index j = 0; j < F.cols(); ++j)
+      if (F(i, j) > 0) allowance += method.entryErrorBound(F(i, j), options);
     if (sum > 1 + allowance) {
       above.push_back(i);
       largest = std::max(largest, sum);

@@ -1,5 +1,7 @@
 #include "core/solvers/bounces_solver.h"
 
+#include "core/solvers/gather_products.h"
+
 namespace rt {
 
 SolverStatus neumannSeries(const RadiositySystem& system, RgbField& B, const SolverOptions& options,
@@ -14,11 +16,11 @@ SolverStatus neumannSeries(const RadiositySystem& system, RgbField& B, const Sol
   const Stopwatch clock;
   RgbField term = system.emission;
   for (int k = 1, cap = sweepCap(options); k <= cap; ++k) {
-    term = (system.reflectance.array() * ((*system.F) * term).array()).matrix();  // one more bounce
+    term = (system.reflectance.array() * productWithF(*system.F, term).array()).matrix();  // one more bounce
     if (!term.allFinite()) return SolverStatus::NumericalIssue;
     B += term;
     if (terms) terms->push_back(term);
-    IterationRecord r = record(B, (*system.F) * B, k, clock.seconds());
+    IterationRecord r = record(B, productWithF(*system.F, B), k, clock.seconds());
     const double residual = r.residual;
     if (sink) sink(std::move(r));
     if (residual <= options.tolerance) return SolverStatus::Success;

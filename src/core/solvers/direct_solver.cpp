@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 
 #include "core/assembly.h"
+#include "core/solvers/gather_products.h"
 #include "core/solvers/solver_support.h"
 
 namespace rt {
@@ -21,7 +22,7 @@ SolverStatus directSolve(const RadiositySystem& system, RgbField& B, const Solve
   }
   if (!solution.allFinite()) return SolverStatus::NumericalIssue;
   B = solution;
-  IterationRecord r = GatherRecorder(system)(B, (*system.F) * B, 1, clock.seconds());
+  IterationRecord r = GatherRecorder(system)(B, productWithF(*system.F, B), 1, clock.seconds());
   // A residual far above rounding means K was (numerically) singular: the numbers are not a solution.
   const bool accurate = r.residual <= std::max(1e-8, 100 * options.tolerance);
   if (sink) sink(std::move(r));

@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "core/solvers/gather_products.h"
+
 namespace rt {
 
 RadiositySystem RadiositySystem::fromMesh(const Mesh& mesh, const FormFactorMatrix& F) {
@@ -21,7 +23,7 @@ RadiositySystem RadiositySystem::fromGeometry(const Mesh& mesh) {
 
 double RadiositySystem::relativeResidual(const RgbField& B) const {
   if (!F) return std::numeric_limits<double>::quiet_NaN();
-  return relativeResidual(B, (*F) * B);
+  return relativeResidual(B, solver_detail::productWithF(*F, B));
 }
 
 double RadiositySystem::relativeResidual(const RgbField& B, const RgbField& FB) const {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/solvers/energy.h"
+#include "core/solvers/gather_products.h"
 
 namespace rt::solver_detail {
 
@@ -18,7 +19,11 @@ SolverStatus validate(const RadiositySystem& system, bool needMatrix) {
     return SolverStatus::InvalidInput;
   if (!system.emission.allFinite() || (system.emission.array() < 0.0).any())
     return SolverStatus::InvalidInput;
-  if (system.F && !system.F->allFinite()) return SolverStatus::InvalidInput;
+  if (system.F) {
+    // Row by row: Eigen's allFinite() of the whole matrix forms F - F, a second matrix of F's size.
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (!system.F->row(i).allFinite()) return SolverStatus::InvalidInput;
+  }
   return SolverStatus::Success;
 }
 
@@ -29,7 +34,7 @@ double totalEmittedPower(const RadiositySystem& system) {
 GatherRecorder::GatherRecorder(const RadiositySystem& system)
     : system_(system), emitted_(totalEmittedPower(system)) {
   const FormFactorMatrix& F = *system.F;
-  absorbing_ = system.areas.asDiagonal() * (F * (1.0 - system.reflectance.array()).matrix());
+  absorbing_ = system.areas.asDiagonal() * productWithF(F, (1.0 - system.reflectance.array()).matrix());
   escaping_ = (system.areas.array() * (1.0 - F.rowwise().sum().array())).matrix();
 }
 

@@ -16,11 +16,34 @@
   // page opened from file:// may start (a worker script from a file URL it may not).
   function workerMain() {
     /* global RadiosityCore, workerScript */
-    const ready = RadiosityCore();
+    // The module compiled, kept to hand to helpers: a helper instantiates it instead of decoding and compiling
+    // the WebAssembly again, and runs the code this worker's engine has already optimised.
+    let compiled = null;
+    let ready = null;
+    function start(given) {
+      if (ready) return ready;
+      if (given) {
+        compiled = given;
+        ready = RadiosityCore({ instantiateWasm: (imports, receive) => {
+          WebAssembly.instantiate(given, imports).then((instance) => receive(instance, given));
+          return {};
+        } });
+        return ready;
+      }
+      const instantiate = WebAssembly.instantiate;
+      WebAssembly.instantiate = (source, imports) => instantiate.call(WebAssembly, source, imports).then((result) => {
+        if (result && result.module instanceof WebAssembly.Module) compiled = result.module;
+        return result;
+      });
+      ready = RadiosityCore().finally(() => (WebAssembly.instantiate = instantiate));
+      return ready;
+    }
     const sessions = new Map();
     // Below this many elements one worker computes F in well under a second: helpers would cost more to
     // start than they save.
     const kSpreadFrom = 2000;
+    // The rows this worker computes between reading the helpers' answers (about 40 ms of the hemicube's).
+    const kOwnBlock = 48;
 
     function sessionFor(module, a) {
       if (!sessions.has(a.sessionKey)) {
@@ -48,6 +71,13 @@
     const helpers = [];
     function helper() {
       const worker = new Worker(URL.createObjectURL(new Blob([workerScript()], { type: 'text/javascript' })));
+      if (compiled) {
+        try {
+          worker.postMessage({ module: compiled });
+        } catch (error) {
+          // An engine that cannot pass a module to a worker: the helper compiles its own.
+        }
+      }
       const waiting = new Map();
       let next = 0;
       worker.onmessage = (e) => {
@@ -64,31 +94,69 @@
       });
     }
 
-    // F's rows spread over `a.workers` helpers when the step needs new form factors whose rows are
-    // independent (the hemicube's: the session's rowPlan) on a mesh large enough: blocks of rows go to
-    // whichever helper is free, the progress bar counts the rows in. The rows are those one worker computes,
-    // bit for bit, so the solve that follows is too.
+    // F's rows spread over `a.workers` workers, this one and helpers, when the step needs new form factors
+    // whose rows are independent (the hemicube's: the session's rowPlan) on a mesh large enough. This worker
+    // computes small blocks straight into F and reads the helpers' answers between them; a helper always has
+    // two blocks asked of it, so that it computes on meanwhile, and its rows come back as transferables to be
+    // copied in. Blocks are a share of the rows left, so that all workers finish together (and this one
+    // computes from the start, while the helpers start up). The progress bar counts the rows in.
+    // The rows are those one worker computes, bit for bit, so the solve that follows is too.
     async function spreadRows(s, a, report) {
       const count = Math.min(Math.max(1, Math.floor(a.workers || 1)), 16);
       const n = count > 1 ? s.session.rowPlan() : 0;
       if (n < kSpreadFrom) return;
-      while (helpers.length < count) helpers.push(helper());
-      const block = Math.ceil(n / (4 * count));
+      while (helpers.length < count - 1) helpers.push(helper());
       const stage = 'form factors (' + count + ' workers)';
       let next = 0, done = 0;
+      const take = (most) => {
+        if (next >= n) return null;
+        const begin = next, share = Math.max(kOwnBlock, Math.ceil((n - begin) / (3 * count)));
+        next = Math.min(n, begin + Math.min(most, share));
+        return [begin, next];
+      };
+      const stored = (begin, end) => {
+        done += end - begin;
+        report(done / n, stage);
+      };
       report(0, stage);
-      const work = async (ask) => {
-        while (next < n) {
-          const begin = next, end = Math.min(n, begin + block);
-          next = end;
-          const rows = await ask('rows', { sessionKey: a.sessionKey, files: a.files, scene: a.scene, step: a.step,
-                                           begin, end });
+      const request = { sessionKey: a.sessionKey, files: a.files, scene: a.scene, step: a.step };
+      const helperWork = async (ask) => {
+        const asked = [];
+        const askFor = () => {
+          const range = take(n);
+          if (!range) return;
+          const answer = ask('rows', Object.assign({ begin: range[0], end: range[1] }, request))
+            .then((rows) => [range, rows]);
+          answer.catch(() => {});  // awaited in order below
+          asked.push(answer);
+        };
+        askFor();
+        askFor();
+        while (asked.length) {
+          const [[begin, end], rows] = await asked.shift();
           if (!s.session.putFormFactorRows(begin, end, rows)) throw new Error('rows ' + begin + '-' + end + ' are not this mesh\'s');
-          done += end - begin;
-          report(done / n, stage);
+          stored(begin, end);
+          askFor();
         }
       };
-      await Promise.all(helpers.slice(0, count).map(work));
+      const ownWork = async () => {
+        for (let range; (range = take(kOwnBlock));) {
+          if (!s.session.fillFormFactorRows(range[0], range[1])) throw new Error('rows ' + range[0] + '-' + range[1] + ' could not be computed');
+          stored(range[0], range[1]);
+          await answersIn();
+        }
+      };
+      await Promise.all([ownWork(), ...helpers.slice(0, count - 1).map(helperWork)]);
+    }
+
+    // Lets the messages waiting for this worker in (a message to itself queues behind them; a timer would
+    // wait milliseconds).
+    const channel = new MessageChannel();
+    function answersIn() {
+      return new Promise((resolve) => {
+        channel.port1.onmessage = () => resolve();
+        channel.port2.postMessage(0);
+      });
     }
 
     // The views of one scene share its session: before reading F, make sure it holds this view's run.
@@ -149,10 +217,11 @@
     // on its session meanwhile.
     let queue = Promise.resolve();
     self.onmessage = (e) => {
+      if (e.data.module) return void start(e.data.module);
       const { id, op, args } = e.data;
       queue = queue.then(async () => {
         try {
-          const [result, transfer] = await handle(await ready, id, op, args);
+          const [result, transfer] = await handle(await start(), id, op, args);
           self.postMessage({ id, result }, transfer || []);
         } catch (error) {
           self.postMessage({ id, error: String((error && error.message) || error) });
@@ -767,7 +836,8 @@
   }
 
   // For the playground page (playground.js), which makes views of the reader's own scenes.
-  // formFactorWorkers: how many workers compute the rows of a large F (one per core; tests set it to compare).
+  // formFactorWorkers: how many workers (the page's worker and its helpers) compute the rows of a large F (one
+  // per core; tests set it to compare).
   Object.assign(live, { LiveView, ask, formFactorWorkers: navigator.hardwareConcurrency || 1 });
   window.rtLive = live;
   window.addEventListener('load', () => start());
