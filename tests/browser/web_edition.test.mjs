@@ -250,6 +250,18 @@ for (const file of pages) {
             `${(100 * firstRight.lit).toFixed(1)} % lit`);
       check((firstLeft.sum !== firstRight.sum || finalLeft.sum !== finalRight.sum) && left !== right &&
             /largest \|ΔB\|/.test(right), `${label}: the two compared views differ`, right.slice(0, 140));
+      // Both views keep looking where the reader left the camera (opening the second view's controls must not
+      // turn it towards their own default target), and draw at the size they are shown.
+      const aim = await page.evaluate((k) => {
+        const view = window.rtLiveViews[k];
+        const towards = view.controls.target.clone().sub(view.camera.position).normalize();
+        const looking = new THREE.Vector3();
+        view.camera.getWorldDirection(looking);
+        const sized = [view.renderer, view.compareRenderer].every((r) => r.domElement.width === r.domElement.clientWidth);
+        return { angle: looking.angleTo(towards), sized };
+      }, k);
+      check(aim.angle < 1e-3 && aim.sized, `${label}: in compare mode the camera still looks at the view's target`,
+            `${aim.angle.toExponential(2)} rad off, buffers ${aim.sized ? '' : 'not '}at the shown size`);
       const whole = await page.evaluateHandle((k) => window.rtLiveViews[k].renderer.domElement.closest('.live-view'), k);
       await whole.screenshot({ path: path.join(shots, `${path.basename(file, '.html')}-${k + 1}-compare.png`) });
     }

@@ -322,6 +322,14 @@
     }
   }
 
+  // The drawing buffer at the size the canvas is shown (half the width in compare mode): a buffer larger than
+  // its box would be shown scaled down at best, and cropped by some compositors.
+  function fitToCanvas(renderer) {
+    const canvas = renderer.domElement;
+    const width = canvas.clientWidth;
+    if (width > 0 && canvas.width !== width) renderer.setSize(width, Math.round(width * 0.75), false);
+  }
+
   function element(tag, attributes, parent) {
     const e = document.createElement(tag);
     for (const [k, v] of Object.entries(attributes || {})) {
@@ -553,7 +561,9 @@
         this.compareScene.add(this.compareMesh);
         // Either view turns both: one camera, two controls on its target.
         const controls = new THREE.OrbitControls(this.camera, this.compareRenderer.domElement);
+        // Made, the controls turn the camera towards their own target (the origin); point it back at the view's.
         controls.target = this.controls.target;
+        controls.update();
         controls.addEventListener('change', () => this.render());
       }
       const geometry = this.compareMesh.geometry;
@@ -809,8 +819,12 @@
     }
 
     render() {
+      fitToCanvas(this.renderer);
       this.renderer.render(this.scene, this.camera);
-      if (this.compareRenderer && !this.compareView.hidden) this.compareRenderer.render(this.compareScene, this.camera);
+      if (this.compareRenderer && !this.compareView.hidden) {
+        fitToCanvas(this.compareRenderer);
+        this.compareRenderer.render(this.compareScene, this.camera);
+      }
     }
   }
 
