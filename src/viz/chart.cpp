@@ -21,7 +21,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "viz/colour_map.h"
 #include "viz/vtk_render.h"
@@ -91,6 +94,67 @@ Series fittedPowerLaw(const Series& points, double slope, int fitOf) {
   }
   return fitted;
 }
+
+namespace {
+
+// The corner of the plot whose legend would cover the fewest stretches of curve: the curves' points and the
+// points between them, on the chart's (log) scales, counted in a box of the legend's rough size in each
+// corner. Ties keep the top right. Returns {horizontal, vertical} vtkChartLegend alignments.
+std::pair<int, int> emptiestCorner(const std::vector<Series>& series, const ChartOptions& options) {
+  auto scaled = [](double v, bool log) { return log ? std::log10(v) : v; };
+  std::vector<std::pair<double, double>> points;
+  std::size_t entries = 0, longest = 0;
+  for (const Series& one : series) {
+    if (one.fitOf < 0) {
+      ++entries;
+      longest = std::max(longest, one.name.size());
+    }
+    const std::size_t n = std::min(one.x.size(), one.y.size());
+    for (std::size_t k = 0; k < n; ++k) {
+      const bool drawable = std::isfinite(one.x[k]) && std::isfinite(one.y[k]) &&
+                            !(options.logX && one.x[k] <= 0) && !(options.logY && one.y[k] <= 0);
+      if (!drawable) continue;
+      const double x = scaled(one.x[k], options.logX), y = scaled(one.y[k], options.logY);
+      const bool nextDrawable = k + 1 < n && std::isfinite(one.x[k + 1]) && std::isfinite(one.y[k + 1]) &&
+                                !(options.logX && one.x[k + 1] <= 0) && !(options.logY && one.y[k + 1] <= 0);
+      if (!nextDrawable) {
+        points.emplace_back(x, y);
+        continue;
+      }
+      const double x1 = scaled(one.x[k + 1], options.logX), y1 = scaled(one.y[k + 1], options.logY);
+      for (int t = 0; t < 8; ++t) points.emplace_back(x + (x1 - x) * t / 8.0, y + (y1 - y) * t / 8.0);
+    }
+  }
+  const int top = vtkChartLegend::TOP, right = vtkChartLegend::RIGHT;
+  if (points.empty()) return {right, top};
+  double x0 = points[0].first, x1 = x0, y0 = points[0].second, y1 = y0;
+  for (const auto& [x, y] : points) {
+    x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  }
+  // The legend's share of the plot: about 0.55 em per character beside a marker, 1.5 em per entry.
+  const double em = 0.03 * options.height * 0.85;
+  const double w = std::min(0.6, (static_cast<double>(longest) * 0.55 * em + 3 * em) / (0.8 * options.width));
+  const double h = std::min(0.6, (static_cast<double>(entries) * 1.5 * em + em) / (0.75 * options.height));
+  std::pair<int, int> best{right, top};
+  std::size_t fewest = std::numeric_limits<std::size_t>::max();
+  for (const int vertical : {top, static_cast<int>(vtkChartLegend::BOTTOM)})
+    for (const int horizontal : {right, static_cast<int>(vtkChartLegend::LEFT)}) {
+      std::size_t covered = 0;
+      for (const auto& [x, y] : points) {
+        const double u = x1 > x0 ? (x - x0) / (x1 - x0) : 0.5, v = y1 > y0 ? (y - y0) / (y1 - y0) : 0.5;
+        const bool inX = horizontal == right ? u >= 1 - w : u <= w;
+        const bool inY = vertical == top ? v >= 1 - h : v <= h;
+        covered += inX && inY;
+      }
+      if (covered < fewest) {
+        fewest = covered;
+        best = {horizontal, vertical};
+      }
+    }
+  return best;
+}
+
+}  // namespace
 
 void writeLineChart(const std::vector<Series>& series, const ChartOptions& options, const std::string& path) {
   figureFormatOf(path);
@@ -167,8 +231,9 @@ void writeLineChart(const std::vector<Series>& series, const ChartOptions& optio
   }
   if (drawn == 0) throw std::invalid_argument(path + ": no series has a point that can be drawn");
   chart->SetShowLegend(true);
-  chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
-  chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::TOP);
+  const auto [horizontal, vertical] = emptiestCorner(series, options);
+  chart->GetLegend()->SetHorizontalAlignment(horizontal);
+  chart->GetLegend()->SetVerticalAlignment(vertical);
   chart->GetLegend()->SetLabelSize(static_cast<int>(fontSize * 0.85));
   chart->GetLegend()->GetLabelProperties()->SetColor(0.05, 0.05, 0.05);
   if (figureFormatOf(path) != FigureFormat::Png) {

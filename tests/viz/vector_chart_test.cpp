@@ -113,6 +113,31 @@ TEST(VectorChart, AFitTakesItsSeriesColourAndNoLegendEntry) {
                std::invalid_argument);
 }
 
+// A legend goes to the corner its curves leave empty: a rising curve passes through the top right, so the
+// legend stands at the top left; a falling one leaves the top right free.
+TEST(VectorChart, TheLegendTakesTheCornerTheCurvesLeaveEmpty) {
+  RT_REQUIRE_VECTOR_RENDERERS();
+  const std::string dir = test::scratchDir("vector_chart_legend");
+  ChartOptions o;
+  o.title = "Links against n";
+  o.xLabel = "elements n";
+  o.yLabel = "count";
+  o.logX = o.logY = true;
+  const std::vector<double> n = {100, 400, 1600, 6400};
+  auto legendLeft = [&](const Series& curve, const std::string& name) {
+    const std::string path = dir + "/" + name + ".svg";
+    writeLineChart({curve}, o, path);
+    const test::RenderedChart page = test::renderChart(path);
+    EXPECT_TRUE(page.error.empty()) << page.error;
+    for (const test::Word& w : page.words)
+      if (w.text.find("curve") != std::string::npos) return w.xMax < 0.5 * page.width;
+    ADD_FAILURE() << name << ": no legend entry";
+    return false;
+  };
+  EXPECT_TRUE(legendLeft({"rising curve", n, {1e4, 1.6e5, 2.6e6, 4.1e7}}, "rising"));
+  EXPECT_FALSE(legendLeft({"falling curve", n, {0.1, 0.05, 0.025, 0.0125}}, "falling"));
+}
+
 // Text with a '|' ("|K_ij|" on the colour bar, "largest |value|" in the title of a blocked matrix): in the
 // PDF it is text, as every other word, and no red box stands beside it.
 TEST(VectorChart, TheMatrixPdfHasItsWordsAndNoStrayBox) {
