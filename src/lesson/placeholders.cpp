@@ -14,7 +14,8 @@ bool nameChar(char c) {
          c == '-' || c == '[' || c == ']';
 }
 
-// Whether `pos` lies inside $...$ or $$...$$ (a backslash escapes the character after it).
+// Whether `pos` lies inside $...$ or $$...$$ (a backslash escapes the character after it). A scan of its own:
+// maths.h finds formulas with md4c, which the parser's builds (fuzzers, WebAssembly) do not link.
 bool insideMaths(const std::string& text, std::size_t pos) {
   bool inlineMaths = false, display = false;
   for (std::size_t i = 0; i < pos && i < text.size(); ++i) {

@@ -97,6 +97,11 @@ Series fittedPowerLaw(const Series& points, double slope, int fitOf) {
 
 namespace {
 
+// Whether a point has a place on the chart: finite, and positive on a log axis.
+bool drawable(double x, double y, const ChartOptions& options) {
+  return std::isfinite(x) && std::isfinite(y) && !(options.logX && x <= 0) && !(options.logY && y <= 0);
+}
+
 // The corner of the plot whose legend would cover the fewest stretches of curve: the curves' points and the
 // points between them, on the chart's (log) scales, counted in a box of the legend's rough size in each
 // corner. Ties keep the top right. Returns {horizontal, vertical} vtkChartLegend alignments.
@@ -111,13 +116,9 @@ std::pair<int, int> emptiestCorner(const std::vector<Series>& series, const Char
     }
     const std::size_t n = std::min(one.x.size(), one.y.size());
     for (std::size_t k = 0; k < n; ++k) {
-      const bool drawable = std::isfinite(one.x[k]) && std::isfinite(one.y[k]) &&
-                            !(options.logX && one.x[k] <= 0) && !(options.logY && one.y[k] <= 0);
-      if (!drawable) continue;
+      if (!drawable(one.x[k], one.y[k], options)) continue;
       const double x = scaled(one.x[k], options.logX), y = scaled(one.y[k], options.logY);
-      const bool nextDrawable = k + 1 < n && std::isfinite(one.x[k + 1]) && std::isfinite(one.y[k + 1]) &&
-                                !(options.logX && one.x[k + 1] <= 0) && !(options.logY && one.y[k + 1] <= 0);
-      if (!nextDrawable) {
+      if (k + 1 == n || !drawable(one.x[k + 1], one.y[k + 1], options)) {
         points.emplace_back(x, y);
         continue;
       }
@@ -201,11 +202,9 @@ void writeLineChart(const std::vector<Series>& series, const ChartOptions& optio
     auto y = vtkSmartPointer<vtkDoubleArray>::New();
     y->SetName(one.name.empty() ? ("series " + std::to_string(s + 1)).c_str() : one.name.c_str());
     for (std::size_t k = 0; k < std::min(one.x.size(), one.y.size()); ++k) {
-      const double px = one.x[k], py = one.y[k];
-      if (!std::isfinite(px) || !std::isfinite(py)) continue;
-      if ((options.logX && px <= 0) || (options.logY && py <= 0)) continue;
-      x->InsertNextValue(px);
-      y->InsertNextValue(py);
+      if (!drawable(one.x[k], one.y[k], options)) continue;
+      x->InsertNextValue(one.x[k]);
+      y->InsertNextValue(one.y[k]);
     }
     if (x->GetNumberOfTuples() == 0) continue;
     auto table = vtkSmartPointer<vtkTable>::New();

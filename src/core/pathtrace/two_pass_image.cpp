@@ -37,6 +37,12 @@ constexpr double kCellOverDistance = 1.0;
 // A cell holding two patches is split while it spans more pixels than this.
 constexpr int kTwoPatchesSplitDownTo = 2;
 
+// A pixel (or an edge sample) with no gathered pixel of its own patch nearby gathers for itself, with fewer
+// rays: such points are few and thin, and their noise is averaged with their neighbours'.
+int ownGatherRays(const TwoPassOptions& options) {
+  return std::max(16, options.gatherRays / 4);
+}
+
 struct PixelHit {
   Vec3 position = Vec3::Zero();
   Vec3 normal = Vec3::UnitZ();
@@ -202,7 +208,7 @@ RgbImage TwoPass::render(const Camera& camera, int width, int height, const TwoP
               const double dx = gx - x, dy = gy - y;
               consider(gx, gy, 1 / (1 + dx * dx + dy * dy), spacing);
             }
-        indirect = weights > 0 ? Rgb(sum / weights) : gatherAt(pixel, std::max(16, options.gatherRays / 4));
+        indirect = weights > 0 ? Rgb(sum / weights) : gatherAt(pixel, ownGatherRays(options));
       }
       indirectAt[pixel] = indirect;
       const Rgb rho = tracing_.mesh().reflectance.row(p.element).transpose().array();
@@ -266,7 +272,7 @@ void TwoPass::antialiasEdges(const Camera& camera, int width, int height, const 
       const std::uint64_t stream = pixels + edges[e] * static_cast<std::uint64_t>(samples) + k;
       if (best == std::numeric_limits<int>::max()) {
         TwoPassOptions o = options;
-        o.gatherRays = std::max(16, options.gatherRays / 4);
+        o.gatherRays = ownGatherRays(options);
         indirect = gather(point, hit.element, o, stream, error);
       }
       const Rgb direct = this->direct(point, hit.element, options, stream, error);
