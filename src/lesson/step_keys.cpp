@@ -1,6 +1,7 @@
 #include "lesson/step_keys.h"
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 #include "core/basis/linear_basis.h"
@@ -596,7 +597,12 @@ void applyStepValue(StepParameters& p, const StepKey& key, const std::string& na
     p.reflectance[name.substr(12)] = parseRgb(value, where, name, key.min, key.max);
     return;
   }
-  const int lo = static_cast<int>(key.min), hi = static_cast<int>(key.max);
+  // A key's bounds are doubles (ff-budget's reaches 1e15); only integer slots read them as ints, clamped.
+  const auto asIntBound = [](double v) {
+    return static_cast<int>(std::clamp(v, double(std::numeric_limits<int>::min()),
+                                       double(std::numeric_limits<int>::max())));
+  };
+  const int lo = asIntBound(key.min), hi = asIntBound(key.max);
   std::visit(
       [&](auto slot) {
         using S = decltype(slot);

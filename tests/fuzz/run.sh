@@ -32,5 +32,7 @@ for target in "${targets[@]}"; do
   fi
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
   echo "$target: $status, $runs executions in ${seconds} s (log: $log)"
+  # The log stays on the machine that ran it; the finding's cause goes where CI's output is read.
+  [ "$status" = FOUND ] && grep -m 4 -E 'runtime error|ERROR:|SUMMARY|Test unit written' "$log" | sed 's/^/  /'
 done
 exit $failed

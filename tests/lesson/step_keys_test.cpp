@@ -72,6 +72,14 @@ TEST(StepKeys, ValuesGoThroughTheTableWithTheirRanges) {
   EXPECT_THROW(applyStepValue(p, *findStepKey("solver"), "solver", "guess", {"x.md", 8}), rt::InputError);
 }
 
+// A bound past an int's range (the work budget's is 1e15) belongs to a double key and is read as a double.
+TEST(StepKeys, ABoundPastAnIntsRangeIsReadOnlyByDoubleKeys) {
+  StepParameters p;
+  applyStepValue(p, *findStepKey("ff-budget"), "ff-budget", "1e15", {"x.md", 3});
+  EXPECT_DOUBLE_EQ(p.formFactorBudget.value_or(0), 1e15);
+  EXPECT_THROW(applyStepValue(p, *findStepKey("ff-budget"), "ff-budget", "2e15", {"x.md", 4}), rt::InputError);
+}
+
 TEST(StepKeys, ALessonCanOnlyNameControlsThatExist) {
   const std::string text =
       "---\ntitle: T\norder: 1\n---\n\n## S\n\n```step\nscene: cornell-box.json\nstage: scene\ncontrols: "
