@@ -11,6 +11,11 @@
 #include "core/formfactor/analytic.h"
 #include "core/geometry/plane_clip.h"
 
+// Profiling builds may keep the stages apart (-DRT_HEMICUBE_STAGE='__attribute__((noinline))').
+#ifndef RT_HEMICUBE_STAGE
+#define RT_HEMICUBE_STAGE
+#endif
+
 namespace rt {
 namespace {
 
@@ -54,14 +59,207 @@ FrustumPlanes frustumPlanes(const HemicubeFaceAxes& face, double margin) {
   return {w, low, std::sqrt(1 + w * w), std::sqrt(1 + low * low)};
 }
 
+// A point of the eye's frame in a face's coordinates (across, up, forward): the faces' axes are the frame's
+// axes and their opposites, so a permutation with signs (exact) instead of three dot products.
+inline Vec3 toFace(int face, const Vec3& p) {
+  switch (face) {
+    case 0: return p;
+    case 1: return {p.y(), p.z(), p.x()};
+    case 2: return {-p.x(), p.z(), p.y()};
+    case 3: return {-p.y(), p.z(), -p.x()};
+    default: return {p.x(), p.z(), -p.y()};
+  }
+}
+
 // True when the sphere lies entirely outside one of the four side planes of the face's frustum (so the test
 // only ever skips what the outcodes would reject).
-bool sphereOutsideFrustum(const Vec3& centre, double radius, const HemicubeFaceAxes& face,
-                          const FrustumPlanes& planes) {
-  const double x = centre.dot(face.across), y = centre.dot(face.up), z = centre.dot(face.forward);
+bool sphereOutsideFrustum(const Vec3& centreOnFace, double radius, const FrustumPlanes& planes) {
+  const double x = centreOnFace.x(), y = centreOnFace.y(), z = centreOnFace.z();
   const double w = planes.w, low = planes.low, wideNorm = planes.wideNorm, lowNorm = planes.lowNorm;
   return x - w * z > radius * wideNorm || -x - w * z > radius * wideNorm || y - w * z > radius * wideNorm ||
          low * z - y > radius * lowNorm;
+}
+
+
+// ---- The stages of one hemicube: the eye's frame, then per element its corners in that frame and a bounding
+// sphere, per face the polygon clipped to the face's frustum, and its scan conversion into the z-buffer.
+
+constexpr double kFrustumMargin = 1e-3;  // the frustum's widening: pixel centres lie half a pixel inside
+
+// Another element as the eye sees it: its corners in the eye's frame, a bounding sphere, its plane.
+struct ElementInEye {
+  std::array<Vec3, 8> local;
+  int count = 0;
+  Vec3 centre;
+  double radius = 0;
+  Vec3 m;          // the plane m . p = c, in the eye's frame
+  double c = 0;
+  int id = kHemicubeSeesNothing;  // the element, or kHemicubeSeesBackFace when it turns its back to the eye
+};
+
+// False when element j covers no pixel: edge-on to the eye or entirely below its horizon.
+RT_HEMICUBE_STAGE bool elementInEye(const Mesh& mesh, int j, const HemicubeFaces& eye, const std::vector<Vec3>& localVertices,
+                  double near, double eyeEps, ElementInEye& out) {
+  const Element& other = mesh.elements[j];
+  const Vec3& anchor = mesh.vertices[other.vertices[0]];
+  const double facing = other.normal.dot(eye.origin - anchor);
+  if (std::abs(facing) <= eyeEps) return false;  // edge-on: covers no pixel centre
+  out.id = facing > 0 ? j : kHemicubeSeesBackFace;
+  out.count = static_cast<int>(other.vertices.size());
+  bool above = false;
+  for (int k = 0; k < out.count; ++k) {
+    out.local[k] = localVertices[other.vertices[k]];
+    above |= out.local[k].z() > near;
+  }
+  if (!above) return false;
+  // A bounding sphere in the eye's frame rejects most (element, face) combinations with a few comparisons
+  // before the per-vertex outcodes: a small element lies on one or two of the five faces.
+  out.centre = Vec3::Zero();
+  for (int k = 0; k < out.count; ++k) out.centre += out.local[k];
+  out.centre /= out.count;
+  double radius = 0;
+  for (int k = 0; k < out.count; ++k) radius = std::max(radius, (out.local[k] - out.centre).squaredNorm());
+  out.radius = std::sqrt(radius) * (1 + 1e-9) + near;
+  out.m = Vec3(other.normal.dot(eye.u), other.normal.dot(eye.v), other.normal.dot(eye.normal));
+  out.c = out.m.dot(out.local[0]);
+  return true;
+}
+
+// The element's polygon in face f's coordinates (across, up, depth), clipped to the face's frustum (slightly
+// widened: pixel centres lie at least half a pixel inside), so that projected coordinates stay bounded: the
+// near plane alone would leave points at depth ~0 projecting to ~1e9 pixels, where edge functions lose all
+// precision. Returns the number of corners in `clipped` (below 3: nothing to draw).
+RT_HEMICUBE_STAGE int clipToFace(const ElementInEye& e, int f, const HemicubeFaceAxes& face, double near,
+                                 std::array<Vec3, 16>& clipped) {
+  constexpr double margin = kFrustumMargin;
+  std::array<Vec3, 16> in;
+  // Outcodes against the five frustum planes: reject when all vertices are outside one of them, skip
+  // clipping when all are inside every one (the common cases).
+  unsigned allOutside = 31, anyOutside = 0;
+  for (int k = 0; k < e.count; ++k) {
+    in[k] = toFace(f, e.local[k]);
+    const Vec3& p = in[k];
+    const double w = (1 + margin) * p.z();
+    const unsigned code = (p.z() < near ? 1u : 0u) | (p.x() > w ? 2u : 0u) | (p.x() < -w ? 4u : 0u) |
+                          (p.y() > w ? 8u : 0u) | (p.y() < (face.upMin - margin) * p.z() ? 16u : 0u);
+    allOutside &= code;
+    anyOutside |= code;
+  }
+  if (allOutside != 0) return 0;
+  int n = e.count;
+  if (anyOutside == 0) {
+    for (int k = 0; k < n; ++k) clipped[k] = in[k];
+    return n;
+  }
+  auto clipBy = [&](auto distance) {
+    if (n < 3) return;
+    std::array<double, 16> heights;
+    for (int k = 0; k < n; ++k) heights[k] = distance(in[k]);
+    int m = 0;
+    cutByHeights(
+        in.data(), heights.data(), n, [&](const Vec3& p) { clipped[m++] = p; }, [](const Vec3&) {});
+    n = m;
+    for (int k = 0; k < n; ++k) in[k] = clipped[k];
+  };
+  clipBy([&](const Vec3& p) { return p.z() - near; });
+  clipBy([&](const Vec3& p) { return (1 + margin) * p.z() - p.x(); });
+  clipBy([&](const Vec3& p) { return (1 + margin) * p.z() + p.x(); });
+  clipBy([&](const Vec3& p) { return (1 + margin) * p.z() - p.y(); });
+  clipBy([&](const Vec3& p) { return p.y() - (face.upMin - margin) * p.z(); });
+  return n;
+}
+
+// Scan conversion of a clipped polygon into face f's z-buffer: pixel centres inside every edge, nearest
+// (largest inverse depth) wins.
+RT_HEMICUBE_STAGE void drawPolygon(const std::array<Vec3, 16>& clipped, int n, const ElementInEye& e,
+                                   const HemicubeFaceAxes& face, HemicubeFaceBuffer& buffer,
+                                   std::vector<double>& zbuffer) {
+  const Vec3& m = e.m;
+  const double c = e.c;
+  const int id = e.id;
+  // Project to pixel units: x in [0, width), y in [0, height).
+  ProjectedPolygon projected;
+  const double sx = buffer.width / 2.0, sy = buffer.height / (1.0 - face.upMin);
+  double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
+  for (int k = 0; k < n; ++k) {
+    const double x = (clipped[k].x() / clipped[k].z() + 1.0) * sx;
+    const double y = (clipped[k].y() / clipped[k].z() - face.upMin) * sy;
+    projected.screen[k] = Vec2(x, y);
+    xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y),
+    ymax = std::max(ymax, y);
+  }
+  projected.count = n;
+  const int c0 = std::max(0, static_cast<int>(std::ceil(xmin - 0.5)));
+  const int c1 = std::min(buffer.width - 1, static_cast<int>(std::floor(xmax - 0.5)));
+  const int r0 = std::max(0, static_cast<int>(std::ceil(ymin - 0.5)));
+  const int r1 = std::min(buffer.height - 1, static_cast<int>(std::floor(ymax - 0.5)));
+  if (c0 > c1 || r0 > r1) return;
+  // Plane in face coordinates: m_face . (X, Y, 1) * depth = c, so 1/depth = (m_face . (X, Y, 1)) / c with
+  // X = x / sx - 1, Y = y / sy + upMin.
+  const Vec3 mf(m.dot(face.across), m.dot(face.up), m.dot(face.forward));
+  if (c == 0) return;
+  // A back face is pushed a hair farther (1e-7 of its depth): where it coincides with a front face, as
+  // in an occluder modelled as two back-to-back polygons, the front face must win the depth test instead
+  // of the two taking pixels at random by rounding.
+  const double push = id == kHemicubeSeesBackFace ? 1 - 1e-7 : 1.0;
+  const double kx = push * mf.x() / (c * sx), ky = push * mf.y() / (c * sy);
+  const double k0 = push * (mf.z() - mf.x() + mf.y() * face.upMin) / c;
+  // Orientation of the projected polygon, so that inside means all edge functions >= 0.
+  double area2 = 0;
+  for (int k = 0; k < n; ++k) {
+    const Vec2& p = projected.screen[k];
+    const Vec2& q = projected.screen[(k + 1) % n];
+    area2 += p.x() * q.y() - q.x() * p.y();
+  }
+  if (area2 == 0) return;
+  const double orientation = area2 > 0 ? 1.0 : -1.0;
+  std::array<double, 16> ea, eb, ec, inverseEa;  // edge functions e(x, y) = ea x + eb y + ec
+  for (int k = 0; k < n; ++k) {
+    const Vec2& p = projected.screen[k];
+    const Vec2& q = projected.screen[(k + 1) % n];
+    ea[k] = -(q.y() - p.y()) * orientation;
+    eb[k] = (q.x() - p.x()) * orientation;
+    ec[k] = -(ea[k] * p.x() + eb[k] * p.y());
+    // Clipping through a frustum corner can leave two vertices a rounding error apart: such an edge has
+    // no direction, and its half-plane (-rest / ea with ea ~ 1e-17) would empty whole rows at random.
+    if ((q - p).squaredNorm() < 1e-18) ea[k] = eb[k] = ec[k] = 0.0;
+    inverseEa[k] = ea[k] != 0 ? 1.0 / ea[k] : 0.0;  // one division per edge, not per edge and row
+  }
+  for (int row = r0; row <= r1; ++row) {
+    const double y = row + 0.5;
+    // Span of the row: intersect the half-planes along x.
+    double lo = c0 + 0.5, hi = c1 + 0.5;
+    bool empty = false;
+    for (int k = 0; k < n && !empty; ++k) {
+      const double rest = eb[k] * y + ec[k];
+      if (ea[k] > 0)
+        lo = std::max(lo, -rest * inverseEa[k]);
+      else if (ea[k] < 0)
+        hi = std::min(hi, -rest * inverseEa[k]);
+      else if (rest < -1e-9)
+        empty = true;
+    }
+    if (empty) return;
+    // A pixel centre exactly on an edge shared by two elements must not fall through both (rounding in
+    // the divisions above): widen the span by a hair; the z-buffer settles the double coverage.
+    lo -= 1e-7, hi += 1e-7;
+    const int first = std::max(c0, static_cast<int>(std::ceil(lo - 0.5)));
+    const int last = std::min(c1, static_cast<int>(std::floor(hi - 0.5)));
+    const std::size_t base = static_cast<std::size_t>(row) * buffer.width;
+    const double rowTerm = ky * y + k0;
+    double* depths = zbuffer.data() + base;
+    int* ids = buffer.element.data() + base;
+    // Stepping the inverse depth along the row (one addition per pixel) instead of evaluating the plane
+    // at each pixel: over at most a face width of steps the rounding stays near 1e-14 of the depth, far
+    // below the 1e-7 that separates a back face from a coincident front face.
+    double inverse = kx * (first + 0.5) + rowTerm;
+    for (int column = first; column <= last; ++column, inverse += kx) {
+      if (inverse > depths[column]) {
+        depths[column] = inverse;
+        ids[column] = id;
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -138,13 +336,12 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
   const double size = box.isEmpty() ? 1.0 : box.diagonal().norm();
   const double near = 1e-9 * size;
 
-  constexpr double margin = 1e-3;  // the frustum's widening: pixel centres lie half a pixel inside
   std::array<HemicubeFaceAxes, 5> axes;
   std::array<FrustumPlanes, 5> planes;
   for (int f = 0; f < 5; ++f) {
     const HemicubeFace face = static_cast<HemicubeFace>(f);
     axes[f] = hemicubeFaceAxes(face);
-    planes[f] = frustumPlanes(axes[f], margin);
+    planes[f] = frustumPlanes(axes[f], kFrustumMargin);
     HemicubeFaceBuffer& buffer = result.faces[f];
     buffer.width = resolution;
     buffer.height = heightOf(resolution, face);
@@ -159,160 +356,14 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
   for (int f = 0; f < 5; ++f) inverseDepth[f].assign(result.faces[f].element.size(), 0.0);
 
   const double eyeEps = 1e-12 * size;
+  ElementInEye other;
+  std::array<Vec3, 16> clipped;
   for (int j = 0; j < static_cast<int>(mesh.size()); ++j) {
-    if (j == element) continue;
-    const Element& other = mesh.elements[j];
-    const Vec3& anchor = mesh.vertices[other.vertices[0]];
-    const double facing = other.normal.dot(result.origin - anchor);
-    if (std::abs(facing) <= eyeEps) continue;  // edge-on: covers no pixel centre
-    const int id = facing > 0 ? j : kHemicubeSeesBackFace;
-    // Local coordinates (u, v, normal) of the vertices.
-    std::array<Vec3, 8> local;
-    const int count = static_cast<int>(other.vertices.size());
-    bool above = false;
-    for (int k = 0; k < count; ++k) {
-      local[k] = localVertices[other.vertices[k]];
-      above |= local[k].z() > near;
-    }
-    if (!above) continue;  // entirely below the horizon
-    // A bounding sphere in the eye's frame rejects most (element, face) combinations with a few dot products
-    // before the per-vertex outcodes: a small element lies on one or two of the five faces.
-    Vec3 centre = Vec3::Zero();
-    for (int k = 0; k < count; ++k) centre += local[k];
-    centre /= count;
-    double radius = 0;
-    for (int k = 0; k < count; ++k) radius = std::max(radius, (local[k] - centre).squaredNorm());
-    radius = std::sqrt(radius) * (1 + 1e-9) + near;
-    // The plane of the element in local coordinates: m . p = c.
-    const Vec3 m(other.normal.dot(result.u), other.normal.dot(result.v), other.normal.dot(result.normal));
-    const double c = m.dot(local[0]);
-
+    if (j == element || !elementInEye(mesh, j, result, localVertices, near, eyeEps, other)) continue;
     for (int f = 0; f < 5; ++f) {
-      const HemicubeFaceAxes& face = axes[f];
-      HemicubeFaceBuffer& buffer = result.faces[f];
-      if (sphereOutsideFrustum(centre, radius, face, planes[f])) continue;
-      // Face coordinates (across, up, depth), then clip against the near plane depth >= near.
-      std::array<Vec3, 16> in, clipped;
-      // Outcodes against the five frustum planes: reject when all vertices are outside one of them, skip
-      // clipping when all are inside every one (the common cases).
-      unsigned allOutside = 31, anyOutside = 0;
-      for (int k = 0; k < count; ++k) {
-        in[k] = Vec3(local[k].dot(face.across), local[k].dot(face.up), local[k].dot(face.forward));
-        const Vec3& p = in[k];
-        const double w = (1 + margin) * p.z();
-        const unsigned code = (p.z() < near ? 1u : 0u) | (p.x() > w ? 2u : 0u) | (p.x() < -w ? 4u : 0u) |
-                              (p.y() > w ? 8u : 0u) | (p.y() < (face.upMin - margin) * p.z() ? 16u : 0u);
-        allOutside &= code;
-        anyOutside |= code;
-      }
-      if (allOutside != 0) continue;
-      // Clip to the face's frustum (slightly widened: pixel centres lie at least half a pixel inside), so
-      // projected coordinates stay bounded; the near plane alone would leave points at depth ~0 projecting to
-      // ~1e9 pixels, where edge functions lose all precision.
-      int n = count;
-      auto clipBy = [&](auto distance) {
-        std::array<double, 16> heights;
-        for (int k = 0; k < n; ++k) heights[k] = distance(in[k]);
-        int m = 0;
-        cutByHeights(
-            in.data(), heights.data(), n, [&](const Vec3& p) { clipped[m++] = p; }, [](const Vec3&) {});
-        n = m;
-        for (int k = 0; k < n; ++k) in[k] = clipped[k];
-      };
-      if (anyOutside == 0)
-        for (int k = 0; k < n; ++k) clipped[k] = in[k];
-      else
-        clipBy([&](const Vec3& p) { return p.z() - near; });
-      if (anyOutside != 0 && n >= 3) clipBy([&](const Vec3& p) { return (1 + margin) * p.z() - p.x(); });
-      if (anyOutside != 0 && n >= 3) clipBy([&](const Vec3& p) { return (1 + margin) * p.z() + p.x(); });
-      if (anyOutside != 0 && n >= 3) clipBy([&](const Vec3& p) { return (1 + margin) * p.z() - p.y(); });
-      if (anyOutside != 0 && n >= 3)
-        clipBy([&](const Vec3& p) { return p.y() - (face.upMin - margin) * p.z(); });
-      if (n < 3) continue;
-      // Project to pixel units: x in [0, width), y in [0, height).
-      ProjectedPolygon projected;
-      const double sx = buffer.width / 2.0, sy = buffer.height / (1.0 - face.upMin);
-      double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
-      for (int k = 0; k < n; ++k) {
-        const double x = (clipped[k].x() / clipped[k].z() + 1.0) * sx;
-        const double y = (clipped[k].y() / clipped[k].z() - face.upMin) * sy;
-        projected.screen[k] = Vec2(x, y);
-        xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y),
-        ymax = std::max(ymax, y);
-      }
-      projected.count = n;
-      const int c0 = std::max(0, static_cast<int>(std::ceil(xmin - 0.5)));
-      const int c1 = std::min(buffer.width - 1, static_cast<int>(std::floor(xmax - 0.5)));
-      const int r0 = std::max(0, static_cast<int>(std::ceil(ymin - 0.5)));
-      const int r1 = std::min(buffer.height - 1, static_cast<int>(std::floor(ymax - 0.5)));
-      if (c0 > c1 || r0 > r1) continue;
-      // Plane in face coordinates: m_face . (X, Y, 1) * depth = c, so 1/depth = (m_face . (X, Y, 1)) / c with
-      // X = x / sx - 1, Y = y / sy + upMin.
-      const Vec3 mf(m.dot(face.across), m.dot(face.up), m.dot(face.forward));
-      if (c == 0) continue;
-      // A back face is pushed a hair farther (1e-7 of its depth): where it coincides with a front face, as
-      // in an occluder modelled as two back-to-back polygons, the front face must win the depth test instead
-      // of the two taking pixels at random by rounding.
-      const double push = id == kHemicubeSeesBackFace ? 1 - 1e-7 : 1.0;
-      const double kx = push * mf.x() / (c * sx), ky = push * mf.y() / (c * sy);
-      const double k0 = push * (mf.z() - mf.x() + mf.y() * face.upMin) / c;
-      // Orientation of the projected polygon, so that inside means all edge functions >= 0.
-      double area2 = 0;
-      for (int k = 0; k < n; ++k) {
-        const Vec2& p = projected.screen[k];
-        const Vec2& q = projected.screen[(k + 1) % n];
-        area2 += p.x() * q.y() - q.x() * p.y();
-      }
-      if (area2 == 0) continue;
-      const double orientation = area2 > 0 ? 1.0 : -1.0;
-      std::array<double, 16> ea, eb, ec, inverseEa;  // edge functions e(x, y) = ea x + eb y + ec
-      for (int k = 0; k < n; ++k) {
-        const Vec2& p = projected.screen[k];
-        const Vec2& q = projected.screen[(k + 1) % n];
-        ea[k] = -(q.y() - p.y()) * orientation;
-        eb[k] = (q.x() - p.x()) * orientation;
-        ec[k] = -(ea[k] * p.x() + eb[k] * p.y());
-        // Clipping through a frustum corner can leave two vertices a rounding error apart: such an edge has
-        // no direction, and its half-plane (-rest / ea with ea ~ 1e-17) would empty whole rows at random.
-        if ((q - p).squaredNorm() < 1e-18) ea[k] = eb[k] = ec[k] = 0.0;
-        inverseEa[k] = ea[k] != 0 ? 1.0 / ea[k] : 0.0;  // one division per edge, not per edge and row
-      }
-      std::vector<double>& zbuffer = inverseDepth[f];
-      for (int row = r0; row <= r1; ++row) {
-        const double y = row + 0.5;
-        // Span of the row: intersect the half-planes along x.
-        double lo = c0 + 0.5, hi = c1 + 0.5;
-        bool empty = false;
-        for (int k = 0; k < n && !empty; ++k) {
-          const double rest = eb[k] * y + ec[k];
-          if (ea[k] > 0)
-            lo = std::max(lo, -rest * inverseEa[k]);
-          else if (ea[k] < 0)
-            hi = std::min(hi, -rest * inverseEa[k]);
-          else if (rest < -1e-9)
-            empty = true;
-        }
-        if (empty) continue;
-        // A pixel centre exactly on an edge shared by two elements must not fall through both (rounding in
-        // the divisions above): widen the span by a hair; the z-buffer settles the double coverage.
-        lo -= 1e-7, hi += 1e-7;
-        const int first = std::max(c0, static_cast<int>(std::ceil(lo - 0.5)));
-        const int last = std::min(c1, static_cast<int>(std::floor(hi - 0.5)));
-        const std::size_t base = static_cast<std::size_t>(row) * buffer.width;
-        const double rowTerm = ky * y + k0;
-        double* depths = zbuffer.data() + base;
-        int* ids = buffer.element.data() + base;
-        // Stepping the inverse depth along the row (one addition per pixel) instead of evaluating the plane
-        // at each pixel: over at most a face width of steps the rounding stays near 1e-14 of the depth, far
-        // below the 1e-7 that separates a back face from a coincident front face.
-        double inverse = kx * (first + 0.5) + rowTerm;
-        for (int column = first; column <= last; ++column, inverse += kx) {
-          if (inverse > depths[column]) {
-            depths[column] = inverse;
-            ids[column] = id;
-          }
-        }
-      }
+      if (sphereOutsideFrustum(toFace(f, other.centre), other.radius, planes[f])) continue;
+      const int n = clipToFace(other, f, axes[f], near, clipped);
+      if (n >= 3) drawPolygon(clipped, n, other, axes[f], result.faces[f], inverseDepth[f]);
     }
   }
   if (!workspace.computeDepth) return;

@@ -1,36 +1,47 @@
 #include "core/solvers/gather_products.h"
 
+#ifdef __EMSCRIPTEN__
+#include <wasm_simd128.h>
+#endif
+
 namespace rt::solver_detail {
 
 #ifdef __EMSCRIPTEN__
 
 namespace {
 
-// sum_j f[j] b[3j + c] for j in [begin, end), c = 0, 1, 2.
-inline void addRowTimes(const double* f, const double* b, Eigen::Index begin, Eigen::Index end, double& s0,
-                        double& s1, double& s2) {
-  for (Eigen::Index j = begin; j < end; ++j) {
-    const double v = f[j];
-    s0 += v * b[3 * j];
-    s1 += v * b[3 * j + 1];
-    s2 += v * b[3 * j + 2];
+// Two lanes of f64x2: WebAssembly's SIMD (this file is built with -msimd128), two entries of F per step.
+struct Sums {
+  v128_t lanes = wasm_f64x2_splat(0.0);
+  void add(v128_t f, const double* channel) { lanes = wasm_f64x2_add(lanes, wasm_f64x2_mul(f, wasm_v128_load(channel))); }
+  double total() const { return wasm_f64x2_extract_lane(lanes, 0) + wasm_f64x2_extract_lane(lanes, 1); }
+};
+
+// sum_j f[j] B(j, c) for j in [begin, end), c = 0, 1, 2; B column-major (one array per channel).
+inline Eigen::RowVector3d rowTimes(const double* f, const RgbField& B, Eigen::Index begin, Eigen::Index end) {
+  const double *b0 = B.col(0).data(), *b1 = B.col(1).data(), *b2 = B.col(2).data();
+  Sums s0, s1, s2;
+  Eigen::Index j = begin;
+  for (; j + 2 <= end; j += 2) {
+    const v128_t v = wasm_v128_load(f + j);
+    s0.add(v, b0 + j);
+    s1.add(v, b1 + j);
+    s2.add(v, b2 + j);
   }
+  Eigen::RowVector3d sum(s0.total(), s1.total(), s2.total());
+  if (j < end) sum += f[j] * Eigen::RowVector3d(b0[j], b1[j], b2[j]);
+  return sum;
 }
 
 }  // namespace
 
 RgbField productWithF(const FormFactorMatrix& F, const RgbField& B) {
-  const Eigen::Matrix<double, 3, Eigen::Dynamic> b = B.transpose();
   RgbField out(F.rows(), 3);
-  for (Eigen::Index i = 0; i < F.rows(); ++i) {
-    double s0 = 0, s1 = 0, s2 = 0;
-    addRowTimes(F.row(i).data(), b.data(), 0, F.cols(), s0, s1, s2);
-    out.row(i) << s0, s1, s2;
-  }
+  for (Eigen::Index i = 0; i < F.rows(); ++i) out.row(i) = rowTimes(F.row(i).data(), B, 0, F.cols());
   return out;
 }
 
-SweepState::SweepState(const RgbField& B) : now_(B.transpose()), last_(now_) {}
+SweepState::SweepState(const RgbField& B) : now_(B), last_(B) {}
 
 void SweepState::startSweep() {
   last_ = now_;
@@ -39,38 +50,41 @@ void SweepState::startSweep() {
 Eigen::RowVector3d SweepState::gather(const FormFactorMatrix& F, Eigen::Index i,
                                       Eigen::RowVector3d* last) const {
   const double* f = F.row(i).data();
-  double u0 = 0, u1 = 0, u2 = 0;  // the rows from i on hold the last sweep's values in both
-  addRowTimes(f, last_.data(), i, F.cols(), u0, u1, u2);
-  double n0 = 0, n1 = 0, n2 = 0;
-  if (!last) {
-    addRowTimes(f, now_.data(), 0, i, n0, n1, n2);
-    return {n0 + u0, n1 + u1, n2 + u2};
+  // The rows from i on hold the last sweep's values in both.
+  const Eigen::RowVector3d upper = rowTimes(f, last_, i, F.cols());
+  if (!last) return rowTimes(f, now_, 0, i) + upper;
+  const double *n0 = now_.col(0).data(), *n1 = now_.col(1).data(), *n2 = now_.col(2).data();
+  const double *l0 = last_.col(0).data(), *l1 = last_.col(1).data(), *l2 = last_.col(2).data();
+  Sums s0, s1, s2, t0, t1, t2;
+  Eigen::Index j = 0;
+  for (; j + 2 <= i; j += 2) {
+    const v128_t v = wasm_v128_load(f + j);
+    s0.add(v, n0 + j);
+    s1.add(v, n1 + j);
+    s2.add(v, n2 + j);
+    t0.add(v, l0 + j);
+    t1.add(v, l1 + j);
+    t2.add(v, l2 + j);
   }
-  double l0 = 0, l1 = 0, l2 = 0;
-  const double *now = now_.data(), *before = last_.data();
-  for (Eigen::Index j = 0; j < i; ++j) {
-    const double v = f[j];
-    n0 += v * now[3 * j];
-    n1 += v * now[3 * j + 1];
-    n2 += v * now[3 * j + 2];
-    l0 += v * before[3 * j];
-    l1 += v * before[3 * j + 1];
-    l2 += v * before[3 * j + 2];
+  Eigen::RowVector3d lowerNow(s0.total(), s1.total(), s2.total()), lowerLast(t0.total(), t1.total(), t2.total());
+  if (j < i) {
+    lowerNow += f[j] * now_.row(j);
+    lowerLast += f[j] * last_.row(j);
   }
-  *last = {l0 + u0, l1 + u1, l2 + u2};
-  return {n0 + u0, n1 + u1, n2 + u2};
+  *last = lowerLast + upper;
+  return lowerNow + upper;
 }
 
 Eigen::RowVector3d SweepState::row(Eigen::Index i) const {
-  return now_.col(i).transpose();
+  return now_.row(i);
 }
 
 void SweepState::setRow(Eigen::Index i, const Eigen::RowVector3d& value) {
-  now_.col(i) = value.transpose();
+  now_.row(i) = value;
 }
 
 RgbField SweepState::current() const {
-  return now_.transpose();
+  return now_;
 }
 
 #else

@@ -2,8 +2,9 @@
 // of 5,000 elements is 200 MB: a pass over it is the unit of a solve's cost, so a Gauss-Seidel sweep reads
 // each row once and also gives F times the B it started from (the previous iterate's residual), instead of a
 // second pass for the residual. Natively Eigen's vectorised row products are the fastest; in WebAssembly
-// (no SIMD) Eigen's products run about twice as slow as a plain loop over B stored element by element, so
-// that build takes the loop. Both sum the same terms; only the rounding of the sums differs.
+// Eigen has no SIMD path, and its products run about twice as slow as a plain loop, so that build takes a
+// loop of its own over WebAssembly's two-lane SIMD. Both sum the same terms; only the rounding of the sums
+// differs.
 #pragma once
 
 #include "core/formfactor/formfactor_matrix.h"
@@ -31,8 +32,9 @@ class SweepState {
 
  private:
 #ifdef __EMSCRIPTEN__
-  // Element by element: B_i's three channels side by side, this sweep's and the last's.
-  Eigen::Matrix<double, 3, Eigen::Dynamic> now_, last_;
+  // This sweep's values and the last's, one array per channel (as RgbField keeps them): two entries of a row
+  // of F meet two elements' values of a channel in one SIMD product.
+  RgbField now_, last_;
 #else
   // Columns 0-2 this sweep's values, 3-5 the last sweep's: one product of a row with six columns.
   Eigen::Matrix<double, Eigen::Dynamic, 6> values_;
