@@ -132,13 +132,12 @@ RT_HEMICUBE_STAGE bool elementInEye(const Mesh& mesh, int j, const HemicubeFaces
 RT_HEMICUBE_STAGE int clipToFace(const ElementInEye& e, int f, const HemicubeFaceAxes& face, double near,
                                  std::array<Vec3, 16>& clipped) {
   constexpr double margin = kFrustumMargin;
-  std::array<Vec3, 16> in;
   // Outcodes against the five frustum planes: reject when all vertices are outside one of them, skip
-  // clipping when all are inside every one (the common cases).
+  // clipping when all are inside every one (the common cases: then the corners go straight to `clipped`).
   unsigned allOutside = 31, anyOutside = 0;
   for (int k = 0; k < e.count; ++k) {
-    in[k] = toFace(f, e.local[k]);
-    const Vec3& p = in[k];
+    const Vec3 p = toFace(f, e.local[k]);
+    clipped[k] = p;
     const double w = (1 + margin) * p.z();
     const unsigned code = (p.z() < near ? 1u : 0u) | (p.x() > w ? 2u : 0u) | (p.x() < -w ? 4u : 0u) |
                           (p.y() > w ? 8u : 0u) | (p.y() < (face.upMin - margin) * p.z() ? 16u : 0u);
@@ -147,10 +146,9 @@ RT_HEMICUBE_STAGE int clipToFace(const ElementInEye& e, int f, const HemicubeFac
   }
   if (allOutside != 0) return 0;
   int n = e.count;
-  if (anyOutside == 0) {
-    for (int k = 0; k < n; ++k) clipped[k] = in[k];
-    return n;
-  }
+  if (anyOutside == 0) return n;
+  std::array<Vec3, 16> in;
+  for (int k = 0; k < n; ++k) in[k] = clipped[k];
   auto clipBy = [&](auto distance) {
     if (n < 3) return;
     std::array<double, 16> heights;
@@ -213,33 +211,42 @@ RT_HEMICUBE_STAGE void drawPolygon(const std::array<Vec3, 16>& clipped, int n, c
   }
   if (area2 == 0) return;
   const double orientation = area2 > 0 ? 1.0 : -1.0;
-  std::array<double, 16> ea, eb, ec, inverseEa;  // edge functions e(x, y) = ea x + eb y + ec
+  // Edge functions e(x, y) = a x + b y + c, inside where e >= 0, sorted once by what they bound along a row:
+  // a > 0 the span's left end, a < 0 its right end, a = 0 (horizontal) whether the row is inside at all. A
+  // row's span is then a pass over each list without a branch per edge.
+  struct Edge {
+    double a, b, c, inverseA;
+  };
+  std::array<Edge, 16> lefts, rights, flats;
+  int leftCount = 0, rightCount = 0, flatCount = 0;
   for (int k = 0; k < n; ++k) {
     const Vec2& p = projected.screen[k];
     const Vec2& q = projected.screen[(k + 1) % n];
-    ea[k] = -(q.y() - p.y()) * orientation;
-    eb[k] = (q.x() - p.x()) * orientation;
-    ec[k] = -(ea[k] * p.x() + eb[k] * p.y());
+    Edge edge;
+    edge.a = -(q.y() - p.y()) * orientation;
+    edge.b = (q.x() - p.x()) * orientation;
+    edge.c = -(edge.a * p.x() + edge.b * p.y());
     // Clipping through a frustum corner can leave two vertices a rounding error apart: such an edge has
-    // no direction, and its half-plane (-rest / ea with ea ~ 1e-17) would empty whole rows at random.
-    if ((q - p).squaredNorm() < 1e-18) ea[k] = eb[k] = ec[k] = 0.0;
-    inverseEa[k] = ea[k] != 0 ? 1.0 / ea[k] : 0.0;  // one division per edge, not per edge and row
+    // no direction, and its half-plane (-rest / a with a ~ 1e-17) would empty whole rows at random.
+    if ((q - p).squaredNorm() < 1e-18) edge.a = edge.b = edge.c = 0.0;
+    edge.inverseA = edge.a != 0 ? 1.0 / edge.a : 0.0;  // one division per edge, not per edge and row
+    if (edge.a > 0)
+      lefts[leftCount++] = edge;
+    else if (edge.a < 0)
+      rights[rightCount++] = edge;
+    else
+      flats[flatCount++] = edge;
   }
   for (int row = r0; row <= r1; ++row) {
     const double y = row + 0.5;
+    bool empty = false;
+    for (int k = 0; k < flatCount; ++k) empty |= flats[k].b * y + flats[k].c < -1e-9;
+    if (empty) continue;
     // Span of the row: intersect the half-planes along x.
     double lo = c0 + 0.5, hi = c1 + 0.5;
-    bool empty = false;
-    for (int k = 0; k < n && !empty; ++k) {
-      const double rest = eb[k] * y + ec[k];
-      if (ea[k] > 0)
-        lo = std::max(lo, -rest * inverseEa[k]);
-      else if (ea[k] < 0)
-        hi = std::min(hi, -rest * inverseEa[k]);
-      else if (rest < -1e-9)
-        empty = true;
-    }
-    if (empty) return;
+    for (int k = 0; k < leftCount; ++k) lo = std::max(lo, -(lefts[k].b * y + lefts[k].c) * lefts[k].inverseA);
+    for (int k = 0; k < rightCount; ++k)
+      hi = std::min(hi, -(rights[k].b * y + rights[k].c) * rights[k].inverseA);
     // A pixel centre exactly on an edge shared by two elements must not fall through both (rounding in
     // the divisions above): widen the span by a hair; the z-buffer settles the double coverage.
     lo -= 1e-7, hi += 1e-7;
