@@ -162,6 +162,27 @@ TEST_F(Scaling, ClusterBoxesAtADepthCoverEveryElementAndDoubleWithTheDepth) {
   }
 }
 
+// The depth only cuts the tree the figure draws: a reader's change of it reuses the measurements, whose
+// times would otherwise differ from run to run, and a change of the meshes measures again.
+TEST_F(Scaling, AChangeOfTheClusterDepthKeepsTheMeasurements) {
+  StepRunner runner(test::repoFolders().scenes, RunOptions{.quick = true});
+  Step step = test::stepWithFigure(clustering_, "links");
+  step.parameters.subdivisions = {2, 3};
+  step.parameters.clusterDepth = 3;
+  const StepResult first = runner.run(clustering_, step);
+  step.parameters.clusterDepth = 1;
+  const StepResult again = runner.run(clustering_, step);
+  ASSERT_TRUE(first.scaling && again.scaling);
+  EXPECT_EQ(*again.value("seconds.formfactors[1]"), *first.value("seconds.formfactors[1]"));
+  EXPECT_EQ(*again.value("links[1]"), *first.value("links[1]"));
+  EXPECT_EQ(again.scaling->points.size(), first.scaling->points.size());
+  EXPECT_EQ(again.scaling->boxes.size(), std::size_t{2}) << "the new depth is drawn";
+  EXPECT_EQ(*again.value("clusters"), 2.0);
+  step.parameters.subdivisions = {2, 4};
+  const StepResult other = runner.run(clustering_, step);
+  EXPECT_NE(*other.value("elements[1]"), *first.value("elements[1]")) << "other meshes are measured";
+}
+
 TEST_F(Scaling, LocalLinesNoiseFallsAsOneOverRootRays) {
   StepRunner runner(test::repoFolders().scenes);
   const Step& step = test::stepWithFigure(lesson_, "lines-noise");
