@@ -18,6 +18,10 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
+// The live views' scripts from src/web/page, in the order a page loads them (after three.js and the core):
+// the worker's text, then the views that start it. Copied into the site and named by every page from here.
+constexpr const char* kPageScripts[] = {"live_worker.js", "live_view.js"};
+
 std::string readText(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path.string() + ": cannot read");
@@ -136,9 +140,11 @@ std::string playgroundHtml() {
       "class=\"playground-download\" data-kind=\"F-npy\" hidden>Download F (NPY)</button></p>\n<p "
       "id=\"playground-status\">No scene yet.</p>\n"
       "<div id=\"playground-view\"></div>\n</div>\n";
-  for (const char* script :
-       {"three.min.js", "OrbitControls.js", "radiosity-core.js", "live_view.js", "playground.js"})
+  for (const char* script : {"three.min.js", "OrbitControls.js", "radiosity-core.js"})
     html += "<script src=\"web/" + std::string(script) + "\"></script>\n";
+  for (const char* script : kPageScripts)
+    html += "<script src=\"web/" + std::string(script) + "\"></script>\n";
+  html += "<script src=\"web/playground.js\"></script>\n";
   return html + "</body>\n</html>\n";
 }
 
@@ -160,7 +166,9 @@ int writeWebEdition(const std::string& output, const std::vector<lesson::Rendere
   copyAsset(fs::path(assets.three) / "three.min.js", web / "three.min.js", three);
   copyAsset(fs::path(assets.three) / "examples/js/controls/OrbitControls.js", web / "OrbitControls.js",
             three);
-  for (const char* page : {"live_view.js", "live_view.css", "playground.js"})
+  for (const char* page : kPageScripts)
+    copyAsset(fs::path(assets.pageFiles) / page, web / page, "the source tree's src/web/page");
+  for (const char* page : {"live_view.css", "playground.js"})
     copyAsset(fs::path(assets.pageFiles) / page, web / page, "the source tree's src/web/page");
   writeText(out / "playground.html", playgroundHtml());
   // The contents page links to the playground.
@@ -202,8 +210,10 @@ int writeWebEdition(const std::string& output, const std::vector<lesson::Rendere
     if (headEnd != std::string::npos) html.replace(headEnd, 7, head);
     std::string scripts;
     for (const std::string& script : {std::string("three.min.js"), std::string("OrbitControls.js"),
-                                      std::string("radiosity-core.js"), data, std::string("live_view.js")})
+                                      std::string("radiosity-core.js"), data})
       scripts += "<script src=\"web/" + script + "\"></script>\n";
+    for (const char* script : kPageScripts)
+      scripts += "<script src=\"web/" + std::string(script) + "\"></script>\n";
     const std::size_t bodyEnd = html.rfind("</body>");
     html.insert(bodyEnd == std::string::npos ? html.size() : bodyEnd, scripts);
     writeText(pagePath, html);

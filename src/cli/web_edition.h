@@ -16,7 +16,7 @@ namespace rt::cli {
 struct WebAssets {
   std::string module;     // radiosity-core.js, the wasm preset's build
   std::string three;      // libjs-three's folder: three.min.js, examples/js/controls/OrbitControls.js
-  std::string pageFiles;  // src/web/page: live_view.js, live_view.css
+  std::string pageFiles;  // src/web/page: live_worker.js, live_view.js, live_view.css, playground.js
 };
 
 // Where this build found them (their absence is reported by writeWebEdition, with what to do).

@@ -39,7 +39,7 @@ class WebSession {
   // {"error": message}. `progress` hears how far the computation is (the page's progress bar).
   std::string run(Progress& progress = noProgress());
 
-  // F's rows spread over workers that share no memory (the pages' Web Workers, live_view.js). rowPlan()
+  // F's rows spread over workers that share no memory (the pages' Web Workers, live_worker.js). rowPlan()
   // meshes the configured step and returns how many rows F has to be computed apart, 0 when there is nothing
   // to spread (F is cached, the method's rows are not independent, the run needs no F or only rescales the
   // light). formFactorRows(begin, end) computes rows [begin, end) of that mesh's F (row-major), bit for bit

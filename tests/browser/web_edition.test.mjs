@@ -395,7 +395,7 @@ for (const file of pages) {
   }
 
   // A new mesh of about 4,500 elements (the subdivision changed from 7 to 15): F's rows computed by one
-  // worker and spread over several (live_view.js) give the same B, bit for bit; each session is new (a file
+  // worker and spread over several (live_worker.js) give the same B, bit for bit; each session is new (a file
   // name of its own), so that neither finds F cached.
   const spread = await page.evaluate(async (scene) => {
     const run = async (workers) => {
