@@ -599,8 +599,8 @@ void applyStepValue(StepParameters& p, const StepKey& key, const std::string& na
   }
   // A key's bounds are doubles (ff-budget's reaches 1e15); only integer slots read them as ints, clamped.
   const auto asIntBound = [](double v) {
-    return static_cast<int>(std::clamp(v, double(std::numeric_limits<int>::min()),
-                                       double(std::numeric_limits<int>::max())));
+    return static_cast<int>(
+        std::clamp(v, double(std::numeric_limits<int>::min()), double(std::numeric_limits<int>::max())));
   };
   const int lo = asIntBound(key.min), hi = asIntBound(key.max);
   std::visit(

@@ -77,7 +77,8 @@ TEST(StepKeys, ABoundPastAnIntsRangeIsReadOnlyByDoubleKeys) {
   StepParameters p;
   applyStepValue(p, *findStepKey("ff-budget"), "ff-budget", "1e15", {"x.md", 3});
   EXPECT_DOUBLE_EQ(p.formFactorBudget.value_or(0), 1e15);
-  EXPECT_THROW(applyStepValue(p, *findStepKey("ff-budget"), "ff-budget", "2e15", {"x.md", 4}), rt::InputError);
+  EXPECT_THROW(applyStepValue(p, *findStepKey("ff-budget"), "ff-budget", "2e15", {"x.md", 4}),
+               rt::InputError);
 }
 
 TEST(StepKeys, ALessonCanOnlyNameControlsThatExist) {

@@ -63,11 +63,16 @@ FrustumPlanes frustumPlanes(const HemicubeFaceAxes& face, double margin) {
 // axes and their opposites, so a permutation with signs (exact) instead of three dot products.
 inline Vec3 toFace(int face, const Vec3& p) {
   switch (face) {
-    case 0: return p;
-    case 1: return {p.y(), p.z(), p.x()};
-    case 2: return {-p.x(), p.z(), p.y()};
-    case 3: return {-p.y(), p.z(), -p.x()};
-    default: return {p.x(), p.z(), -p.y()};
+    case 0:
+      return p;
+    case 1:
+      return {p.y(), p.z(), p.x()};
+    case 2:
+      return {-p.x(), p.z(), p.y()};
+    case 3:
+      return {-p.y(), p.z(), -p.x()};
+    default:
+      return {p.x(), p.z(), -p.y()};
   }
 }
 
@@ -80,7 +85,6 @@ bool sphereOutsideFrustum(const Vec3& centreOnFace, double radius, const Frustum
          low * z - y > radius * lowNorm;
 }
 
-
 // ---- The stages of one hemicube: the eye's frame, then per element its corners in that frame and a bounding
 // sphere, per face the polygon clipped to the face's frustum, and its scan conversion into the z-buffer.
 
@@ -92,14 +96,15 @@ struct ElementInEye {
   int count = 0;
   Vec3 centre;
   double radius = 0;
-  Vec3 m;          // the plane m . p = c, in the eye's frame
+  Vec3 m;  // the plane m . p = c, in the eye's frame
   double c = 0;
   int id = kHemicubeSeesNothing;  // the element, or kHemicubeSeesBackFace when it turns its back to the eye
 };
 
 // False when element j covers no pixel: edge-on to the eye or entirely below its horizon.
-RT_HEMICUBE_STAGE bool elementInEye(const Mesh& mesh, int j, const HemicubeFaces& eye, const std::vector<Vec3>& localVertices,
-                  double near, double eyeEps, ElementInEye& out) {
+RT_HEMICUBE_STAGE bool elementInEye(const Mesh& mesh, int j, const HemicubeFaces& eye,
+                                    const std::vector<Vec3>& localVertices, double near, double eyeEps,
+                                    ElementInEye& out) {
   const Element& other = mesh.elements[j];
   const Vec3& anchor = mesh.vertices[other.vertices[0]];
   const double facing = other.normal.dot(eye.origin - anchor);
@@ -183,8 +188,7 @@ RT_HEMICUBE_STAGE void drawPolygon(const std::array<Vec3, 16>& clipped, int n, c
     const double x = (clipped[k].x() / clipped[k].z() + 1.0) * sx;
     const double y = (clipped[k].y() / clipped[k].z() - face.upMin) * sy;
     projected.screen[k] = Vec2(x, y);
-    xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y),
-    ymax = std::max(ymax, y);
+    xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y), ymax = std::max(ymax, y);
   }
   projected.count = n;
   const int c0 = std::max(0, static_cast<int>(std::ceil(xmin - 0.5)));

@@ -13,7 +13,9 @@ namespace {
 // Two lanes of f64x2: WebAssembly's SIMD (this file is built with -msimd128), two entries of F per step.
 struct Sums {
   v128_t lanes = wasm_f64x2_splat(0.0);
-  void add(v128_t f, const double* channel) { lanes = wasm_f64x2_add(lanes, wasm_f64x2_mul(f, wasm_v128_load(channel))); }
+  void add(v128_t f, const double* channel) {
+    lanes = wasm_f64x2_add(lanes, wasm_f64x2_mul(f, wasm_v128_load(channel)));
+  }
   double total() const { return wasm_f64x2_extract_lane(lanes, 0) + wasm_f64x2_extract_lane(lanes, 1); }
 };
 
@@ -66,7 +68,8 @@ Eigen::RowVector3d SweepState::gather(const FormFactorMatrix& F, Eigen::Index i,
     t1.add(v, l1 + j);
     t2.add(v, l2 + j);
   }
-  Eigen::RowVector3d lowerNow(s0.total(), s1.total(), s2.total()), lowerLast(t0.total(), t1.total(), t2.total());
+  Eigen::RowVector3d lowerNow(s0.total(), s1.total(), s2.total()),
+      lowerLast(t0.total(), t1.total(), t2.total());
   if (j < i) {
     lowerNow += f[j] * now_.row(j);
     lowerLast += f[j] * last_.row(j);
