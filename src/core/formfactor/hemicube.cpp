@@ -210,7 +210,7 @@ RT_HEMICUBE_STAGE void drawPolygon(const std::array<Vec3, 16>& clipped, int n, c
   double area2 = 0;
   for (int k = 0; k < n; ++k) {
     const Vec2& p = projected.screen[k];
-    const Vec2& q = projected.screen[(k + 1) % n];
+    const Vec2& q = projected.screen[k + 1 < n ? k + 1 : 0];
     area2 += p.x() * q.y() - q.x() * p.y();
   }
   if (area2 == 0) return;
@@ -225,7 +225,7 @@ RT_HEMICUBE_STAGE void drawPolygon(const std::array<Vec3, 16>& clipped, int n, c
   int leftCount = 0, rightCount = 0, flatCount = 0;
   for (int k = 0; k < n; ++k) {
     const Vec2& p = projected.screen[k];
-    const Vec2& q = projected.screen[(k + 1) % n];
+    const Vec2& q = projected.screen[k + 1 < n ? k + 1 : 0];
     Edge edge;
     edge.a = -(q.y() - p.y()) * orientation;
     edge.b = (q.x() - p.x()) * orientation;
