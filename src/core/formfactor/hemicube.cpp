@@ -59,8 +59,9 @@ FrustumPlanes frustumPlanes(const HemicubeFaceAxes& face, double margin) {
   return {w, low, std::sqrt(1 + w * w), std::sqrt(1 + low * low)};
 }
 
-// A point of the eye's frame in a face's coordinates (across, up, forward): the faces' axes are the frame's
-// axes and their opposites, so a permutation with signs (exact) instead of three dot products.
+// A point of the eye's frame in a face's coordinates (p . across, p . up, p . forward with the axes of
+// hemicubeFaceAxes below, face by face): those axes are the frame's axes and their opposites, so a
+// permutation with signs, exact, instead of three dot products.
 inline Vec3 toFace(int face, const Vec3& p) {
   switch (face) {
     case 0:
