@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "core/io/scene_loader.h"
 #include "lesson/book_html.h"
@@ -21,6 +22,18 @@ using Json = nlohmann::json;
 // The live views' scripts from src/web/page, in the order a page loads them (after three.js and the core):
 // the worker's text, then the views that start it. Copied into the site and named by every page from here.
 constexpr const char* kPageScripts[] = {"live_worker.js", "live_view.js"};
+
+// The <script> tags of a page with live views, in the order they load: three.js, the core, `steps` (a
+// lesson's live steps, if any), the live views' scripts, then `last` (the playground's, if any).
+std::string liveViewScripts(const std::string& steps, const std::string& last) {
+  std::vector<std::string> scripts = {"three.min.js", "OrbitControls.js", "radiosity-core.js"};
+  if (!steps.empty()) scripts.push_back(steps);
+  scripts.insert(scripts.end(), std::begin(kPageScripts), std::end(kPageScripts));
+  if (!last.empty()) scripts.push_back(last);
+  std::string tags;
+  for (const std::string& script : scripts) tags += "<script src=\"web/" + script + "\"></script>\n";
+  return tags;
+}
 
 std::string readText(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -140,12 +153,7 @@ std::string playgroundHtml() {
       "class=\"playground-download\" data-kind=\"F-npy\" hidden>Download F (NPY)</button></p>\n<p "
       "id=\"playground-status\">No scene yet.</p>\n"
       "<div id=\"playground-view\"></div>\n</div>\n";
-  for (const char* script : {"three.min.js", "OrbitControls.js", "radiosity-core.js"})
-    html += "<script src=\"web/" + std::string(script) + "\"></script>\n";
-  for (const char* script : kPageScripts)
-    html += "<script src=\"web/" + std::string(script) + "\"></script>\n";
-  html += "<script src=\"web/playground.js\"></script>\n";
-  return html + "</body>\n</html>\n";
+  return html + liveViewScripts("", "playground.js") + "</body>\n</html>\n";
 }
 
 }  // namespace
@@ -208,14 +216,8 @@ int writeWebEdition(const std::string& output, const std::vector<lesson::Rendere
     const std::string head = "<link rel=\"stylesheet\" href=\"web/live_view.css\">\n</head>";
     const std::size_t headEnd = html.find("</head>");
     if (headEnd != std::string::npos) html.replace(headEnd, 7, head);
-    std::string scripts;
-    for (const std::string& script : {std::string("three.min.js"), std::string("OrbitControls.js"),
-                                      std::string("radiosity-core.js"), data})
-      scripts += "<script src=\"web/" + script + "\"></script>\n";
-    for (const char* script : kPageScripts)
-      scripts += "<script src=\"web/" + std::string(script) + "\"></script>\n";
     const std::size_t bodyEnd = html.rfind("</body>");
-    html.insert(bodyEnd == std::string::npos ? html.size() : bodyEnd, scripts);
+    html.insert(bodyEnd == std::string::npos ? html.size() : bodyEnd, liveViewScripts(data, ""));
     writeText(pagePath, html);
   }
   return views;

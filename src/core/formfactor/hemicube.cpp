@@ -11,11 +11,6 @@
 #include "core/formfactor/analytic.h"
 #include "core/geometry/plane_clip.h"
 
-// Profiling builds may keep the stages apart (-DRT_HEMICUBE_STAGE='__attribute__((noinline))').
-#ifndef RT_HEMICUBE_STAGE
-#define RT_HEMICUBE_STAGE
-#endif
-
 namespace rt {
 namespace {
 
@@ -40,14 +35,6 @@ std::vector<double> computeDeltas(int resolution, HemicubeFace face) {
     }
   return deltas;
 }
-
-// One element projected onto one face, ready for scan conversion.
-struct ProjectedPolygon {
-  std::array<Vec2, 16> screen;  // in pixel units
-  int count = 0;
-  // Inverse depth is affine in the face's projective coordinates: 1/d = k0 * x + k1 * y + k2.
-  double k0 = 0, k1 = 0, k2 = 0;
-};
 
 // The four side planes of a face's frustum, widened by `margin` as the clipping below widens it, with the
 // lengths of their normals: made once per face, not once per element and face.
@@ -103,9 +90,8 @@ struct ElementInEye {
 };
 
 // False when element j covers no pixel: edge-on to the eye or entirely below its horizon.
-RT_HEMICUBE_STAGE bool elementInEye(const Mesh& mesh, int j, const HemicubeFaces& eye,
-                                    const std::vector<Vec3>& localVertices, double near, double eyeEps,
-                                    ElementInEye& out) {
+bool elementInEye(const Mesh& mesh, int j, const HemicubeFaces& eye, const std::vector<Vec3>& localVertices,
+                  double near, double eyeEps, ElementInEye& out) {
   const Element& other = mesh.elements[j];
   const Vec3& anchor = mesh.vertices[other.vertices[0]];
   const double facing = other.normal.dot(eye.origin - anchor);
@@ -135,8 +121,8 @@ RT_HEMICUBE_STAGE bool elementInEye(const Mesh& mesh, int j, const HemicubeFaces
 // widened: pixel centres lie at least half a pixel inside), so that projected coordinates stay bounded: the
 // near plane alone would leave points at depth ~0 projecting to ~1e9 pixels, where edge functions lose all
 // precision. Returns the number of corners in `clipped` (below 3: nothing to draw).
-RT_HEMICUBE_STAGE int clipToFace(const ElementInEye& e, int f, const HemicubeFaceAxes& face, double near,
-                                 std::array<Vec3, 16>& clipped) {
+int clipToFace(const ElementInEye& e, int f, const HemicubeFaceAxes& face, double near,
+               std::array<Vec3, 16>& clipped) {
   constexpr double margin = kFrustumMargin;
   // Outcodes against the five frustum planes: reject when all vertices are outside one of them, skip
   // clipping when all are inside every one (the common cases: then the corners go straight to `clipped`).
@@ -175,23 +161,21 @@ RT_HEMICUBE_STAGE int clipToFace(const ElementInEye& e, int f, const HemicubeFac
 
 // Scan conversion of a clipped polygon into face f's z-buffer: pixel centres inside every edge, nearest
 // (largest inverse depth) wins.
-RT_HEMICUBE_STAGE void drawPolygon(const std::array<Vec3, 16>& clipped, int n, const ElementInEye& e,
-                                   const HemicubeFaceAxes& face, HemicubeFaceBuffer& buffer,
-                                   std::vector<double>& zbuffer) {
+void drawPolygon(const std::array<Vec3, 16>& clipped, int n, const ElementInEye& e,
+                 const HemicubeFaceAxes& face, HemicubeFaceBuffer& buffer, std::vector<double>& zbuffer) {
   const Vec3& m = e.m;
   const double c = e.c;
   const int id = e.id;
   // Project to pixel units: x in [0, width), y in [0, height).
-  ProjectedPolygon projected;
+  std::array<Vec2, 16> screen;
   const double sx = buffer.width / 2.0, sy = buffer.height / (1.0 - face.upMin);
   double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
   for (int k = 0; k < n; ++k) {
     const double x = (clipped[k].x() / clipped[k].z() + 1.0) * sx;
     const double y = (clipped[k].y() / clipped[k].z() - face.upMin) * sy;
-    projected.screen[k] = Vec2(x, y);
+    screen[k] = Vec2(x, y);
     xmin = std::min(xmin, x), xmax = std::max(xmax, x), ymin = std::min(ymin, y), ymax = std::max(ymax, y);
   }
-  projected.count = n;
   const int c0 = std::max(0, static_cast<int>(std::ceil(xmin - 0.5)));
   const int c1 = std::min(buffer.width - 1, static_cast<int>(std::floor(xmax - 0.5)));
   const int r0 = std::max(0, static_cast<int>(std::ceil(ymin - 0.5)));
@@ -210,8 +194,8 @@ RT_HEMICUBE_STAGE void drawPolygon(const std::array<Vec3, 16>& clipped, int n, c
   // Orientation of the projected polygon, so that inside means all edge functions >= 0.
   double area2 = 0;
   for (int k = 0; k < n; ++k) {
-    const Vec2& p = projected.screen[k];
-    const Vec2& q = projected.screen[k + 1 < n ? k + 1 : 0];
+    const Vec2& p = screen[k];
+    const Vec2& q = screen[k + 1 < n ? k + 1 : 0];
     area2 += p.x() * q.y() - q.x() * p.y();
   }
   if (area2 == 0) return;
@@ -225,8 +209,8 @@ RT_HEMICUBE_STAGE void drawPolygon(const std::array<Vec3, 16>& clipped, int n, c
   std::array<Edge, 16> lefts, rights, flats;
   int leftCount = 0, rightCount = 0, flatCount = 0;
   for (int k = 0; k < n; ++k) {
-    const Vec2& p = projected.screen[k];
-    const Vec2& q = projected.screen[k + 1 < n ? k + 1 : 0];
+    const Vec2& p = screen[k];
+    const Vec2& q = screen[k + 1 < n ? k + 1 : 0];
     Edge edge;
     edge.a = -(q.y() - p.y()) * orientation;
     edge.b = (q.x() - p.x()) * orientation;
