@@ -5,7 +5,10 @@
 
 #include "core/formfactor/analytic.h"
 
-#if defined(__x86_64__)
+// The vector path needs GCC: clang (14) passes a declared function's __m256d arguments on the stack whatever
+// its target attribute, where libmvec reads them from ymm0 and ymm1, so every lane would come back wrong.
+#if defined(__x86_64__) && !defined(__clang__)
+#define RT_LAMBERT_FOUR_AVX2 1
 #include <immintrin.h>
 // libmvec's four-lane atan2 for AVX2 (glibc 2.35 and later): the vector ABI name GCC itself would call.
 extern "C" __attribute__((target("avx2"))) __m256d _ZGVdN4vv_atan2(__m256d y, __m256d x);
@@ -14,7 +17,7 @@ extern "C" __attribute__((target("avx2"))) __m256d _ZGVdN4vv_atan2(__m256d y, __
 namespace rt {
 namespace {
 
-#if defined(__x86_64__)
+#if defined(RT_LAMBERT_FOUR_AVX2)
 const bool kVectorised = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 
 // Coordinate `axis` of corner index[p] of each polygon p, from its point.
@@ -69,7 +72,7 @@ bool lambertFourIsVectorised() {
 
 void lambertContourSum4(const Vec3* points, const Vec3& normal, const Vec3* const* polygons,
                         const int* counts, double* out) {
-#if defined(__x86_64__)
+#if defined(RT_LAMBERT_FOUR_AVX2)
   if (kVectorised) {
     sum4(points, normal, polygons, counts, out);
     return;

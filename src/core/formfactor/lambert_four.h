@@ -1,8 +1,9 @@
 // Lambert's contour sum at four points at once, each over its own polygon: the four points of a 2 x 2 rule
 // over one receiver or over a cell whose hidden part keeps one form (ShadowClipper::HiddenForm), or the
-// hidden pieces of four points. The arctangents dominate Lambert's sum; with AVX2 the four of each edge are
-// one vector call (glibc's libmvec, within 4 ulp), otherwise the four sums are taken one by one. Polygons
-// of fewer corners than the others are padded with their first corner, whose edges of no length add nothing.
+// hidden pieces of four points. The arctangents dominate Lambert's sum; with AVX2 (in a GCC build) the four
+// of each edge are one vector call (glibc's libmvec, within 4 ulp), otherwise the four sums are taken one by
+// one. Polygons of fewer corners than the others are padded with their first corner, whose edges of no length
+// add nothing.
 #pragma once
 
 #include "core/vec.h"
