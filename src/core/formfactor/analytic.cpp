@@ -93,9 +93,12 @@ double singularityDistance(const Segment& a, double s0, double s1, const Singula
 // Number of Gauss-Legendre points for a panel whose nearest singularity is `ratio` panel lengths away: the
 // error of the n-point rule decays like rho^-2n with rho the Bernstein ellipse through that singularity
 // (worst case: above the panel's middle). Aim at 1e-16.
+// A panel on a singularity (ratio 0) comes only from the recursion's floor, 1e-15 of the edge long: its share
+// is below rounding, and the lowest order does.
 int pointsForRatio(double ratio) {
+  if (!(ratio > 0)) return 4;
   const double rho = 2 * ratio + std::sqrt(1 + 4 * ratio * ratio);
-  return std::clamp(static_cast<int>(std::ceil(18.5 / std::log(rho))), 4, 24);
+  return static_cast<int>(std::clamp(std::ceil(18.5 / std::log(rho)), 4.0, 24.0));
 }
 
 double integratePanel(const Segment& a, const Segment& b, double s0, double s1, double distance) {
