@@ -153,13 +153,14 @@ void addFigureCommand(CLI::App& app) {
   command->add_option("--x", a->request.xAxis, "convergence: iteration or time")
       ->capture_default_str()
       ->check(CLI::IsMember({"iteration", "time"}));
-  command->callback([a, command] {
+  // The callback holds `a`: the options above write into it after this function returns.
 #ifdef RT_HAVE_VIZ
-    run(*a, *command);
+  command->callback([a, command] { run(*a, *command); });
 #else
+  command->callback([a] {
     throw std::runtime_error("'figure' needs the visualisation library (configure with RT_BUILD_VIZ=ON)");
-#endif
   });
+#endif
 }
 
 }  // namespace rt::cli
