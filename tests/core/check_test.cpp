@@ -19,12 +19,23 @@ TEST(Checks, AreOnInTheTestBuilds) {
   EXPECT_TRUE(checksEnabled()) << "configure with RT_CHECKS=ON (the dev and asan presets do)";
 }
 
+TEST(Checks, OnePassGivesEveryRowsSumAndThePairsThatSeeEachOther) {
+  FormFactorMatrix F = FormFactorMatrix::Zero(3, 3);
+  F(0, 1) = 0.25, F(0, 2) = 0.5, F(2, 0) = 0.125;
+  const RowSums rows = sumRows(F);
+  ASSERT_EQ(rows.sums.size(), 3);
+  EXPECT_EQ(rows.sums[0], 0.75);
+  EXPECT_EQ(rows.sums[1], 0.0);
+  EXPECT_EQ(rows.sums[2], 0.125);
+  EXPECT_EQ(rows.positive, 3u);
+}
+
 TEST(Checks, RowSumAboveTheBoundIsACheckFailure) {
   if (!checksEnabled()) GTEST_SKIP() << "checks are off in this build";
   FormFactorMatrix F = FormFactorMatrix::Zero(2, 2);
   F(1, 0) = 1.5;
   try {
-    checkRowSumsAtMost(F, 1.0, "hemicube");
+    checkRowSumsAtMost(sumRows(F), 1.0, "hemicube");
     ADD_FAILURE();
   } catch (const CheckFailure& e) {
     EXPECT_NE(std::string(e.what()).find("internal check failed"), std::string::npos) << e.what();

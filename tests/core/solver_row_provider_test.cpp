@@ -71,6 +71,29 @@ TEST(RowProvider, HemicubeRowsAreTheHemicubeMatrixRows) {
   }
 }
 
+TEST(RowProvider, HemicubeRowsMakeTheMatrixWithTheCountsAndNotesOfCompute) {
+  const RoomWithBlock room;
+  FormFactorOptions options;
+  options.hemicubeResolution = 48;
+  const auto method = makeFormFactorMethod("hemicube");
+  FormFactorStats computed, gathered;
+  const FormFactorMatrix F = method->compute(room.mesh, options, noProgress(), computed);
+  const FormFactorRowProvider rows = makeRowProvider("hemicube", room.mesh, options);
+  FormFactorMatrix apart = FormFactorMatrix::Zero(F.rows(), F.cols());
+  Eigen::VectorXd row;
+  for (int i = 0; i < static_cast<int>(room.mesh.size()); ++i) {
+    rows(i, row);
+    apart.row(i) = row.transpose();
+  }
+  const FormFactorMatrix made = method->fromRows(std::move(apart), room.mesh, options, gathered);
+  EXPECT_EQ(made, F);
+  EXPECT_EQ(gathered.pairsComputed, static_cast<std::size_t>((F.array() > 0).count()));
+  EXPECT_GT(gathered.pairsComputed, 0u);
+  EXPECT_EQ(gathered.pairsComputed, computed.pairsComputed);
+  EXPECT_EQ(gathered.notes, computed.notes);
+  EXPECT_EQ(gathered.warnings, computed.warnings);
+}
+
 TEST(RowProvider, RaycastRowsAreTheRaycastMatrixRows) {
   const RoomWithBlock room;
   FormFactorOptions options;

@@ -22,13 +22,30 @@ FormFactorMatrix zeroFormFactorMatrix(Eigen::Index n) {
   return FormFactorMatrix::Zero(n, n);
 }
 
-void checkRowSumsAtMost(const FormFactorMatrix& F, double bound, const std::string& method) {
+RowSums sumRows(const FormFactorMatrix& F) {
+  RowSums out;
+  out.sums.resize(F.rows());
+  for (Eigen::Index i = 0; i < F.rows(); ++i) {
+    const double* row = F.row(i).data();
+    double sum = 0;
+    std::size_t positive = 0;
+    for (Eigen::Index j = 0; j < F.cols(); ++j) {
+      sum += row[j];
+      positive += row[j] > 0 ? 1 : 0;
+    }
+    out.sums[i] = sum;
+    out.positive += positive;
+  }
+  return out;
+}
+
+void checkRowSumsAtMost(const RowSums& rows, double bound, const std::string& method) {
   if (!checksEnabled()) return;
   // A sum of n correctly rounded terms may gather up to n half-ulps: the bound allows for that arithmetic,
   // and only for it.
-  const double rounding = static_cast<double>(F.cols()) * std::numeric_limits<double>::epsilon();
-  for (Eigen::Index i = 0; i < F.rows(); ++i) {
-    const double sum = F.row(i).sum();
+  const double rounding = static_cast<double>(rows.sums.size()) * std::numeric_limits<double>::epsilon();
+  for (Eigen::Index i = 0; i < rows.sums.size(); ++i) {
+    const double sum = rows.sums[i];
     RT_CHECK(sum <= bound * (1 + 1e-12 + rounding) + 1e-12, method + ": row " + std::to_string(i) +
                                                                 " of F sums to " + std::to_string(sum) +
                                                                 ", more than " + std::to_string(bound));

@@ -17,10 +17,18 @@ using FormFactorMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, E
 // gives n, the bytes needed and the machine's memory (a dense F grows as n^2: 100,000 elements need 75 GB).
 FormFactorMatrix zeroFormFactorMatrix(Eigen::Index n);
 
+// What the checks after a method read of every row, from one pass over F: a dense F of 5,000 elements is
+// 200 MB, so each pass costs as much as a sweep of the solve.
+struct RowSums {
+  Eigen::VectorXd sums;      // each row's sum
+  std::size_t positive = 0;  // entries > 0 (the pairs that see each other)
+};
+RowSums sumRows(const FormFactorMatrix& F);
+
 // RT_CHECK that no row of F sums to more than `bound` (+ rounding): the contract of the methods whose rows
-// are fractions of one set of samples (a hemicube's delta form factors, Monte Carlo's rays). O(n^2); a no-op
-// in builds without checks.
-void checkRowSumsAtMost(const FormFactorMatrix& F, double bound, const std::string& method);
+// are fractions of one set of samples (a hemicube's delta form factors, Monte Carlo's rays). A no-op in
+// builds without checks.
+void checkRowSumsAtMost(const RowSums& rows, double bound, const std::string& method);
 
 struct FormFactorDiagnostics {
   // Over the rows of elements that see something. An element that sees nothing (a block's bottom on the

@@ -34,7 +34,7 @@ constexpr double kRowSumSlack = 1e-6, kRowSumSlackWithRays = 1e-2;
 constexpr int kRowsNamed = 8;
 
 void addWarnings(const FormFactorMethod& method, const FormFactorOptions& options, const FormFactorMatrix& F,
-                 FormFactorStats& stats) {
+                 const RowSums& rows, FormFactorStats& stats) {
   if (stats.pairsOccludersIgnored > 0)
     stats.warnings.push_back(method.name() + " ignored occluders for " +
                              std::to_string(stats.pairsOccludersIgnored) +
@@ -44,8 +44,7 @@ void addWarnings(const FormFactorMethod& method, const FormFactorOptions& option
   std::vector<Eigen::Index> above;
   double largest = 0;
   for (Eigen::Index i = 0; i < F.rows(); ++i) {
-    double sum = 0;
-    for (Eigen::Index j = 0; j < F.cols(); ++j) sum += F(i, j);
+    const double sum = rows.sums[i];
     // The allowance is at least the slack (the methods' errors are never negative): only a row above it
     // asks the method for its entries' errors.
     if (!(sum > 1 + slack)) continue;
@@ -58,15 +57,15 @@ void addWarnings(const FormFactorMethod& method, const FormFactorOptions& option
     }
   }
   if (above.empty()) return;
-  std::string rows;
+  std::string named;
   for (std::size_t k = 0; k < above.size() && k < kRowsNamed; ++k)
-    rows += (k == 0 ? "" : ", ") + std::to_string(above[k]);
-  if (above.size() > kRowsNamed) rows += " and " + std::to_string(above.size() - kRowsNamed) + " more";
+    named += (k == 0 ? "" : ", ") + std::to_string(above[k]);
+  if (above.size() > kRowsNamed) named += " and " + std::to_string(above.size() - kRowsNamed) + " more";
   char line[200];
   std::snprintf(line, sizeof line,
                 "%zu of %ld rows of F sum to more than 1 (up to %.6g) beyond the method's stated error: "
                 "elements %s",
-                above.size(), static_cast<long>(F.rows()), largest, rows.c_str());
+                above.size(), static_cast<long>(F.rows()), largest, named.c_str());
   stats.warnings.push_back(std::string(line) +
                            ": those elements would pass on more light than leaves them, and the solve "
                            "overestimates. " +
@@ -90,7 +89,9 @@ FormFactorMatrix FormFactorMethod::compute(const Mesh& mesh, const FormFactorOpt
                                            Progress& progress, FormFactorStats& stats) const {
   const FormFactorOptions resolved = resolvedOptions(*this, options);
   FormFactorMatrix F = computeMatrix(mesh, resolved, progress, stats);
-  addWarnings(*this, resolved, F, stats);
+  const RowSums rows = sumRows(F);
+  checkRows(mesh, resolved, F, rows, stats);
+  addWarnings(*this, resolved, F, rows, stats);
   return F;
 }
 
@@ -103,13 +104,14 @@ FormFactorMatrix FormFactorMethod::fromRows(FormFactorMatrix F, const Mesh& mesh
     throw std::invalid_argument("form factors '" + name() + "': the rows given are not the mesh's");
   const FormFactorOptions resolved = resolvedOptions(*this, options);
   stats.elements = mesh.size();
-  checkRows(mesh, resolved, F, stats);
-  addWarnings(*this, resolved, F, stats);
+  const RowSums rows = sumRows(F);
+  checkRows(mesh, resolved, F, rows, stats);
+  addWarnings(*this, resolved, F, rows, stats);
   return F;
 }
 
 void FormFactorMethod::checkRows(const Mesh&, const FormFactorOptions&, const FormFactorMatrix&,
-                                 FormFactorStats&) const {}
+                                 const RowSums&, FormFactorStats&) const {}
 
 double FormFactorMethod::entryErrorBound(double, const FormFactorOptions&) const {
   return 0;

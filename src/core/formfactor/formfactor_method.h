@@ -103,9 +103,10 @@ class FormFactorMethod {
   virtual bool readsOnlyItsKnob() const { return false; }
   virtual FormFactorMatrix computeMatrix(const Mesh& mesh, const FormFactorOptions& options,
                                          Progress& progress, FormFactorStats& stats) const = 0;
-  // What a method with independent rows checks and counts on its whole matrix (computeMatrix calls it too).
+  // What a method checks and counts on its whole matrix, after computeMatrix or fromRows, with the sums of
+  // F's rows from the one pass that all the checks share.
   virtual void checkRows(const Mesh& mesh, const FormFactorOptions& options, const FormFactorMatrix& F,
-                         FormFactorStats& stats) const;
+                         const RowSums& rows, FormFactorStats& stats) const;
 };
 
 using FormFactorMethodFactory = std::function<std::unique_ptr<FormFactorMethod>()>;

@@ -46,22 +46,21 @@ class HemicubeMethod : public FormFactorMethod {
       hemicubeRow(mesh, i, resolution, workspace, row.data());
       std::copy(row.begin(), row.end(), F.row(i).data());
     });
-    checkRows(mesh, options, F, stats);
     return F;
   }
 
  protected:
-  void checkRows(const Mesh&, const FormFactorOptions& options, const FormFactorMatrix& F,
+  void checkRows(const Mesh&, const FormFactorOptions& options, const FormFactorMatrix&, const RowSums& rows,
                  FormFactorStats& stats) const override {
     const int resolution = std::max(2, options.hemicubeResolution);
-    stats.pairsComputed = static_cast<std::size_t>((F.array() > 0).count());
+    stats.pairsComputed = rows.positive;
     stats.notes =
         "hemicube " + std::to_string(resolution) + "x" + std::to_string(resolution) + " at centroids";
     // A row distributes the hemicube's pixels: it cannot exceed their delta form factors' total (~1).
     double pixels = 0;
     for (int f = 0; f < 5; ++f)
       for (double d : deltaFormFactors(resolution, static_cast<HemicubeFace>(f))) pixels += d;
-    checkRowSumsAtMost(F, pixels, "hemicube");
+    checkRowSumsAtMost(rows, pixels, "hemicube");
   }
 };
 

@@ -85,8 +85,13 @@ class MonteCarloMethod : public FormFactorMethod {
                });
     stats.notes = std::to_string(samples) + " cosine-distributed " +
                   (options.sampling == LineSampling::Sobol ? "Sobol " : "") + "rays/element";
-    checkRowSumsAtMost(F, 1.0, "montecarlo");  // each ray lands on at most one element
     return F;
+  }
+
+ protected:
+  void checkRows(const Mesh&, const FormFactorOptions&, const FormFactorMatrix&, const RowSums& rows,
+                 FormFactorStats&) const override {
+    checkRowSumsAtMost(rows, 1.0, "montecarlo");  // each ray lands on at most one element
   }
 };
 

@@ -37,9 +37,13 @@ inline Eigen::RowVector3d rowTimes(const double* f, const RgbField& B, Eigen::In
 
 }  // namespace
 
-RgbField productWithF(const FormFactorMatrix& F, const RgbField& B) {
+RgbField productWithF(const FormFactorMatrix& F, const RgbField& B, Eigen::VectorXd* rowSums) {
   RgbField out(F.rows(), 3);
-  for (Eigen::Index i = 0; i < F.rows(); ++i) out.row(i) = rowTimes(F.row(i).data(), B, 0, F.cols());
+  if (rowSums) rowSums->resize(F.rows());
+  for (Eigen::Index i = 0; i < F.rows(); ++i) {
+    out.row(i) = rowTimes(F.row(i).data(), B, 0, F.cols());
+    if (rowSums) (*rowSums)[i] = F.row(i).sum();  // the row is in the cache now
+  }
   return out;
 }
 
@@ -92,10 +96,14 @@ RgbField SweepState::current() const {
 
 #else
 
-RgbField productWithF(const FormFactorMatrix& F, const RgbField& B) {
+RgbField productWithF(const FormFactorMatrix& F, const RgbField& B, Eigen::VectorXd* rowSums) {
   // Row by row: Eigen's product of the whole matrix with three columns takes twice as long.
   RgbField out(F.rows(), 3);
-  for (Eigen::Index i = 0; i < F.rows(); ++i) out.row(i).noalias() = F.row(i) * B;
+  if (rowSums) rowSums->resize(F.rows());
+  for (Eigen::Index i = 0; i < F.rows(); ++i) {
+    out.row(i).noalias() = F.row(i) * B;
+    if (rowSums) (*rowSums)[i] = F.row(i).sum();  // the row is in the cache now
+  }
   return out;
 }
 

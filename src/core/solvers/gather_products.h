@@ -12,8 +12,8 @@
 
 namespace rt::solver_detail {
 
-// F B (n x 3), row by row.
-RgbField productWithF(const FormFactorMatrix& F, const RgbField& B);
+// F B (n x 3), row by row; with `rowSums`, also each row's sum from the same reading of the row.
+RgbField productWithF(const FormFactorMatrix& F, const RgbField& B, Eigen::VectorXd* rowSums = nullptr);
 
 // B during a Gauss-Seidel sweep: this sweep's values of the rows already updated, the last sweep's of the
 // rest, and (when the product is asked for) the last sweep's of every row.

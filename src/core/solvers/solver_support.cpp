@@ -34,8 +34,10 @@ double totalEmittedPower(const RadiositySystem& system) {
 GatherRecorder::GatherRecorder(const RadiositySystem& system)
     : system_(system), emitted_(totalEmittedPower(system)) {
   const FormFactorMatrix& F = *system.F;
-  absorbing_ = system.areas.asDiagonal() * productWithF(F, (1.0 - system.reflectance.array()).matrix());
-  escaping_ = (system.areas.array() * (1.0 - F.rowwise().sum().array())).matrix();
+  Eigen::VectorXd rowSums;
+  absorbing_ =
+      system.areas.asDiagonal() * productWithF(F, (1.0 - system.reflectance.array()).matrix(), &rowSums);
+  escaping_ = (system.areas.array() * (1.0 - rowSums.array())).matrix();
 }
 
 IterationRecord GatherRecorder::operator()(const RgbField& B, const RgbField& FB, int iteration,

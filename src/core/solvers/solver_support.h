@@ -18,9 +18,9 @@ SolverStatus validate(const RadiositySystem& system, bool needMatrix);
 
 // The record of an iteration for methods that keep no unshot radiosity (exact residual and power balance
 // of B), at the cost of the product F B the residual needs (a Jacobi sweep reuses it): what the absorbed and
-// escaped power weigh B by does not change with B, so it is computed once per solve. Each record otherwise
-// took four passes over F (the residual, the incident irradiance F^T A B, the row sums, the sweep), and F of
-// 5,000 elements is 200 MB.
+// escaped power weigh B by does not change with B, so it is computed once per solve, in one pass over F.
+// Each record otherwise took four passes over F (the residual, the incident irradiance F^T A B, the row
+// sums, the sweep), and F of 5,000 elements is 200 MB.
 class GatherRecorder {
  public:
   explicit GatherRecorder(const RadiositySystem& system);
