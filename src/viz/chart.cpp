@@ -234,6 +234,9 @@ void writeLineChart(const std::vector<Series>& series, const ChartOptions& optio
   chart->GetLegend()->SetHorizontalAlignment(horizontal);
   chart->GetLegend()->SetVerticalAlignment(vertical);
   chart->GetLegend()->SetLabelSize(static_cast<int>(fontSize * 0.85));
+  // VTK's 5 pixels around the labels are for its small default font: at these sizes a viewer whose sans serif
+  // is wider than VTK's (rsvg, browsers) puts the longest label against the legend's border.
+  chart->GetLegend()->SetPadding(std::max(5, static_cast<int>(fontSize / 3)));
   chart->GetLegend()->GetLabelProperties()->SetColor(0.05, 0.05, 0.05);
   if (figureFormatOf(path) != FigureFormat::Png) {
     // The plot area as laid out on screen, kept for the vector exporters: VTK 9.1's PDF device measures a
