@@ -135,6 +135,34 @@ TEST(Hemicube, BackToBackPolygonsShowTheirFrontFace) {
   }
 }
 
+// Rows drawn one after another in one workspace, from the mesh's flat records, are the rows of hemicubes
+// drawn one by one: nothing of the last eye's buffers is left in the next.
+TEST(Hemicube, RowsFromOneWorkspaceAreTheOneByOneRows) {
+  const Mesh mesh = test::meshOf(test::roomWithBlock(), 3);
+  const HemicubeMesh elements(mesh);
+  HemicubeWorkspace workspace;
+  std::vector<double> reused(mesh.size()), alone(mesh.size());
+  for (int i : {0, 17, 5, 53, 0}) {
+    hemicubeRow(elements, i, 24, workspace, reused.data());
+    std::fill(alone.begin(), alone.end(), 0.0);
+    accumulateHemicubeRow(renderHemicube(mesh, i, 24), alone.data());
+    EXPECT_EQ(reused, alone) << i;
+  }
+}
+
+// The records hold at most 8 corners (a convex patch kept whole has up to 8): more is refused by name.
+TEST(Hemicube, AnElementOfMoreThanEightCornersIsRefusedByName) {
+  Mesh mesh = test::meshOf(test::roomWithBlock(), 1);
+  Element& e = mesh.elements[2];
+  while (e.vertices.size() < 9) e.vertices.push_back(e.vertices[0]);
+  try {
+    const HemicubeMesh elements(mesh);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("element 2 has 9 corners"), std::string::npos) << error.what();
+  }
+}
+
 TEST(Nusselt, OutlineAreaConvergesToLambertQuadratically) {
   const Polygon square = {{-0.3, -0.2, 1}, {-0.3, 0.6, 1.4}, {0.7, 0.6, 1.4}, {0.7, -0.2, 1}};
   const Vec3 point = Vec3::Zero(), normal(0, 0, 1);

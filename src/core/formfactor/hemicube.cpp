@@ -3,38 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
-#include <memory>
-#include <mutex>
 #include <stdexcept>
+#include <string>
+#include <tuple>
 
-#include "core/formfactor/analytic.h"
 #include "core/geometry/plane_clip.h"
 
 namespace rt {
 namespace {
-
-int heightOf(int resolution, HemicubeFace face) {
-  return face == HemicubeFace::Top ? resolution : hemicubeSideRows(resolution);
-}
-
-std::vector<double> computeDeltas(int resolution, HemicubeFace face) {
-  const HemicubeFaceAxes axes = hemicubeFaceAxes(face);
-  const int width = resolution, height = heightOf(resolution, face);
-  const double du = 2.0 / width, dv = (1.0 - axes.upMin) / height;
-  std::vector<double> deltas(static_cast<std::size_t>(width) * height);
-  const Vec3 eye = Vec3::Zero(), normal(0, 0, 1);
-  for (int row = 0; row < height; ++row)
-    for (int column = 0; column < width; ++column) {
-      const double a0 = -1 + column * du, a1 = a0 + du;
-      const double b0 = axes.upMin + row * dv, b1 = b0 + dv;
-      auto corner = [&](double a, double b) { return Vec3(a * axes.across + b * axes.up + axes.forward); };
-      const Polygon pixel = {corner(a0, b0), corner(a1, b0), corner(a1, b1), corner(a0, b1)};
-      deltas[static_cast<std::size_t>(row) * width + column] =
-          std::abs(lambertContourSum(eye, normal, pixel));
-    }
-  return deltas;
-}
 
 // The four side planes of a face's frustum, widened by `margin` as the clipping below widens it, with the
 // lengths of their normals: made once per face, not once per element and face.
@@ -90,14 +66,14 @@ struct ElementInEye {
 };
 
 // False when element j covers no pixel: edge-on to the eye or entirely below its horizon.
-bool elementInEye(const Mesh& mesh, int j, const HemicubeFaces& eye, const std::vector<Vec3>& localVertices,
-                  double near, double eyeEps, ElementInEye& out) {
-  const Element& other = mesh.elements[j];
-  const Vec3& anchor = mesh.vertices[other.vertices[0]];
+bool elementInEye(const HemicubeMesh& mesh, int j, const HemicubeFaces& eye,
+                  const std::vector<Vec3>& localVertices, double near, double eyeEps, ElementInEye& out) {
+  const HemicubeMesh::Record& other = mesh.elements[j];
+  const Vec3& anchor = mesh.mesh.vertices[other.vertices[0]];
   const double facing = other.normal.dot(eye.origin - anchor);
   if (std::abs(facing) <= eyeEps) return false;  // edge-on: covers no pixel centre
   out.id = facing > 0 ? j : kHemicubeSeesBackFace;
-  out.count = static_cast<int>(other.vertices.size());
+  out.count = other.count;
   bool above = false;
   for (int k = 0; k < out.count; ++k) {
     out.local[k] = localVertices[other.vertices[k]];
@@ -144,7 +120,9 @@ int clipToFace(const ElementInEye& e, int f, const HemicubeFaceAxes& face, doubl
   auto clipBy = [&](auto distance) {
     if (n < 3) return;
     std::array<double, 16> heights;
-    for (int k = 0; k < n; ++k) heights[k] = distance(in[k]);
+    bool cut = false;
+    for (int k = 0; k < n; ++k) heights[k] = distance(in[k]), cut |= heights[k] < 0;
+    if (!cut) return;  // every corner kept, in order: the cut would only copy the polygon
     int m = 0;
     cutByHeights(
         in.data(), heights.data(), n, [&](const Vec3& p) { clipped[m++] = p; }, [](const Vec3&) {});
@@ -178,8 +156,8 @@ void drawPolygon(const std::array<Vec3, 16>& clipped, int n, const ElementInEye&
   }
   const int c0 = std::max(0, static_cast<int>(std::ceil(xmin - 0.5)));
   const int c1 = std::min(buffer.width - 1, static_cast<int>(std::floor(xmax - 0.5)));
-  const int r0 = std::max(0, static_cast<int>(std::ceil(ymin - 0.5)));
-  const int r1 = std::min(buffer.height - 1, static_cast<int>(std::floor(ymax - 0.5)));
+  int r0 = std::max(0, static_cast<int>(std::ceil(ymin - 0.5)));
+  int r1 = std::min(buffer.height - 1, static_cast<int>(std::floor(ymax - 0.5)));
   if (c0 > c1 || r0 > r1) return;
   // Plane in face coordinates: m_face . (X, Y, 1) * depth = c, so 1/depth = (m_face . (X, Y, 1)) / c with
   // X = x / sx - 1, Y = y / sy + upMin.
@@ -226,87 +204,86 @@ void drawPolygon(const std::array<Vec3, 16>& clipped, int n, const ElementInEye&
     else
       flats[flatCount++] = edge;
   }
-  for (int row = r0; row <= r1; ++row) {
+  // A horizontal edge leaves out the rows on one side of it, so the rows inside all of them are one run:
+  // found from its two ends, with the test every row would make.
+  auto outsideAFlat = [&](int row) {
     const double y = row + 0.5;
-    bool empty = false;
-    for (int k = 0; k < flatCount; ++k) empty |= flats[k].b * y + flats[k].c < -1e-9;
-    if (empty) continue;
-    // Span of the row: intersect the half-planes along x.
-    double lo = c0 + 0.5, hi = c1 + 0.5;
-    for (int k = 0; k < leftCount; ++k) lo = std::max(lo, -(lefts[k].b * y + lefts[k].c) * lefts[k].inverseA);
-    for (int k = 0; k < rightCount; ++k)
-      hi = std::min(hi, -(rights[k].b * y + rights[k].c) * rights[k].inverseA);
-    // A pixel centre exactly on an edge shared by two elements must not fall through both (rounding in
-    // the divisions above): widen the span by a hair; the z-buffer settles the double coverage.
-    lo -= 1e-7, hi += 1e-7;
-    const int first = std::max(c0, static_cast<int>(std::ceil(lo - 0.5)));
-    const int last = std::min(c1, static_cast<int>(std::floor(hi - 0.5)));
-    const std::size_t base = static_cast<std::size_t>(row) * buffer.width;
-    const double rowTerm = ky * y + k0;
-    double* depths = zbuffer.data() + base;
-    int* ids = buffer.element.data() + base;
-    // Stepping the inverse depth along the row (one addition per pixel) instead of evaluating the plane
-    // at each pixel: over at most a face width of steps the rounding stays near 1e-14 of the depth, far
-    // below the 1e-7 that separates a back face from a coincident front face.
-    double inverse = kx * (first + 0.5) + rowTerm;
-    for (int column = first; column <= last; ++column, inverse += kx) {
-      if (inverse > depths[column]) {
-        depths[column] = inverse;
-        ids[column] = id;
+    bool outside = false;
+    for (int k = 0; k < flatCount; ++k) outside |= flats[k].b * y + flats[k].c < -1e-9;
+    return outside;
+  };
+  if (flatCount > 0) {
+    while (r0 <= r1 && outsideAFlat(r0)) ++r0;
+    while (r1 >= r0 && outsideAFlat(r1)) --r1;
+  }
+  // The rows, with the number of edges on each side known to the compiler for the common shapes (one or
+  // two a side: triangles and quads) so that a row's span is straight-line code.
+  auto scan = [&]<int knownLefts, int knownRights>() {
+    const int lc = knownLefts > 0 ? knownLefts : leftCount, rc = knownRights > 0 ? knownRights : rightCount;
+    for (int row = r0; row <= r1; ++row) {
+      const double y = row + 0.5;
+      // Span of the row: intersect the half-planes along x.
+      double lo = c0 + 0.5, hi = c1 + 0.5;
+      for (int k = 0; k < lc; ++k) lo = std::max(lo, -(lefts[k].b * y + lefts[k].c) * lefts[k].inverseA);
+      for (int k = 0; k < rc; ++k) hi = std::min(hi, -(rights[k].b * y + rights[k].c) * rights[k].inverseA);
+      // A pixel centre exactly on an edge shared by two elements must not fall through both (rounding in
+      // the divisions above): widen the span by a hair; the z-buffer settles the double coverage.
+      lo -= 1e-7, hi += 1e-7;
+      const int first = std::max(c0, static_cast<int>(std::ceil(lo - 0.5)));
+      const int last = std::min(c1, static_cast<int>(std::floor(hi - 0.5)));
+      const std::size_t base = static_cast<std::size_t>(row) * buffer.width;
+      const double rowTerm = ky * y + k0;
+      double* depths = zbuffer.data() + base;
+      int* ids = buffer.element.data() + base;
+      // Stepping the inverse depth along the row (one addition per pixel) instead of evaluating the plane
+      // at each pixel: over at most a face width of steps the rounding stays near 1e-14 of the depth, far
+      // below the 1e-7 that separates a back face from a coincident front face.
+      double inverse = kx * (first + 0.5) + rowTerm;
+      for (int column = first; column <= last; ++column, inverse += kx) {
+        if (inverse > depths[column]) {
+          depths[column] = inverse;
+          ids[column] = id;
+        }
       }
     }
-  }
+  };
+  if (leftCount == 1 && rightCount == 1)
+    scan.template operator()<1, 1>();
+  else if (leftCount == 2 && rightCount == 1)
+    scan.template operator()<2, 1>();
+  else if (leftCount == 1 && rightCount == 2)
+    scan.template operator()<1, 2>();
+  else if (leftCount == 2 && rightCount == 2)
+    scan.template operator()<2, 2>();
+  else
+    scan.template operator()<0, 0>();
 }
 
 }  // namespace
 
-HemicubeFaceAxes hemicubeFaceAxes(HemicubeFace face) {
-  switch (face) {
-    case HemicubeFace::Top:
-      return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, -1};
-    case HemicubeFace::PlusU:
-      return {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}, 0};
-    case HemicubeFace::PlusV:
-      return {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}, 0};
-    case HemicubeFace::MinusU:
-      return {{0, -1, 0}, {0, 0, 1}, {-1, 0, 0}, 0};
-    case HemicubeFace::MinusV:
-      return {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}, 0};
+HemicubeMesh::HemicubeMesh(const Mesh& m) : mesh(m), elements(m.size()) {
+  for (std::size_t j = 0; j < m.size(); ++j) {
+    const Element& from = m.elements[j];
+    if (from.vertices.size() > std::tuple_size_v<decltype(Record::vertices)>)
+      throw std::invalid_argument("hemicube: element " + std::to_string(j) + " has " +
+                                  std::to_string(from.vertices.size()) + " corners, at most 8 are drawn");
+    Record& to = elements[j];
+    to.normal = from.normal;
+    to.count = static_cast<int>(from.vertices.size());
+    std::copy(from.vertices.begin(), from.vertices.end(), to.vertices.begin());
   }
-  return {};
-}
-
-double maxDeltaFormFactor(int resolution) {
-  double largest = 0;
-  for (int f = 0; f < 5; ++f)
-    for (double v : deltaFormFactors(resolution, static_cast<HemicubeFace>(f)))
-      largest = std::max(largest, v);
-  return largest;
-}
-
-int hemicubeSideRows(int resolution) {
-  return (resolution + 1) / 2;
-}
-
-const std::vector<double>& deltaFormFactors(int resolution, HemicubeFace face) {
-  if (resolution < 2) throw std::invalid_argument("hemicube resolution must be at least 2");
-  static std::mutex mutex;
-  static std::map<int, std::array<std::unique_ptr<std::vector<double>>, 5>> cache;
-  std::lock_guard lock(mutex);
-  auto& entry = cache[resolution];
-  auto& deltas = entry[static_cast<int>(face)];
-  if (!deltas) deltas = std::make_unique<std::vector<double>>(computeDeltas(resolution, face));
-  return *deltas;
 }
 
 HemicubeFaces renderHemicube(const Mesh& mesh, int element, int resolution) {
   HemicubeWorkspace workspace;
-  renderHemicube(mesh, element, resolution, workspace);
+  renderHemicube(HemicubeMesh(mesh), element, resolution, workspace);
   return std::move(workspace.faces);
 }
 
-void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorkspace& workspace) {
+void renderHemicube(const HemicubeMesh& hemicubeMesh, int element, int resolution,
+                    HemicubeWorkspace& workspace) {
   if (resolution < 2) throw std::invalid_argument("hemicube resolution must be at least 2");
+  const Mesh& mesh = hemicubeMesh.mesh;
   const Element& self = mesh.elements[element];
   HemicubeFaces& result = workspace.faces;
   result.resolution = resolution;
@@ -340,7 +317,7 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
     planes[f] = frustumPlanes(axes[f], kFrustumMargin);
     HemicubeFaceBuffer& buffer = result.faces[f];
     buffer.width = resolution;
-    buffer.height = heightOf(resolution, face);
+    buffer.height = face == HemicubeFace::Top ? resolution : hemicubeSideRows(resolution);
     buffer.element.assign(static_cast<std::size_t>(buffer.width) * buffer.height, kHemicubeSeesNothing);
     if (workspace.computeDepth)
       buffer.depth.assign(buffer.element.size(), std::numeric_limits<float>::infinity());
@@ -355,7 +332,7 @@ void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorks
   ElementInEye other;
   std::array<Vec3, 16> clipped;
   for (int j = 0; j < static_cast<int>(mesh.size()); ++j) {
-    if (j == element || !elementInEye(mesh, j, result, localVertices, near, eyeEps, other)) continue;
+    if (j == element || !elementInEye(hemicubeMesh, j, result, localVertices, near, eyeEps, other)) continue;
     for (int f = 0; f < 5; ++f) {
       if (sphereOutsideFrustum(toFace(f, other.centre), other.radius, planes[f])) continue;
       const int n = clipToFace(other, f, axes[f], near, clipped);
@@ -380,10 +357,11 @@ void accumulateHemicubeRow(const HemicubeFaces& faces, double* row) {
   }
 }
 
-void hemicubeRow(const Mesh& mesh, int element, int resolution, HemicubeWorkspace& workspace, double* row) {
+void hemicubeRow(const HemicubeMesh& mesh, int element, int resolution, HemicubeWorkspace& workspace,
+                 double* row) {
   workspace.computeDepth = false;
   renderHemicube(mesh, element, resolution, workspace);
-  std::fill(row, row + mesh.size(), 0.0);
+  std::fill(row, row + mesh.elements.size(), 0.0);
   accumulateHemicubeRow(workspace.faces, row);
 }
 

@@ -60,6 +60,20 @@ double maxDeltaFormFactor(int resolution);
 // the element's horizon are not drawn.
 HemicubeFaces renderHemicube(const Mesh& mesh, int element, int resolution);
 
+// The mesh's elements as a hemicube reads them, every element for every eye: their corners' indices, normal
+// and corner count in one flat record each instead of behind a vector apiece. Made once per mesh and read by
+// any number of threads; it refers to `mesh`, which must outlive it.
+struct HemicubeMesh {
+  struct Record {
+    Vec3 normal;
+    std::array<int, 8> vertices;
+    int count = 0;
+  };
+  explicit HemicubeMesh(const Mesh& mesh);
+  const Mesh& mesh;
+  std::vector<Record> elements;
+};
+
 // Reusable storage for rendering many hemicubes in a row (one per thread): no allocation after the first.
 struct HemicubeWorkspace {
   HemicubeFaces faces;
@@ -67,13 +81,14 @@ struct HemicubeWorkspace {
   std::vector<Vec3> localVertices;  // every mesh vertex in the eye's frame (u, v, normal), once per hemicube
   bool computeDepth = true;  // false: leave faces[].depth empty (the matrix builder only needs the ids)
 };
-void renderHemicube(const Mesh& mesh, int element, int resolution, HemicubeWorkspace& workspace);
+void renderHemicube(const HemicubeMesh& mesh, int element, int resolution, HemicubeWorkspace& workspace);
 
 // Row i of the form-factor matrix from a rendered hemicube: sums the delta form factors per visible element.
 void accumulateHemicubeRow(const HemicubeFaces& faces, double* row);
 
 // Row `element` of the hemicube method's matrix (n entries, overwritten): the hemicube rendered in
 // `workspace` without depths, its delta form factors summed per visible element.
-void hemicubeRow(const Mesh& mesh, int element, int resolution, HemicubeWorkspace& workspace, double* row);
+void hemicubeRow(const HemicubeMesh& mesh, int element, int resolution, HemicubeWorkspace& workspace,
+                 double* row);
 
 }  // namespace rt

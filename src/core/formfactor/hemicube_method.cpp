@@ -34,6 +34,7 @@ class HemicubeMethod : public FormFactorMethod {
     for (int f = 0; f < 5; ++f) deltaFormFactors(resolution, static_cast<HemicubeFace>(f));  // warm the cache
     const auto n = static_cast<Eigen::Index>(mesh.size());
     FormFactorMatrix F = zeroFormFactorMatrix(n);
+    const HemicubeMesh elements(mesh);
     forEachRow(mesh.size(), options, progress, "form factors (hemicube)", stats, [&](int i, RowCounters&) {
       // One workspace per worker thread: the face buffers are reused row after row instead of being
       // allocated and freed (large blocks, mapped and unmapped by the allocator every time).
@@ -43,7 +44,7 @@ class HemicubeMethod : public FormFactorMethod {
       // copy-on-write fault with a TLB flush on every core).
       thread_local std::vector<double> row;
       row.resize(static_cast<std::size_t>(n));
-      hemicubeRow(mesh, i, resolution, workspace, row.data());
+      hemicubeRow(elements, i, resolution, workspace, row.data());
       std::copy(row.begin(), row.end(), F.row(i).data());
     });
     return F;

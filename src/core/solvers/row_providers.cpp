@@ -14,9 +14,10 @@ namespace {
 FormFactorRowProvider hemicubeRows(const Mesh& mesh, int resolution) {
   // The workspace is reused from shot to shot: no allocation after the first hemicube.
   auto workspace = std::make_shared<HemicubeWorkspace>();
-  return [&mesh, resolution, workspace](int i, Eigen::VectorXd& row) {
-    row.resize(static_cast<Eigen::Index>(mesh.size()));
-    hemicubeRow(mesh, i, resolution, *workspace, row.data());
+  auto elements = std::make_shared<const HemicubeMesh>(mesh);
+  return [elements, resolution, workspace](int i, Eigen::VectorXd& row) {
+    row.resize(static_cast<Eigen::Index>(elements->elements.size()));
+    hemicubeRow(*elements, i, resolution, *workspace, row.data());
   };
 }
 
