@@ -187,7 +187,7 @@ void run(const SolveArguments& a) {
     if (a.s.verbose) solver->setObserver(printIteration);
     std::size_t rows = 0;
     const FormFactorRowProvider provider = makeRowProvider(formFactors, mesh, a.s.formFactorOptions());
-    dynamic_cast<ShootingSolver&>(*solver).setRowProvider([&rows, provider](int i, Eigen::VectorXd& row) {
+    dynamic_cast<ShootingSolver&>(*solver).setRowProvider([&rows, provider](int i, std::span<double> row) {
       ++rows;
       provider(i, row);
     });

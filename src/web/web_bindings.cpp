@@ -2,6 +2,8 @@
 // the arrays come back as typed arrays of their own (Float32Array, Int32Array, Float64Array, Uint8Array),
 // copied out of the WebAssembly memory so that they outlive the next call. `Module.controlRows(keys)` gives
 // the step-key table's rows a page builds its widgets from (web_step.h).
+#include <span>
+
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
@@ -17,8 +19,12 @@ namespace {
 using emscripten::val;
 
 template <class T>
-val copied(const std::vector<T>& values) {
+val copied(std::span<const T> values) {
   return val(emscripten::typed_memory_view(values.size(), values.data())).call<val>("slice");
+}
+template <class T>
+val copied(const std::vector<T>& values) {
+  return copied(std::span<const T>(values));
 }
 
 // Reports to a JavaScript function(fraction, stage), at most once per percent and stage, so that a worker

@@ -217,25 +217,21 @@ void WebSession::computeRows(int begin, int end, double* out) {
   const Mesh& mesh = plannedMesh();
   if (!plannedRows_) plannedRows_ = makeRowProvider(settings_.method, mesh, settings_.formFactors);
   const auto n = static_cast<std::size_t>(mesh.size());
-  Eigen::VectorXd values;
-  for (int i = begin; i < end; ++i) {
-    plannedRows_(i, values);
-    std::copy(values.data(), values.data() + n, out + std::size_t(i - begin) * n);
-  }
+  for (int i = begin; i < end; ++i) plannedRows_(i, {out + std::size_t(i - begin) * n, n});
 }
 
-std::vector<double> WebSession::formFactorRows(int begin, int end) {
-  std::vector<double> out;
-  if (!scene_) return out;
+std::span<const double> WebSession::formFactorRows(int begin, int end) {
+  if (!scene_) return {};
   try {
     const auto n = static_cast<int>(plannedMesh().size());
-    if (begin < 0 || end > n || begin >= end) return out;
-    out.resize(std::size_t(end - begin) * std::size_t(n));
-    computeRows(begin, end, out.data());
+    if (begin < 0 || end > n || begin >= end) return {};
+    const std::size_t size = std::size_t(end - begin) * std::size_t(n);
+    if (rowsOut_.size() < size) rowsOut_.resize(size);
+    computeRows(begin, end, rowsOut_.data());
+    return {rowsOut_.data(), size};
   } catch (const std::exception&) {
-    out.clear();
+    return {};
   }
-  return out;
 }
 
 bool WebSession::fillFormFactorRows(int begin, int end) {

@@ -43,11 +43,12 @@ class WebSession {
   // meshes the configured step and returns how many rows F has to be computed apart, 0 when there is nothing
   // to spread (F is cached, the method's rows are not independent, the run needs no F or only rescales the
   // light). formFactorRows(begin, end) computes rows [begin, end) of that mesh's F (row-major), bit for bit
-  // the rows of the whole matrix. rowsToFill(begin, end) is where such rows go (empty for a range that is not
+  // the rows of the whole matrix, into storage of the session's that the next call reuses (empty for a
+  // range that is not F's). rowsToFill(begin, end) is where such rows go (empty for a range that is not
   // F's); fillFormFactorRows(begin, end) computes them there, in this session (false for such a range). Once
   // every row is in, run() solves with that F as if it had computed it.
   int rowPlan();
-  std::vector<double> formFactorRows(int begin, int end);
+  std::span<const double> formFactorRows(int begin, int end);
   std::span<double> rowsToFill(int begin, int end);
   bool fillFormFactorRows(int begin, int end);
 
@@ -98,6 +99,7 @@ class WebSession {
   FormFactorRowProvider plannedRows_;
   std::unique_ptr<FormFactorMatrix> gathered_;
   std::vector<bool> rowIn_;
+  std::vector<double> rowsOut_;  // formFactorRows' answer: kept, so that no call zero-fills a new block
   Eigen::Index rowsGathered_ = 0;
   std::chrono::steady_clock::time_point plannedAt_;
 };

@@ -39,6 +39,7 @@ for (const edge of edges.length ? edges : ['28', '27.2']) {
       const step = { scene: name, files: { [name]: scene }, stage: 'solve', controls: ['max-edge'],
                      parameters: { 'max-edge': '65', method: 'hemicube', solver: 'gauss-seidel' } };
       const view = await new window.rtLive.LiveView(holder, step).start();
+      await new Promise((resolve) => setTimeout(resolve, 1000));  // a reader looks before changing
       const started = performance.now();
       view.widgets['max-edge'].value = edge;
       view.widgets['max-edge'].dispatchEvent(new Event('change'));

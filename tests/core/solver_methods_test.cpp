@@ -40,7 +40,9 @@ TEST(Shooting, RowsOnDemandGiveTheMatrixAnswer) {
   noMatrix.F = nullptr;
   ShootingSolver solver(false);
   solver.setOptions(o);
-  solver.setRowProvider([&](int i, Eigen::VectorXd& row) { row = s.F->row(i).transpose(); });
+  solver.setRowProvider([&](int i, std::span<double> row) {
+    Eigen::Map<Eigen::RowVectorXd>(row.data(), s.F->cols()) = s.F->row(i);
+  });
   withRows = solver.compute(noMatrix).solve();
   EXPECT_EQ(solver.info(), SolverStatus::Success);
   EXPECT_LT((withRows - withMatrix).norm(), 1e-10 * withMatrix.norm());

@@ -51,6 +51,11 @@ double relative(const RgbField& a, const RgbField& b) {
   return (a - b).norm() / b.norm();
 }
 
+// A vector's entries as the row a provider writes.
+std::span<double> span(Eigen::VectorXd& row) {
+  return {row.data(), static_cast<std::size_t>(row.size())};
+}
+
 // Shooting row i spreads P_i F_ij to j; shooting with a stored matrix G spreads P_i G_ji A_j / A_i. They are
 // the same shot when G = A^-1 F^T A, the matrix whose columns are the provider's rows.
 FormFactorMatrix columnsFromRows(const FormFactorMatrix& F, const Eigen::VectorXd& areas) {
@@ -63,10 +68,9 @@ TEST(RowProvider, HemicubeRowsAreTheHemicubeMatrixRows) {
   options.hemicubeResolution = 48;
   const FormFactorMatrix F = room.matrix("hemicube", options);
   const FormFactorRowProvider rows = makeRowProvider("hemicube", room.mesh, options);
-  Eigen::VectorXd row;
+  Eigen::VectorXd row(F.cols());
   for (int i = 0; i < static_cast<int>(room.mesh.size()); i += 5) {
-    rows(i, row);
-    ASSERT_EQ(row.size(), F.cols());
+    rows(i, span(row));
     EXPECT_EQ(row.transpose(), F.row(i)) << "row " << i;
   }
 }
@@ -80,11 +84,8 @@ TEST(RowProvider, HemicubeRowsMakeTheMatrixWithTheCountsAndNotesOfCompute) {
   const FormFactorMatrix F = method->compute(room.mesh, options, noProgress(), computed);
   const FormFactorRowProvider rows = makeRowProvider("hemicube", room.mesh, options);
   FormFactorMatrix apart = FormFactorMatrix::Zero(F.rows(), F.cols());
-  Eigen::VectorXd row;
-  for (int i = 0; i < static_cast<int>(room.mesh.size()); ++i) {
-    rows(i, row);
-    apart.row(i) = row.transpose();
-  }
+  for (int i = 0; i < static_cast<int>(room.mesh.size()); ++i)
+    rows(i, {apart.row(i).data(), room.mesh.size()});
   const FormFactorMatrix made = method->fromRows(std::move(apart), room.mesh, options, gathered);
   EXPECT_EQ(made, F);
   EXPECT_EQ(gathered.pairsComputed, static_cast<std::size_t>((F.array() > 0).count()));
@@ -100,11 +101,10 @@ TEST(RowProvider, RaycastRowsAreTheRaycastMatrixRows) {
   options.samples = 64;
   const FormFactorMatrix F = room.matrix("raycast", options);
   const FormFactorRowProvider rows = makeRowProvider("raycast", room.mesh, options);
-  Eigen::VectorXd row;
+  Eigen::VectorXd row(F.cols());
   double worst = 0;
   for (int i = 0; i < static_cast<int>(room.mesh.size()); ++i) {
-    rows(i, row);
-    ASSERT_EQ(row.size(), F.cols());
+    rows(i, span(row));
     ASSERT_TRUE(row.allFinite());
     worst = std::max(worst, (row.transpose() - F.row(i)).cwiseAbs().maxCoeff());
   }
@@ -128,7 +128,7 @@ TEST_P(ShootingWithRows, AgreesWithStoredMatrixShootingAndWithDirect) {
   const FormFactorRowProvider provider = makeRowProvider(method, room.mesh, options);
   ShootingSolver solver(false);
   solver.setOptions(tight());
-  solver.setRowProvider([&](int i, Eigen::VectorXd& row) {
+  solver.setRowProvider([&](int i, std::span<double> row) {
     ++rowsAsked;
     provider(i, row);
   });
@@ -140,11 +140,7 @@ TEST_P(ShootingWithRows, AgreesWithStoredMatrixShootingAndWithDirect) {
 
   // The provider's rows as one stored matrix (for the comparison only).
   FormFactorMatrix rowsMatrix(F.rows(), F.cols());
-  Eigen::VectorXd row;
-  for (int i = 0; i < F.rows(); ++i) {
-    provider(i, row);
-    rowsMatrix.row(i) = row.transpose();
-  }
+  for (int i = 0; i < F.rows(); ++i) provider(i, {rowsMatrix.row(i).data(), room.mesh.size()});
   const FormFactorMatrix G = columnsFromRows(rowsMatrix, areas);
   RgbField withMatrix;
   ASSERT_EQ(southwell(RadiositySystem::fromMesh(room.mesh, G), withMatrix, tight()), SolverStatus::Success);

@@ -66,9 +66,9 @@ TEST(SkipRules, OnlyElementsWithUnshotPowerShoot) {
   RadiositySystem rowsOnly = s.system;
   rowsOnly.F = nullptr;
   std::set<int> rowsAsked;
-  solver.setRowProvider([&](int i, Eigen::VectorXd& row) {
+  solver.setRowProvider([&](int i, std::span<double> row) {
     rowsAsked.insert(i);
-    row = s.F->row(i).transpose();
+    Eigen::Map<Eigen::RowVectorXd>(row.data(), s.F->cols()) = s.F->row(i);
   });
   const RgbField B = solver.compute(rowsOnly).solve();
   ASSERT_EQ(solver.info(), SolverStatus::Success);

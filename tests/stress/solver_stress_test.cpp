@@ -132,9 +132,9 @@ TEST(SolverStress, LargerRandomSystemAndMatrixFreeShooting) {
   RadiositySystem matrixFree = s.system;
   matrixFree.F = nullptr;
   int rowsAsked = 0;
-  const FormFactorRowProvider rows = [&](int i, Eigen::VectorXd& row) {
+  const FormFactorRowProvider rows = [&](int i, std::span<double> row) {
     ++rowsAsked;
-    row = s.F->row(i).transpose();
+    Eigen::Map<Eigen::RowVectorXd>(row.data(), s.F->cols()) = s.F->row(i);
   };
   RgbField shot;
   EXPECT_EQ(southwell(matrixFree, rows, shot, o), SolverStatus::Success);

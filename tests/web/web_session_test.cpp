@@ -138,7 +138,7 @@ TEST(WebSession, RowsComputedApartSolveAsTheWholeMatrixDoes) {
       ASSERT_TRUE(gathering.fillFormFactorRows(begin, end));
       continue;
     }
-    const std::vector<double> rows = helper.formFactorRows(begin, end);
+    const std::span<const double> rows = helper.formFactorRows(begin, end);
     const std::span<double> target = gathering.rowsToFill(begin, end);
     ASSERT_EQ(target.size(), rows.size());
     std::copy(rows.begin(), rows.end(), target.begin());

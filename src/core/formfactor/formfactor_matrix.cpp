@@ -27,16 +27,21 @@ RowSums sumRows(const FormFactorMatrix& F) {
   out.sums.resize(F.rows());
   for (Eigen::Index i = 0; i < F.rows(); ++i) {
     const double* row = F.row(i).data();
-    double sum = 0;
+    out.sums[i] = sumOf(row, F.cols());
     std::size_t positive = 0;
-    for (Eigen::Index j = 0; j < F.cols(); ++j) {
-      sum += row[j];
-      positive += row[j] > 0 ? 1 : 0;
-    }
-    out.sums[i] = sum;
+    for (Eigen::Index j = 0; j < F.cols(); ++j) positive += row[j] > 0 ? 1 : 0;
     out.positive += positive;
   }
   return out;
+}
+
+double sumOf(const double* entries, Eigen::Index n) {
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  Eigen::Index j = 0;
+  for (; j + 4 <= n; j += 4)
+    s0 += entries[j], s1 += entries[j + 1], s2 += entries[j + 2], s3 += entries[j + 3];
+  for (; j < n; ++j) s0 += entries[j];
+  return (s0 + s1) + (s2 + s3);
 }
 
 void checkRowSumsAtMost(const RowSums& rows, double bound, const std::string& method) {

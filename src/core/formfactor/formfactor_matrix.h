@@ -24,6 +24,9 @@ struct RowSums {
   std::size_t positive = 0;  // entries > 0 (the pairs that see each other)
 };
 RowSums sumRows(const FormFactorMatrix& F);
+// The sum of n entries in four interleaved partial sums: one chain of additions waits on each addition, four
+// chains run side by side. NaN or infinite exactly when an entry is, or when finite entries overflow.
+double sumOf(const double* entries, Eigen::Index n);
 
 // RT_CHECK that no row of F sums to more than `bound` (+ rounding): the contract of the methods whose rows
 // are fractions of one set of samples (a hemicube's delta form factors, Monte Carlo's rays). A no-op in

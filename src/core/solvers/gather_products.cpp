@@ -42,7 +42,7 @@ RgbField productWithF(const FormFactorMatrix& F, const RgbField& B, Eigen::Vecto
   if (rowSums) rowSums->resize(F.rows());
   for (Eigen::Index i = 0; i < F.rows(); ++i) {
     out.row(i) = rowTimes(F.row(i).data(), B, 0, F.cols());
-    if (rowSums) (*rowSums)[i] = F.row(i).sum();  // the row is in the cache now
+    if (rowSums) (*rowSums)[i] = sumOf(F.row(i).data(), F.cols());  // the row is in the cache now
   }
   return out;
 }
@@ -102,7 +102,7 @@ RgbField productWithF(const FormFactorMatrix& F, const RgbField& B, Eigen::Vecto
   if (rowSums) rowSums->resize(F.rows());
   for (Eigen::Index i = 0; i < F.rows(); ++i) {
     out.row(i).noalias() = F.row(i) * B;
-    if (rowSums) (*rowSums)[i] = F.row(i).sum();  // the row is in the cache now
+    if (rowSums) (*rowSums)[i] = sumOf(F.row(i).data(), F.cols());  // the row is in the cache now
   }
   return out;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "core/formfactor/hemicube.h"
 #include "core/formfactor/pair_matrix.h"
@@ -11,12 +12,19 @@
 namespace rt {
 namespace {
 
+// A caller's mistake, not the input's: the storage of a row has one entry per element.
+void checkRowLength(std::span<double> row, std::size_t elements) {
+  if (row.size() != elements)
+    throw std::invalid_argument("a row of F has one entry per element: " + std::to_string(row.size()) +
+                                " given for " + std::to_string(elements));
+}
+
 FormFactorRowProvider hemicubeRows(const Mesh& mesh, int resolution) {
   // The workspace is reused from shot to shot: no allocation after the first hemicube.
   auto workspace = std::make_shared<HemicubeWorkspace>();
   auto elements = std::make_shared<const HemicubeMesh>(mesh);
-  return [elements, resolution, workspace](int i, Eigen::VectorXd& row) {
-    row.resize(static_cast<Eigen::Index>(elements->elements.size()));
+  return [elements, resolution, workspace](int i, std::span<double> row) {
+    checkRowLength(row, elements->elements.size());
     hemicubeRow(*elements, i, resolution, *workspace, row.data());
   };
 }
@@ -25,15 +33,16 @@ FormFactorRowProvider raycastRows(const Mesh& mesh, const FormFactorOptions& opt
   auto visibility = std::make_shared<const PairVisibility>(mesh);
   const int samples = std::clamp(options.samples, 1, 1024);
   const std::uint64_t seed = options.seed;
-  return [&mesh, visibility, samples, seed](int i, Eigen::VectorXd& row) {
-    row.setZero(static_cast<Eigen::Index>(mesh.size()));
+  return [&mesh, visibility, samples, seed](int i, std::span<double> row) {
+    checkRowLength(row, mesh.size());
+    std::fill(row.begin(), row.end(), 0.0);
     const double ai = mesh.elements[i].area;
     auto estimate = [&](int a, int b) { return estimateRaycastPair(mesh, *visibility, a, b, samples, seed); };
     for (int j = 0; j < static_cast<int>(mesh.size()); ++j) {
       if (j == i || !elementsFaceEachOther(mesh, i, j)) continue;
       // As in the matrix method: the pair (min, max) from its smaller element, the other direction by
       // reciprocity (the sampling error is not multiplied by the ratio of the areas).
-      row(j) = i < j ? fromSmallerElement(mesh, i, j, estimate).value
+      row[j] = i < j ? fromSmallerElement(mesh, i, j, estimate).value
                      : fromSmallerElement(mesh, j, i, estimate).value * mesh.elements[j].area / ai;
     }
   };

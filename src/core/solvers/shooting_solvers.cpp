@@ -29,7 +29,7 @@ SolverStatus shoot(const RadiositySystem& system, const FormFactorRowProvider* r
                                                       : static_cast<int>(std::max<Eigen::Index>(1, n / 512));
   double residual = 1.0;
   const double eNorm = system.emission.norm();
-  Eigen::VectorXd fraction(n), row;
+  Eigen::VectorXd fraction(n), row(n);
 
   const int cap = shotCap(options, n);
   for (int k = 1; k <= cap; ++k) {
@@ -38,8 +38,8 @@ SolverStatus shoot(const RadiositySystem& system, const FormFactorRowProvider* r
     if (shotPower <= 0.0) return SolverStatus::Success;  // everything shot (possible when all rho are 0)
     // Share of the shooter's power that arrives at each element.
     if (rows) {
-      (*rows)(static_cast<int>(shooter), row);
-      if (row.size() != n || !row.allFinite()) return SolverStatus::InvalidInput;
+      (*rows)(static_cast<int>(shooter), {row.data(), static_cast<std::size_t>(n)});
+      if (!row.allFinite()) return SolverStatus::InvalidInput;
       fraction = row;
     } else {
       fraction = system.F->col(shooter).cwiseProduct(A) / A(shooter);

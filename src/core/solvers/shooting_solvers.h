@@ -14,14 +14,16 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <span>
 
 #include "core/solvers/solver.h"
 #include "core/solvers/solver_support.h"
 
 namespace rt {
 
-// Fills `row` (resized by the provider to n) with F_i0 .. F_i,n-1: what element i sees.
-using FormFactorRowProvider = std::function<void(int i, Eigen::VectorXd& row)>;
+// Writes F_i0 .. F_i,n-1 into `row` (n entries, every one written): what element i sees. The caller owns the
+// storage, so a row goes straight where it is kept (a matrix row, a block sent to another worker).
+using FormFactorRowProvider = std::function<void(int i, std::span<double> row)>;
 
 // Southwell shooting with the stored matrix (system.F).
 SolverStatus southwell(const RadiositySystem& system, RgbField& B, const SolverOptions& options,

@@ -20,9 +20,12 @@ SolverStatus validate(const RadiositySystem& system, bool needMatrix) {
   if (!system.emission.allFinite() || (system.emission.array() < 0.0).any())
     return SolverStatus::InvalidInput;
   if (system.F) {
-    // Row by row: Eigen's allFinite() of the whole matrix forms F - F, a second matrix of F's size.
+    // Row by row: Eigen's allFinite() of the whole matrix forms F - F, a second matrix of F's size. A
+    // finite sum has only finite entries; only a row whose sum is not finite is looked at entry by entry
+    // (finite entries may overflow).
     for (Eigen::Index i = 0; i < n; ++i)
-      if (!system.F->row(i).allFinite()) return SolverStatus::InvalidInput;
+      if (!std::isfinite(sumOf(system.F->row(i).data(), n)) && !system.F->row(i).allFinite())
+        return SolverStatus::InvalidInput;
   }
   return SolverStatus::Success;
 }

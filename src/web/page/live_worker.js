@@ -95,8 +95,18 @@
     // copied in. Blocks are a share of the rows left, so that all workers finish together (and this one
     // computes from the start, while the helpers start up). The progress bar counts the rows in.
     // The rows are those one worker computes, bit for bit, so the solve that follows is too.
+    const workerCount = (a) => Math.min(Math.max(1, Math.floor(a.workers || 1)), 16);
+    // Helpers started ahead, after a solve has answered: a change that needs them later (a finer mesh)
+    // does not wait for them to start and instantiate the module.
+    function warmHelpers(a) {
+      while (helpers.length < workerCount(a) - 1) {
+        const ask = helper();
+        helpers.push(ask);
+        ask('ready', {}).catch(() => {});
+      }
+    }
     async function spreadRows(s, a, report) {
-      const count = Math.min(Math.max(1, Math.floor(a.workers || 1)), 16);
+      const count = workerCount(a);
       const n = count > 1 ? s.session.rowPlan() : 0;
       if (n < kSpreadFrom) return;
       while (helpers.length < count - 1) helpers.push(helper());
@@ -191,6 +201,7 @@
     }
 
     async function handle(module, id, op, a) {
+      if (op === 'ready') return [true];
       if (op === 'controls') return [JSON.parse(module.controlRows(JSON.stringify(a.keys)))];
       const s = sessionFor(module, a);
       if (op === 'solve') return solve(s, a, id);
@@ -217,6 +228,7 @@
         try {
           const [result, transfer] = await handle(await start(), id, op, args);
           self.postMessage({ id, result }, transfer || []);
+          if (op === 'solve') warmHelpers(args);
         } catch (error) {
           self.postMessage({ id, error: String((error && error.message) || error) });
         }
