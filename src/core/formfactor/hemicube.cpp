@@ -73,6 +73,14 @@ bool elementInEye(const HemicubeMesh& mesh, int j, const HemicubeFaces& eye,
   const double facing = other.normal.dot(eye.origin - anchor);
   if (std::abs(facing) <= eyeEps) return false;  // edge-on: covers no pixel centre
   out.id = facing > 0 ? j : kHemicubeSeesBackFace;
+  // A bounding sphere in the eye's frame rejects most (element, face) combinations with a few comparisons
+  // before the per-vertex outcodes: a small element lies on one or two of the five faces. Made once per mesh
+  // and moved into the eye's frame; widened by a relative 1e-9 and by `near` (1e-9 of the scene), far more
+  // than the rounding of either frame, so that it only ever skips what the corners' own tests would.
+  const Vec3 d = other.centre - eye.origin;
+  out.centre = Vec3(d.dot(eye.u), d.dot(eye.v), d.dot(eye.normal));
+  out.radius = other.radius * (1 + 1e-9) + near;
+  if (out.centre.z() + out.radius < near) return false;  // wholly below the horizon
   out.count = other.count;
   bool above = false;
   for (int k = 0; k < out.count; ++k) {
@@ -80,14 +88,6 @@ bool elementInEye(const HemicubeMesh& mesh, int j, const HemicubeFaces& eye,
     above |= out.local[k].z() > near;
   }
   if (!above) return false;
-  // A bounding sphere in the eye's frame rejects most (element, face) combinations with a few comparisons
-  // before the per-vertex outcodes: a small element lies on one or two of the five faces.
-  out.centre = Vec3::Zero();
-  for (int k = 0; k < out.count; ++k) out.centre += out.local[k];
-  out.centre /= out.count;
-  double radius = 0;
-  for (int k = 0; k < out.count; ++k) radius = std::max(radius, (out.local[k] - out.centre).squaredNorm());
-  out.radius = std::sqrt(radius) * (1 + 1e-9) + near;
   out.m = Vec3(other.normal.dot(eye.u), other.normal.dot(eye.v), other.normal.dot(eye.normal));
   out.c = out.m.dot(out.local[0]);
   return true;
@@ -271,6 +271,12 @@ HemicubeMesh::HemicubeMesh(const Mesh& m) : mesh(m), elements(m.size()) {
     to.normal = from.normal;
     to.count = static_cast<int>(from.vertices.size());
     std::copy(from.vertices.begin(), from.vertices.end(), to.vertices.begin());
+    to.centre = Vec3::Zero();
+    for (int k : from.vertices) to.centre += m.vertices[k];
+    to.centre /= to.count;
+    double radius = 0;
+    for (int k : from.vertices) radius = std::max(radius, (m.vertices[k] - to.centre).squaredNorm());
+    to.radius = std::sqrt(radius);
   }
 }
 

@@ -60,12 +60,14 @@ double maxDeltaFormFactor(int resolution);
 // the element's horizon are not drawn.
 HemicubeFaces renderHemicube(const Mesh& mesh, int element, int resolution);
 
-// The mesh's elements as a hemicube reads them, every element for every eye: their corners' indices, normal
-// and corner count in one flat record each instead of behind a vector apiece. Made once per mesh and read by
-// any number of threads; it refers to `mesh`, which must outlive it.
+// The mesh's elements as a hemicube reads them, every element for every eye: their corners' indices, normal,
+// bounding sphere and corner count in one flat record each instead of behind a vector apiece. Made once per
+// mesh and read by any number of threads; it refers to `mesh`, which must outlive it.
 struct HemicubeMesh {
   struct Record {
     Vec3 normal;
+    Vec3 centre;        // of a sphere around the corners
+    double radius = 0;  // that sphere's
     std::array<int, 8> vertices;
     int count = 0;
   };
