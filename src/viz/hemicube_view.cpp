@@ -13,6 +13,15 @@ constexpr Rgb8 kNothing{235, 235, 235};
 constexpr Rgb8 kBackFace{90, 90, 90};  // the back of a polygon: blocks, receives nothing
 const char* kFaceNames[5] = {"top", "+u", "+v", "-u", "-v"};
 
+// One past the largest element id in the buffers: the room a row summed from them needs, whatever element
+// count the caller gave.
+std::size_t seenElements(const HemicubeFaces& faces) {
+  int largest = -1;
+  for (const HemicubeFaceBuffer& face : faces.faces)
+    for (int id : face.element) largest = std::max(largest, id);
+  return static_cast<std::size_t>(largest + 1);
+}
+
 }  // namespace
 
 HemicubeColouring hemicubeColouringFromName(const std::string& name) {
@@ -45,18 +54,6 @@ Vec2 unfoldHemicubePoint(HemicubeFace face, const Vec3& p) {
       return {p.x(), -2 + p.z()};
   }
   return {p.x(), p.y()};
-}
-
-std::vector<double> hemicubeRow(const HemicubeFaces& faces, std::size_t elements) {
-  std::vector<double> row(elements, 0.0);
-  for (int f = 0; f < 5; ++f) {
-    const auto& buffer = faces.faces[static_cast<std::size_t>(f)];
-    const std::vector<double>& deltas = deltaFormFactors(faces.resolution, static_cast<HemicubeFace>(f));
-    for (std::size_t p = 0; p < buffer.element.size(); ++p)
-      if (const int j = buffer.element[p]; j >= 0 && static_cast<std::size_t>(j) < elements)
-        row[j] += deltas[p];
-  }
-  return row;
 }
 
 Drawing hemicubeFacesDrawing(const HemicubeFaces& faces, std::size_t elements,
@@ -126,7 +123,9 @@ Drawing hemicubeFacesDrawing(const HemicubeFaces& faces, std::size_t elements,
     return d;
   }
   // Item buffer legend: the elements seen, largest form factor first.
-  const std::vector<double> row = hemicubeRow(faces, elements);
+  std::vector<double> row(std::max(elements, seenElements(faces)), 0.0);
+  accumulateHemicubeRow(faces, row.data());
+  row.resize(elements);
   std::vector<int> order(row.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](int a, int b) { return row[a] > row[b]; });

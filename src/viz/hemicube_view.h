@@ -33,9 +33,6 @@ std::array<Vec3, 4> hemicubePixelCorners(HemicubeFace face, int row, int column,
 // Where a point of a face lands in the unfolded net: the top face is [-1,1]^2, the sides fold out around it.
 Vec2 unfoldHemicubePoint(HemicubeFace face, const Vec3& local);
 
-// Form factors from the buffers: sum of the delta form factors of the pixels that see each element.
-std::vector<double> hemicubeRow(const HemicubeFaces& faces, std::size_t elements);
-
 Drawing hemicubeFacesDrawing(const HemicubeFaces& faces, std::size_t elements,
                              const HemicubeViewOptions& options);
 void writeHemicubeFacesFigure(const HemicubeFaces& faces, std::size_t elements,

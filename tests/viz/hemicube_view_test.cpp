@@ -40,15 +40,9 @@ TEST(HemicubeView, UnfoldingKeepsSharedEdges) {
   EXPECT_TRUE(unfoldHemicubePoint(HemicubeFace::PlusU, {1, 1, 0.5}).isApprox(Vec2(1.5, 1)));
 }
 
-TEST(HemicubeView, RowFromBuffersMatchesCore) {
+TEST(HemicubeView, FacesDrawingHasAPixelPerQuad) {
   const Mesh mesh = buildMesh(vizt::openRoom());
   const HemicubeFaces faces = renderHemicube(mesh, 0, 16);
-  const std::vector<double> row = hemicubeRow(faces, mesh.size());
-  std::vector<double> expected(mesh.size(), 0.0);
-  accumulateHemicubeRow(faces, expected.data());
-  for (std::size_t j = 0; j < mesh.size(); ++j) EXPECT_NEAR(row[j], expected[j], 1e-15);
-  // The floor of a room closed but for one side sees most of the hemisphere.
-  EXPECT_GT(std::accumulate(row.begin(), row.end(), 0.0), 0.5);
   HemicubeViewOptions options;
   const Drawing d = hemicubeFacesDrawing(faces, mesh.size(), options);
   // One quad per pixel: 16 x 16 + 4 x 16 x 8.
