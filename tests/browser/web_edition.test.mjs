@@ -313,11 +313,16 @@ for (const file of pages) {
   const solved = await drop([['cornell-box.obj', obj], ['cornell-box.mtl', mtl]]);
   check(/elements/.test(solved) && !/error/i.test(solved), 'playground: a dropped OBJ and MTL are solved', solved.slice(0, 100));
   await page.screenshot({ path: path.join(shots, 'playground.png') });
+  // Another scene dropped replaces the last one's session: the worker holds the one shown.
+  await drop([['cornell-box.json', fs.readFileSync(path.join(repo, 'scenes/cornell-box.json'), 'utf8')]]);
+  const sessions = await page.evaluate(() => window.rtLive.ask('sessions', {}));
+  check(sessions === 1, 'playground: a scene dropped frees the session of the one before', `${sessions} session(s) after two scenes`);
   const bad = await drop([['bad.obj', 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n']]);
   check(bad.includes('bad.obj:4'), 'playground: a bad OBJ is reported with its line', bad.slice(0, 120));
 
   // F downloads as CSV and as NumPy's .npy (the matrix writer's files): n rows, and an n x n float64 array.
   await drop([['cornell-box.obj', obj], ['cornell-box.mtl', mtl]]);
+
   const downloads = path.join(site, 'downloads');
   fs.rmSync(downloads, { recursive: true, force: true });
   fs.mkdirSync(downloads);

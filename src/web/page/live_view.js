@@ -192,6 +192,19 @@
       return this;
     }
 
+    // For a page that replaces its view of a scene (the playground, when another scene is dropped): the
+    // view's WebGL contexts and its scene's session in the worker (F, the mesh, every iterate) are freed. A
+    // view of the same scene asked anything later starts a session of its own again.
+    close() {
+      for (const renderer of [this.renderer, this.compareRenderer]) {
+        if (!renderer) continue;
+        renderer.dispose();
+        renderer.forceContextLoss();
+      }
+      this.renderer = this.compareRenderer = null;
+      return ask('close', { sessionKey: this.sessionKey });
+    }
+
     request(op, args, onProgress) {
       return ask(op, Object.assign({ sessionKey: this.sessionKey, files: this.step.files, scene: this.step.scene,
                                      step: this.stepNow(), workers: live.formFactorWorkers }, args), onProgress);

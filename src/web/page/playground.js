@@ -24,6 +24,11 @@
       return;
     }
     const holder = document.getElementById('playground-view');
+    if (view) {
+      const dropped = view;
+      view = null;
+      await dropped.close().catch(() => {});
+    }
     holder.replaceChildren();
     const subdivide = document.getElementById('playground-subdivide').value;
     const controls = JSON.parse(document.getElementById('playground-drop').dataset.controls);
