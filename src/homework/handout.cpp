@@ -68,9 +68,12 @@ std::string answersAppendix(const std::vector<AppendixEntry>& entries) {
   for (const AppendixEntry& entry : entries) {
     out += "\n### " + entry.where + "\n\n";
     for (const Question& q : entry.exercise.questions) {
-      const auto k = static_cast<std::size_t>(q.answer - 1);
-      out += q.choices.empty() || k >= q.choices.size() ? "- " + q.label + ": $" + num(q.answer, 6) + "$\n"
-                                                        : "- " + choiceLetter(k) + " " + q.choices[k] + "\n";
+      // A multiple-choice answer is the choice's number from 1; any other answer (a numeric one may be
+      // negative) is printed as a number.
+      const bool choice = q.answer >= 1 && q.answer <= static_cast<double>(q.choices.size());
+      const std::size_t k = choice ? static_cast<std::size_t>(q.answer) - 1 : 0;
+      out += choice ? "- " + choiceLetter(k) + " " + q.choices[k] + "\n"
+                    : "- " + q.label + ": $" + num(q.answer, 6) + "$\n";
     }
     out += "\nWorked solution:\n\n";
     for (const std::string& step : entry.exercise.solution) out += "- " + step + "\n";

@@ -261,6 +261,18 @@ TEST(HomeworkGrader, AWrongChoiceIsExplainedByItsOwnExplanation) {
   EXPECT_NE(answers.find("- The answer is (b) Four times. Halving"), std::string::npos) << answers;
 }
 
+// A numeric answer is printed as a number whatever its sign: -1 is not "the choice before the first".
+TEST(HomeworkAnswers, ANegativeNumericAnswerIsPrintedAsANumber) {
+  Exercise e;
+  e.statement = "How much?";
+  Question q;
+  q.label = "the change";
+  q.answer = -1;
+  e.questions.push_back(q);
+  const std::string answers = answersAppendix({{"Q", e}});
+  EXPECT_NE(answers.find("- the change: $-1$"), std::string::npos) << answers;
+}
+
 TEST(HomeworkPlainText, MathsBecomesUnicodeForWidgets) {
   EXPECT_EQ(plainText("$\\rho_i F_{ij} \\le 1$"), "ρ_i F_ij ≤ 1");
   EXPECT_EQ(plainText("$\\operatorname{diag}(\\rho)F$ and $s/\\sqrt N$"), "diag(ρ)F and s/√N");
