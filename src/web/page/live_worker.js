@@ -100,6 +100,18 @@
       });
     }
 
+    // How many workers compute a large F's rows: this one and its helpers.
+    const workerCount = (a) => Math.min(Math.max(1, Math.floor(a.workers || 1)), 16);
+    // The helpers, started and each asked to instantiate the module. Called once a solve has answered too,
+    // so that a change that needs them later (a finer mesh) does not wait for their start.
+    function startHelpers(a) {
+      while (helpers.length < workerCount(a) - 1) {
+        const ask = helper();
+        helpers.push(ask);
+        ask('ready', {}).catch(() => {});
+      }
+    }
+
     // F's rows spread over `a.workers` workers, this one and helpers, when the step needs new form factors
     // whose rows are independent (the hemicube's: the session's rowPlan) on a mesh large enough. This worker
     // computes small blocks straight into F and reads the helpers' answers between them; a helper always has
@@ -107,21 +119,11 @@
     // copied in. Blocks are a share of the rows left, so that all workers finish together (and this one
     // computes from the start, while the helpers start up). The progress bar counts the rows in.
     // The rows are those one worker computes, bit for bit, so the solve that follows is too.
-    const workerCount = (a) => Math.min(Math.max(1, Math.floor(a.workers || 1)), 16);
-    // Helpers started ahead, after a solve has answered: a change that needs them later (a finer mesh)
-    // does not wait for them to start and instantiate the module.
-    function warmHelpers(a) {
-      while (helpers.length < workerCount(a) - 1) {
-        const ask = helper();
-        helpers.push(ask);
-        ask('ready', {}).catch(() => {});
-      }
-    }
     async function spreadRows(s, a, report) {
       const count = workerCount(a);
       const n = count > 1 ? s.session.rowPlan() : 0;
       if (n < kSpreadFrom) return;
-      while (helpers.length < count - 1) helpers.push(helper());
+      startHelpers(a);
       const stage = 'form factors (' + count + ' workers)';
       let next = 0, done = 0;
       const take = (most) => {
@@ -245,7 +247,7 @@
         try {
           const [result, transfer] = await handle(await start(), id, op, args);
           self.postMessage({ id, result }, transfer || []);
-          if (op === 'solve') warmHelpers(args);
+          if (op === 'solve') startHelpers(args);
         } catch (error) {
           self.postMessage({ id, error: String((error && error.message) || error) });
         }
